@@ -1,0 +1,42 @@
+# Helpers shared by every folder: warning flags, sanitizers, chapter executables and tests.
+
+add_library(tutorial_options INTERFACE)
+target_compile_options(tutorial_options INTERFACE
+  $<$<CXX_COMPILER_ID:GNU,Clang>:-Wall -Wextra -Wpedantic>
+  $<$<AND:$<BOOL:${TUTORIAL_WARNINGS_AS_ERRORS}>,$<CXX_COMPILER_ID:GNU,Clang>>:-Werror>)
+# GCC 12 reports a false -Wrestrict inside libstdc++ on plain std::string concatenation at -O2
+# (GCC bug 105329); nothing in our code can fix it, so that one diagnostic is off for GCC 12.
+if(CMAKE_CXX_COMPILER_ID STREQUAL "GNU" AND CMAKE_CXX_COMPILER_VERSION VERSION_GREATER_EQUAL 12
+   AND CMAKE_CXX_COMPILER_VERSION VERSION_LESS 13)
+  target_compile_options(tutorial_options INTERFACE -Wno-restrict)
+endif()
+if(TUTORIAL_SANITIZE)
+  target_compile_options(tutorial_options INTERFACE
+    -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer)
+  target_link_options(tutorial_options INTERFACE -fsanitize=address,undefined)
+endif()
+
+set(TUTORIAL_FIGURE_COMMANDS "" CACHE INTERNAL "")
+
+# tutorial_chapter_executable(<nn_name> <libraries>...)
+# Builds the chapter's executable <nn_name> from main.cpp and registers it with the 'figures'
+# target so that the run command renders its figures.
+function(tutorial_chapter_executable chapter)
+  add_executable(${chapter} main.cpp)
+  target_link_libraries(${chapter} PRIVATE ${ARGN} tutorial_options)
+  set(TUTORIAL_FIGURE_COMMANDS ${TUTORIAL_FIGURE_COMMANDS}
+      COMMAND $<TARGET_FILE:${chapter}> --out "${TUTORIAL_FIGURES_DIR}"
+      CACHE INTERNAL "")
+endfunction()
+
+# tutorial_tests(<target> <test prefix> SOURCES... LIBRARIES...)
+# One Catch2 executable per folder; every TEST_CASE becomes a CTest test named
+# "<prefix>: <test name>", so 'ctest -R 01_lines' runs one chapter alone.
+function(tutorial_tests target prefix)
+  cmake_parse_arguments(ARG "" "" "SOURCES;LIBRARIES" ${ARGN})
+  add_executable(${target} ${ARG_SOURCES})
+  target_link_libraries(${target} PRIVATE ${ARG_LIBRARIES} test_support Catch2::Catch2WithMain
+                        tutorial_options)
+  catch_discover_tests(${target} TEST_PREFIX "${prefix}: "
+                       WORKING_DIRECTORY "${CMAKE_CURRENT_BINARY_DIR}")
+endfunction()

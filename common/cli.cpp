@@ -1,0 +1,105 @@
+#include "cli.hpp"
+
+#include <charconv>
+#include <exception>
+#include <sstream>
+
+namespace tri {
+
+std::optional<std::string> CliArguments::value(std::string_view name) const {
+  const auto it = values_.find(name);
+  if (it == values_.end()) return std::nullopt;
+  return it->second;
+}
+
+std::string CliArguments::value_or(std::string_view name, std::string_view fallback) const {
+  return value(name).value_or(std::string(fallback));
+}
+
+std::optional<long long> CliArguments::integer(std::string_view name, long long low,
+                                               long long high) const {
+  const auto text = value(name);
+  if (!text) return std::nullopt;
+  long long result = 0;
+  const auto [end, error] = std::from_chars(text->data(), text->data() + text->size(), result);
+  if (error != std::errc() || end != text->data() + text->size() || result < low ||
+      result > high) {
+    throw UsageError("--" + std::string(name) + " expects a whole number from " +
+                     std::to_string(low) + " to " + std::to_string(high) + ", got '" + *text +
+                     "'");
+  }
+  return result;
+}
+
+CommandLine::CommandLine(std::string program, std::string summary, std::vector<CliOption> options)
+    : program_(std::move(program)), summary_(std::move(summary)), options_(std::move(options)) {}
+
+const CliOption* CommandLine::find(std::string_view name) const {
+  for (const auto& option : options_) {
+    if (option.name == name) return &option;
+  }
+  return nullptr;
+}
+
+CliArguments CommandLine::parse(int argc, const char* const* argv) const {
+  CliArguments args;
+  for (int i = 1; i < argc; ++i) {
+    const std::string_view word = argv[i];
+    if (word == "--help" || word == "-h") {
+      args.help_ = true;
+      continue;
+    }
+    if (!word.starts_with("--")) {
+      throw UsageError("unexpected argument '" + std::string(word) + "'");
+    }
+    const std::string_view name = word.substr(2);
+    const CliOption* option = find(name);
+    if (option == nullptr) throw UsageError("unknown option '" + std::string(word) + "'");
+    if (args.has(name)) throw UsageError("option '" + std::string(word) + "' given twice");
+    if (option->value_name.empty()) {
+      args.values_.emplace(std::string(name), std::string());
+      continue;
+    }
+    if (i + 1 >= argc) {
+      throw UsageError("option '" + std::string(word) + "' needs a value (" + option->value_name +
+                       ")");
+    }
+    args.values_.emplace(std::string(name), std::string(argv[++i]));
+  }
+  return args;
+}
+
+std::string CommandLine::help_text() const {
+  std::ostringstream text;
+  text << "Usage: " << program_ << " [options]\n\n" << summary_ << "\n\nOptions:\n";
+  text << "  --help, -h              print this help and exit\n";
+  for (const auto& option : options_) {
+    std::string left = "--" + option.name;
+    if (!option.value_name.empty()) left += " " + option.value_name;
+    text << "  " << left;
+    for (std::size_t pad = left.size(); pad < 22; ++pad) text << ' ';
+    text << "  " << option.help << "\n";
+  }
+  return text.str();
+}
+
+int run_command_line(const CommandLine& command_line, int argc, const char* const* argv,
+                     std::ostream& out, std::ostream& err,
+                     const std::function<int(const CliArguments&)>& body) {
+  try {
+    const CliArguments args = command_line.parse(argc, argv);
+    if (args.help_requested()) {
+      out << command_line.help_text();
+      return 0;
+    }
+    return body(args);
+  } catch (const UsageError& e) {
+    err << command_line.program() << ": error: " << e.what() << " (see --help)\n";
+    return 2;
+  } catch (const std::exception& e) {
+    err << command_line.program() << ": error: " << e.what() << "\n";
+    return 1;
+  }
+}
+
+}  // namespace tri

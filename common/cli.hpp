@@ -1,0 +1,73 @@
+/// @file
+/// A small command-line helper, so every executable answers --help and reports bad arguments the
+/// same way.
+#pragma once
+
+#include <functional>
+#include <map>
+#include <optional>
+#include <ostream>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace tri {
+
+/// One option: "--name VALUE" when value_name is not empty, else the flag "--name".
+struct CliOption {
+  std::string name;
+  std::string value_name;
+  std::string help;
+};
+
+/// A bad command line; what() says what is wrong in one line.
+class UsageError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// The options a command line gave.
+class CliArguments {
+ public:
+  bool help_requested() const noexcept { return help_; }
+  bool has(std::string_view name) const { return values_.contains(std::string(name)); }
+  std::optional<std::string> value(std::string_view name) const;
+  /// The value of an option, or fallback when it was not given.
+  std::string value_or(std::string_view name, std::string_view fallback) const;
+  /// The value of an option as a whole number in [low, high]; throws UsageError otherwise.
+  std::optional<long long> integer(std::string_view name, long long low, long long high) const;
+
+ private:
+  friend class CommandLine;
+  bool help_ = false;
+  std::map<std::string, std::string, std::less<>> values_;
+};
+
+/// Describes a program's options and parses argv against them. --help is always accepted.
+class CommandLine {
+ public:
+  CommandLine(std::string program, std::string summary, std::vector<CliOption> options);
+
+  /// Throws UsageError on an unknown option, a missing value or a stray argument.
+  CliArguments parse(int argc, const char* const* argv) const;
+  /// The text --help prints: what the program does and every option.
+  std::string help_text() const;
+  const std::string& program() const noexcept { return program_; }
+
+ private:
+  const CliOption* find(std::string_view name) const;
+
+  std::string program_;
+  std::string summary_;
+  std::vector<CliOption> options_;
+};
+
+/// Runs a program body with uniform error handling: prints help and returns 0 for --help, and
+/// turns exceptions into one line on err ("program: error: ...") with exit status 2 for usage
+/// errors and 1 for everything else.
+int run_command_line(const CommandLine& command_line, int argc, const char* const* argv,
+                     std::ostream& out, std::ostream& err,
+                     const std::function<int(const CliArguments&)>& body);
+
+}  // namespace tri

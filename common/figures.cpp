@@ -1,0 +1,56 @@
+#include "figures.hpp"
+
+#include <iostream>
+#include <stdexcept>
+
+#include "cli.hpp"
+#include "image_io.hpp"
+
+namespace tri {
+
+FigureWriter::FigureWriter(std::filesystem::path folder, std::ostream& log)
+    : folder_(std::move(folder)), log_(log) {}
+
+void FigureWriter::save_png(std::string_view name, const Canvas& canvas) {
+  const auto path = folder_ / (std::string(name) + ".png");
+  write_png(canvas, path);
+  log_ << "wrote " << path.string() << "\n";
+}
+
+void FigureWriter::save_counts(std::string_view name, const Canvas& canvas) {
+  const auto path = folder_ / (std::string(name) + ".pgm");
+  write_counts_pgm(canvas, path);
+  log_ << "wrote " << path.string() << "\n";
+}
+
+void FigureWriter::save_text(std::string_view name, std::string_view text) {
+  const auto path = folder_ / std::string(name);
+  const auto* bytes = reinterpret_cast<const std::uint8_t*>(text.data());
+  write_file_atomically(path, std::span<const std::uint8_t>(bytes, text.size()));
+  log_ << "wrote " << path.string() << "\n";
+}
+
+Canvas magnified(const Canvas& canvas, int factor) {
+  if (factor < 1) throw std::invalid_argument("magnification factor must be at least 1");
+  Canvas big(canvas.width() * factor, canvas.height() * factor);
+  for (int y = 0; y < big.height(); ++y) {
+    for (int x = 0; x < big.width(); ++x) big.put_pixel(x, y, canvas.pixel(x / factor, y / factor));
+  }
+  return big;
+}
+
+int run_chapter_program(int argc, const char* const* argv, std::string program,
+                        std::string what_it_draws,
+                        const std::function<void(FigureWriter& figures)>& render) {
+  const CommandLine command_line(
+      std::move(program), std::move(what_it_draws),
+      {{"out", "DIR", "folder for the figures (default: out)"}});
+  return run_command_line(command_line, argc, argv, std::cout, std::cerr,
+                          [&](const CliArguments& args) {
+                            FigureWriter figures(args.value_or("out", "out"), std::cout);
+                            render(figures);
+                            return 0;
+                          });
+}
+
+}  // namespace tri

@@ -1,0 +1,44 @@
+/// @file
+/// What every chapter executable shares: the --help/--out command line and saving figures.
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <ostream>
+#include <string>
+#include <string_view>
+
+#include "canvas.hpp"
+
+namespace tri {
+
+/// Saves a chapter's figures into one folder and says where each went.
+class FigureWriter {
+ public:
+  FigureWriter(std::filesystem::path folder, std::ostream& log);
+
+  /// Writes folder/name.png (atomically) and logs its path.
+  void save_png(std::string_view name, const Canvas& canvas);
+  /// Writes folder/name.pgm with the canvas's write counts and logs its path.
+  void save_counts(std::string_view name, const Canvas& canvas);
+  /// Writes folder/name (any text, e.g. a Markdown table) and logs its path.
+  void save_text(std::string_view name, std::string_view text);
+
+  const std::filesystem::path& folder() const noexcept { return folder_; }
+
+ private:
+  std::filesystem::path folder_;
+  std::ostream& log_;
+};
+
+/// A copy of the canvas with every pixel blown up to a factor×factor square, so single pixels
+/// are visible in the figures (factor >= 1).
+Canvas magnified(const Canvas& canvas, int factor);
+
+/// The main() of a chapter executable: parses --help and --out DIR (default "out"), then calls
+/// render with a FigureWriter on that folder. Returns the process exit status.
+int run_chapter_program(int argc, const char* const* argv, std::string program,
+                        std::string what_it_draws,
+                        const std::function<void(FigureWriter& figures)>& render);
+
+}  // namespace tri

@@ -1,0 +1,152 @@
+#include "scene.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "canvas.hpp"
+
+namespace tri {
+namespace {
+
+std::vector<std::string_view> split_words(std::string_view line) {
+  std::vector<std::string_view> words;
+  std::size_t i = 0;
+  while (i < line.size()) {
+    while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == '\r')) ++i;
+    std::size_t end = i;
+    while (end < line.size() && line[end] != ' ' && line[end] != '\t' && line[end] != '\r') ++end;
+    if (end > i) words.push_back(line.substr(i, end - i));
+    i = end;
+  }
+  return words;
+}
+
+// Reads one directive's words, throwing SceneError with the position on the first problem.
+class LineReader {
+ public:
+  LineReader(std::string_view source, int line_number) : source_(source), line_(line_number) {}
+
+  [[noreturn]] void fail(const std::string& problem) const {
+    throw SceneError(std::string(source_) + ":" + std::to_string(line_) + ": " + problem);
+  }
+
+  double coordinate(std::string_view word, std::string_view what) const {
+    double value = 0.0;
+    const auto [end, error] = std::from_chars(word.data(), word.data() + word.size(), value);
+    if (error == std::errc::result_out_of_range) {
+      fail(std::string(what) + " '" + std::string(word) + "' is out of range (limit ±2^30)");
+    }
+    if (error != std::errc() || end != word.data() + word.size()) {
+      fail("expected a decimal number for " + std::string(what) + ", got '" + std::string(word) +
+           "'");
+    }
+    if (std::isnan(value)) fail(std::string(what) + " is NaN; coordinates must be finite numbers");
+    if (std::isinf(value)) {
+      fail(std::string(what) + " is infinite; coordinates must be finite numbers");
+    }
+    if (std::abs(value) > max_scene_coordinate) {
+      fail(std::string(what) + " " + std::string(word) + " is outside ±2^30 (1073741824)");
+    }
+    return value;
+  }
+
+  int integer(std::string_view word, std::string_view what, int low, int high) const {
+    int value = 0;
+    const auto [end, error] = std::from_chars(word.data(), word.data() + word.size(), value);
+    if (error != std::errc() || end != word.data() + word.size()) {
+      fail("expected a whole number for " + std::string(what) + ", got '" + std::string(word) + "'");
+    }
+    if (value < low || value > high) {
+      fail(std::string(what) + " " + std::to_string(value) + " is outside " + std::to_string(low) +
+           ".." + std::to_string(high));
+    }
+    return value;
+  }
+
+  // Reads an optional "r g b" at words[first..]; white when absent.
+  Color color(const std::vector<std::string_view>& words, std::size_t first, Color absent) const {
+    if (words.size() == first) return absent;
+    const auto channel = [&](std::size_t i, const char* name) {
+      return static_cast<std::uint8_t>(integer(words[first + i], name, 0, 255));
+    };
+    return Color{channel(0, "red"), channel(1, "green"), channel(2, "blue"), 255};
+  }
+
+  void expect_count(const std::vector<std::string_view>& words, std::size_t bare,
+                    const char* usage) const {
+    if (words.size() != bare && words.size() != bare + 3) {
+      fail(std::string("expected '") + usage + "', got " + std::to_string(words.size() - 1) +
+           " values");
+    }
+  }
+
+ private:
+  std::string_view source_;
+  int line_;
+};
+
+glm::dvec2 point(const LineReader& reader, const std::vector<std::string_view>& words,
+                 std::size_t first, int index) {
+  const std::string x = "x" + std::to_string(index);
+  const std::string y = "y" + std::to_string(index);
+  return {reader.coordinate(words[first], x), reader.coordinate(words[first + 1], y)};
+}
+
+}  // namespace
+
+Scene parse_scene(std::istream& in, std::string_view source_name) {
+  Scene scene;
+  bool have_canvas = false;
+  std::string text;
+  int line_number = 0;
+  while (std::getline(in, text)) {
+    ++line_number;
+    std::string_view line(text);
+    if (const auto hash = line.find('#'); hash != std::string_view::npos) line = line.substr(0, hash);
+    const auto words = split_words(line);
+    if (words.empty()) continue;
+    const LineReader reader(source_name, line_number);
+    const std::string_view directive = words[0];
+    if (directive == "canvas") {
+      if (have_canvas) reader.fail("a scene has exactly one 'canvas' directive");
+      reader.expect_count(words, 3, "canvas W H [r g b]");
+      scene.width = reader.integer(words[1], "canvas width", 1, max_canvas_side);
+      scene.height = reader.integer(words[2], "canvas height", 1, max_canvas_side);
+      scene.background = reader.color(words, 3, colors::black);
+      have_canvas = true;
+    } else if (directive == "tri" || directive == "line") {
+      if (!have_canvas) reader.fail("'" + std::string(directive) + "' before the 'canvas' directive");
+      if (directive == "tri") {
+        reader.expect_count(words, 7, "tri x0 y0 x1 y1 x2 y2 [r g b]");
+        SceneTriangle t;
+        for (int i = 0; i < 3; ++i) t.vertices[i] = point(reader, words, 1 + 2 * i, i);
+        t.color = reader.color(words, 7, colors::white);
+        scene.primitives.emplace_back(t);
+      } else {
+        reader.expect_count(words, 5, "line x0 y0 x1 y1 [r g b]");
+        SceneLine l;
+        for (int i = 0; i < 2; ++i) l.ends[i] = point(reader, words, 1 + 2 * i, i);
+        l.color = reader.color(words, 5, colors::white);
+        scene.primitives.emplace_back(l);
+      }
+    } else {
+      reader.fail("unknown directive '" + std::string(directive) +
+                  "' (expected canvas, tri or line)");
+    }
+  }
+  if (in.bad()) throw SceneError(std::string(source_name) + ": read error");
+  if (!have_canvas) {
+    throw SceneError(std::string(source_name) + ": missing 'canvas W H' directive");
+  }
+  return scene;
+}
+
+Scene load_scene(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  if (!in) throw SceneError(path.string() + ": cannot open the scene file");
+  return parse_scene(in, path.string());
+}
+
+}  // namespace tri

@@ -1,0 +1,65 @@
+/// @file
+/// Scenes: a canvas size and an ordered list of coloured triangles and lines, read from a small
+/// text format (DESIGN section 4).
+#pragma once
+
+#include <array>
+#include <filesystem>
+#include <istream>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+#include <glm/vec2.hpp>
+
+#include "color.hpp"
+
+namespace tri {
+
+/// Coordinates must lie within ±2^30 pixels: far enough to test huge triangles, small enough that
+/// fixed-point rasterizers can reason about their bit budgets.
+inline constexpr double max_scene_coordinate = 1073741824.0;
+
+/// A filled triangle of a scene; vertices in canvas pixel units (integers are pixel centres).
+struct SceneTriangle {
+  std::array<glm::dvec2, 3> vertices;
+  Color color = colors::white;
+};
+
+/// A line segment of a scene.
+struct SceneLine {
+  std::array<glm::dvec2, 2> ends;
+  Color color = colors::white;
+};
+
+/// One drawable item; the scene keeps them in file order because later ones paint over earlier.
+using ScenePrimitive = std::variant<SceneTriangle, SceneLine>;
+
+/// Everything a picture needs, and nothing more.
+struct Scene {
+  int width = 0;
+  int height = 0;
+  Color background = colors::black;
+  std::vector<ScenePrimitive> primitives;
+};
+
+/// A scene that could not be read. what() is one line: "source:line: problem".
+class SceneError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// Parses the text format:
+///   canvas W H [r g b]              (first directive, exactly once; 1 <= W, H <= 16384)
+///   tri x0 y0 x1 y1 x2 y2 [r g b]   (decimal coordinates within ±2^30)
+///   line x0 y0 x1 y1 [r g b]
+/// '#' starts a comment. Throws SceneError naming source_name and the line on the first problem,
+/// so no scene is ever returned half-read.
+Scene parse_scene(std::istream& in, std::string_view source_name);
+
+/// Reads and parses a scene file (errors name the file).
+Scene load_scene(const std::filesystem::path& path);
+
+}  // namespace tri

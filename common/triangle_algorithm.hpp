@@ -1,0 +1,64 @@
+/// @file
+/// The one entry point every triangle algorithm of the book is called through, and what the
+/// registry records about each (DESIGN section 5).
+#pragma once
+
+#include <array>
+#include <string_view>
+
+#include <glm/vec2.hpp>
+
+#include "canvas.hpp"
+#include "color.hpp"
+
+namespace tri {
+
+/// Three vertices in canvas pixel units (integer values are pixel centres).
+using Triangle = std::array<glm::dvec2, 3>;
+
+/// What an algorithm claims about the pixels it covers.
+enum class CoverageRule {
+  top_left,     ///< exact coverage: centres strictly inside, ties by the top-left rule
+  inclusive,    ///< centres on an edge are always covered (the articles' methods)
+  approximate,  ///< no exactness claimed
+};
+
+/// The name `raster --list` prints for a rule: "top-left", "inclusive" or "approximate".
+std::string_view rule_name(CoverageRule rule) noexcept;
+
+/// Draws one triangle in one colour. Called only with finite vertices within the scene limits.
+using DrawTriangleFunction = void (*)(Canvas& canvas, const Triangle& triangle, Color color);
+
+/// A registered triangle algorithm.
+struct TriangleAlgorithm {
+  std::string_view name;     ///< stable name, e.g. "scanline_single_loop"
+  std::string_view chapter;  ///< chapter folder, e.g. "04_scanline"
+  CoverageRule rule;
+  std::string_view summary;  ///< one line for `raster --list`
+  DrawTriangleFunction draw;
+  bool threaded = false;  ///< uses more than one thread
+};
+
+/// Whether a triangle was drawn or refused before reaching the algorithm.
+enum class DrawResult {
+  drawn,
+  rejected_non_finite,   ///< a coordinate was NaN or infinite
+  rejected_out_of_range  ///< a coordinate was beyond ±2^30
+};
+
+/// One line describing a result, for messages.
+std::string_view describe(DrawResult result) noexcept;
+
+/// Checks that every coordinate is finite and within the scene limits.
+DrawResult validate_triangle(const Triangle& triangle) noexcept;
+
+/// The library entry point: validates the triangle, then lets the algorithm draw it. A refused
+/// triangle draws nothing and the result says why.
+DrawResult draw_triangle(const TriangleAlgorithm& algorithm, Canvas& canvas,
+                         const Triangle& triangle, Color color);
+
+/// The pixel centre nearest to p (halves round up), which is what the articles' integer
+/// algorithms receive. Precondition: p is finite and within ±2^30.
+glm::ivec2 nearest_pixel(glm::dvec2 p) noexcept;
+
+}  // namespace tri

@@ -1,0 +1,64 @@
+#include "pixels.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace tri::testing {
+namespace {
+
+PixelSet pixels_with_count_above(const Canvas& canvas, std::uint32_t threshold) {
+  if (!canvas.write_counts_enabled()) throw std::logic_error("enable write counts first");
+  PixelSet set;
+  for (int y = 0; y < canvas.height(); ++y) {
+    for (int x = 0; x < canvas.width(); ++x) {
+      if (canvas.write_count(x, y) > threshold) set.emplace(x, y);
+    }
+  }
+  return set;
+}
+
+}  // namespace
+
+PixelSet written_pixels(const Canvas& canvas) { return pixels_with_count_above(canvas, 0); }
+PixelSet overdrawn_pixels(const Canvas& canvas) { return pixels_with_count_above(canvas, 1); }
+
+PixelSet inclusive_pixels(glm::ivec2 a, glm::ivec2 b, glm::ivec2 c, int width, int height) {
+  // Twice the signed area of (p, q, r): > 0 when r is left of p -> q.
+  const auto cross = [](glm::ivec2 p, glm::ivec2 q, std::int64_t rx, std::int64_t ry) {
+    return (static_cast<std::int64_t>(q.x) - p.x) * (ry - p.y) -
+           (static_cast<std::int64_t>(q.y) - p.y) * (rx - p.x);
+  };
+  const std::int64_t area = cross(a, b, c.x, c.y);
+  PixelSet set;
+  if (area == 0) return set;
+  const std::int64_t sign = area > 0 ? 1 : -1;
+  const int x0 = std::max(0, std::min({a.x, b.x, c.x})), x1 = std::min(width - 1, std::max({a.x, b.x, c.x}));
+  const int y0 = std::max(0, std::min({a.y, b.y, c.y})), y1 = std::min(height - 1, std::max({a.y, b.y, c.y}));
+  for (int y = y0; y <= y1; ++y) {
+    for (int x = x0; x <= x1; ++x) {
+      if (sign * cross(a, b, x, y) >= 0 && sign * cross(b, c, x, y) >= 0 &&
+          sign * cross(c, a, x, y) >= 0) {
+        set.emplace(x, y);
+      }
+    }
+  }
+  return set;
+}
+
+std::uint64_t Random::next() noexcept {
+  std::uint64_t z = (state_ += 0x9e3779b97f4a7c15ULL);
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+  return z ^ (z >> 31);
+}
+
+int Random::integer(int low, int high) noexcept {
+  const auto span = static_cast<std::uint64_t>(static_cast<std::int64_t>(high) - low + 1);
+  return static_cast<int>(low + static_cast<std::int64_t>(next() % span));
+}
+
+double Random::real(double low, double high) noexcept {
+  return low + (high - low) * static_cast<double>(next() >> 11) * 0x1.0p-53;
+}
+
+}  // namespace tri::testing

@@ -1,0 +1,28 @@
+#include "registry.hpp"
+
+#include <algorithm>
+
+#include "03_interpolate_fill/algorithms.hpp"
+#include "04_scanline/algorithms.hpp"
+#include "05_edge_function/algorithms.hpp"
+#include "06_barycentric/algorithms.hpp"
+
+namespace tri {
+
+std::vector<TriangleAlgorithm> registered_algorithms() {
+  std::vector<TriangleAlgorithm> all;
+  for (const auto chapter : {ch03::triangle_algorithms(), ch04::triangle_algorithms(),
+                             ch05::triangle_algorithms(), ch06::triangle_algorithms()}) {
+    all.insert(all.end(), chapter.begin(), chapter.end());
+  }
+  return all;
+}
+
+const TriangleAlgorithm* find_algorithm(const std::vector<TriangleAlgorithm>& algorithms,
+                                        std::string_view name) {
+  const auto it = std::find_if(algorithms.begin(), algorithms.end(),
+                               [&](const TriangleAlgorithm& a) { return a.name == name; });
+  return it == algorithms.end() ? nullptr : &*it;
+}
+
+}  // namespace tri

@@ -1,0 +1,20 @@
+/// @file
+/// The registry: every triangle algorithm of the book, in chapter order (DESIGN section 5).
+#pragma once
+
+#include <string_view>
+#include <vector>
+
+#include "triangle_algorithm.hpp"
+
+namespace tri {
+
+/// All registered triangle algorithms, in chapter order. Tests and the benchmark iterate this, so
+/// an algorithm is covered the moment its chapter lists it.
+std::vector<TriangleAlgorithm> registered_algorithms();
+
+/// The algorithm with this name, or nullptr.
+const TriangleAlgorithm* find_algorithm(const std::vector<TriangleAlgorithm>& algorithms,
+                                        std::string_view name);
+
+}  // namespace tri
