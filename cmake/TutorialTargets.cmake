@@ -31,12 +31,12 @@ endfunction()
 
 # tutorial_tests(<target> <test prefix> SOURCES... LIBRARIES...)
 # One Catch2 executable per folder; every TEST_CASE becomes a CTest test named
-# "<prefix>: <test name>", so 'ctest -R 01_lines' runs one chapter alone.
+# "<prefix>/<test name>", so 'ctest -R 01_lines' runs one chapter alone.
 function(tutorial_tests target prefix)
   cmake_parse_arguments(ARG "" "" "SOURCES;LIBRARIES" ${ARGN})
   add_executable(${target} ${ARG_SOURCES})
   target_link_libraries(${target} PRIVATE ${ARG_LIBRARIES} test_support Catch2::Catch2WithMain
                         tutorial_options)
-  catch_discover_tests(${target} TEST_PREFIX "${prefix}: "
+  catch_discover_tests(${target} TEST_PREFIX "${prefix}/"
                        WORKING_DIRECTORY "${CMAKE_CURRENT_BINARY_DIR}")
 endfunction()

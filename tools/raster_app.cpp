@@ -1,0 +1,136 @@
+#include "raster_app.hpp"
+
+#include <chrono>
+#include <cstdint>
+#include <filesystem>
+#include <numeric>
+#include <optional>
+#include <string>
+
+#include "cli.hpp"
+#include "image_io.hpp"
+#include "registry.hpp"
+#include "render_scene.hpp"
+
+namespace tri {
+namespace {
+
+CommandLine raster_command_line() {
+  return CommandLine(
+      "raster",
+      "Renders a scene file with one of the book's triangle algorithms.\n"
+      "  raster --list\n"
+      "  raster --algo NAME --scene FILE [--out FILE.png] [--counts FILE.pgm]\n"
+      "  raster --algo NAME --scene FILE --bench N\n"
+      "Scene format: 'canvas W H [r g b]', 'tri x0 y0 x1 y1 x2 y2 [r g b]',\n"
+      "'line x0 y0 x1 y1 [r g b]', '#' comments; y is up, integers are pixel centres.",
+      {
+          {"list", "", "print every algorithm: NAME, CHAPTER, RULE, summary (tab-separated)"},
+          {"algo", "NAME", "the triangle algorithm to draw with (see --list)"},
+          {"scene", "FILE", "the scene file to draw"},
+          {"out", "FILE.png", "write the picture as PNG"},
+          {"counts", "FILE.pgm", "write per-pixel write counts as binary PGM (saturating at 255)"},
+          {"bench", "N", "draw the scene N times after a warm-up and print the speed"},
+      });
+}
+
+void print_list(const std::vector<TriangleAlgorithm>& algorithms, std::ostream& out) {
+  for (const auto& a : algorithms) {
+    out << a.name << '\t' << a.chapter << '\t' << rule_name(a.rule) << '\t' << a.summary << '\n';
+  }
+}
+
+// Draws the scene `frames` times after one warm-up frame and prints DESIGN section 9's line.
+void benchmark(const Scene& scene, const TriangleAlgorithm* algorithm, long long frames,
+               std::ostream& out) {
+  // One counted frame tells how many pixels a frame writes; it doubles as the warm-up.
+  Canvas counted = make_canvas(scene);
+  counted.enable_write_counts();
+  render_scene(scene, algorithm, counted);
+  const auto counts = counted.write_counts();
+  const std::uint64_t pixels_per_frame =
+      std::accumulate(counts.begin(), counts.end(), std::uint64_t{0});
+
+  Canvas canvas = make_canvas(scene);
+  render_scene(scene, algorithm, canvas);
+  const auto start = std::chrono::steady_clock::now();
+  for (long long i = 0; i < frames; ++i) render_scene(scene, algorithm, canvas);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const auto triangles = count_triangles(scene);
+  const double per_second = seconds > 0 ? 1.0 / seconds : 0.0;
+  out << "triangles=" << triangles << " frames=" << frames << " seconds=" << seconds
+      << " tris_per_s=" << static_cast<double>(triangles) * frames * per_second
+      << " mpix_per_s=" << static_cast<double>(pixels_per_frame) * frames * per_second / 1e6
+      << '\n';
+}
+
+int run(const CliArguments& args, std::ostream& out) {
+  const auto algorithms = registered_algorithms();
+  if (args.has("list")) {
+    if (args.has("algo") || args.has("scene") || args.has("out") || args.has("counts") ||
+        args.has("bench")) {
+      throw UsageError("--list takes no other option");
+    }
+    print_list(algorithms, out);
+    return 0;
+  }
+  const auto scene_path = args.value("scene");
+  if (!scene_path) throw UsageError("--scene FILE is required (or --list)");
+  const TriangleAlgorithm* algorithm = nullptr;
+  if (const auto name = args.value("algo")) {
+    algorithm = find_algorithm(algorithms, *name);
+    if (algorithm == nullptr) {
+      throw UsageError("unknown algorithm '" + *name + "' (raster --list shows the names)");
+    }
+  }
+  const auto frames = args.integer("bench", 1, 1'000'000'000);
+  if (frames && (args.has("out") || args.has("counts"))) {
+    throw UsageError("--bench writes no image: drop --out and --counts");
+  }
+
+  const Scene scene = load_scene(*scene_path);
+  if (algorithm == nullptr && count_triangles(scene) > 0) {
+    throw UsageError(*scene_path + " has triangles: choose an algorithm with --algo NAME");
+  }
+  if (frames) {
+    benchmark(scene, algorithm, *frames, out);
+    return 0;
+  }
+
+  Canvas canvas = make_canvas(scene);
+  if (args.has("counts")) canvas.enable_write_counts();
+  const RenderStats stats = render_scene(scene, algorithm, canvas);
+  if (stats.rejected_triangles > 0) {
+    throw std::runtime_error(std::to_string(stats.rejected_triangles) +
+                             " triangle(s) have non-finite or out-of-range vertices");
+  }
+  // Encode everything before writing anything, and undo the first file if the second fails.
+  const auto png = args.has("out") ? encode_png(canvas) : std::vector<std::uint8_t>{};
+  const auto pgm = args.has("counts") ? encode_counts_pgm(canvas) : std::vector<std::uint8_t>{};
+  std::optional<std::filesystem::path> written;
+  try {
+    if (const auto path = args.value("out")) {
+      write_file_atomically(*path, png);
+      written = *path;
+    }
+    if (const auto path = args.value("counts")) write_file_atomically(*path, pgm);
+  } catch (...) {
+    std::error_code ignored;
+    if (written) std::filesystem::remove(*written, ignored);
+    throw;
+  }
+  out << "drew " << stats.triangles << " triangle(s) and " << stats.lines << " line(s) on "
+      << scene.width << "x" << scene.height;
+  if (algorithm != nullptr) out << " with " << algorithm->name;
+  out << '\n';
+  return 0;
+}
+
+}  // namespace
+
+int run_raster(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
+  return run_command_line(raster_command_line(), argc, argv, out, err,
+                          [&](const CliArguments& args) { return run(args, out); });
+}
+
+}  // namespace tri

@@ -1,0 +1,16 @@
+/// @file
+/// The raster tool: renders any scene with any registered algorithm (DESIGN section 9).
+#pragma once
+
+#include <ostream>
+
+namespace tri {
+
+/// The whole `raster` program, in-process so tests can call it:
+///   raster --list
+///   raster --algo NAME --scene FILE [--out FILE.png] [--counts FILE.pgm]
+///   raster --algo NAME --scene FILE --bench N
+/// Returns the exit status; errors are one line on err and leave no output file behind.
+int run_raster(int argc, const char* const* argv, std::ostream& out, std::ostream& err);
+
+}  // namespace tri

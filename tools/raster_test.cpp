@@ -1,0 +1,200 @@
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "line_reference.hpp"
+#include "raster_app.hpp"
+#include "registry.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// A fresh folder per test case, removed afterwards.
+class TempFolder {
+ public:
+  TempFolder() {
+    path_ = fs::temp_directory_path() /
+            ("raster_test_" + std::to_string(reinterpret_cast<std::uintptr_t>(this)));
+    fs::remove_all(path_);
+    fs::create_directories(path_);
+  }
+  ~TempFolder() {
+    std::error_code ignored;
+    fs::remove_all(path_, ignored);
+  }
+  fs::path write(const std::string& name, const std::string& text) const {
+    std::ofstream(path_ / name) << text;
+    return path_ / name;
+  }
+  fs::path operator/(const std::string& name) const { return path_ / name; }
+  std::size_t file_count() const {
+    return static_cast<std::size_t>(std::distance(fs::directory_iterator(path_), fs::directory_iterator()));
+  }
+
+ private:
+  fs::path path_;
+};
+
+struct Run {
+  int status;
+  std::string out;
+  std::string err;
+};
+
+Run raster(std::vector<std::string> args) {
+  args.insert(args.begin(), "raster");
+  std::vector<const char*> argv;
+  for (const auto& a : args) argv.push_back(a.c_str());
+  std::ostringstream out, err;
+  const int status = tri::run_raster(static_cast<int>(argv.size()), argv.data(), out, err);
+  return {status, out.str(), err.str()};
+}
+
+std::string read_file(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+bool is_one_line(const std::string& text) {
+  return !text.empty() && text.back() == '\n' && text.find('\n') == text.size() - 1;
+}
+
+}  // namespace
+
+TEST_CASE("raster --help describes every form of the command") {
+  const Run run = raster({"--help"});
+  CHECK(run.status == 0);
+  CHECK(run.err.empty());
+  for (const char* text : {"--list", "--algo NAME", "--scene FILE", "--out FILE.png",
+                           "--counts FILE.pgm", "--bench N"}) {
+    CHECK(run.out.find(text) != std::string::npos);
+  }
+}
+
+TEST_CASE("raster --list prints one tab-separated line per registered algorithm") {
+  const Run run = raster({"--list"});
+  REQUIRE(run.status == 0);
+  const auto algorithms = tri::registered_algorithms();
+  std::istringstream lines(run.out);
+  std::string line;
+  std::size_t count = 0;
+  const std::regex format("[a-z0-9_]+\t[0-9]{2}_[a-z_]+\t(top-left|inclusive|approximate)\t.+");
+  while (std::getline(lines, line)) {
+    CHECK(std::regex_match(line, format));
+    REQUIRE(count < algorithms.size());
+    CHECK(line.starts_with(std::string(algorithms[count].name) + "\t"));
+    ++count;
+  }
+  CHECK(count == algorithms.size());
+}
+
+TEST_CASE("raster draws a scene's lines with chapter 01's Bresenham and writes PNG and counts") {
+  TempFolder dir;
+  const auto scene = dir.write("lines.scene",
+                               "# two lines\ncanvas 16 8 0 0 64\n"
+                               "line 0 0 15 7 255 0 0\n"
+                               "line 2.4 6.6 9.4 1 0 255 0  # rounds to (2,7)-(9,1)\n");
+  const Run run = raster({"--scene", scene.string(), "--out", (dir / "a.png").string(), "--counts",
+                          (dir / "a.pgm").string()});
+  REQUIRE(run.status == 0);
+  CHECK(run.out == "drew 0 triangle(s) and 2 line(s) on 16x8\n");
+  const std::string png = read_file(dir / "a.png");
+  REQUIRE(png.size() > 8);
+  CHECK(png.substr(1, 3) == "PNG");
+
+  // Expected counts: the exact nearest pixels (neither line has a tie), top row first.
+  std::vector<int> counts(16 * 8, 0);
+  for (const auto& [a, b] : {std::pair{glm::ivec2(0, 0), glm::ivec2(15, 7)},
+                             std::pair{glm::ivec2(2, 7), glm::ivec2(9, 1)}}) {
+    for (const auto& p : tri::ch01::exact_line_pixels(a, b)) {
+      REQUIRE_FALSE(p.tie);
+      ++counts[static_cast<std::size_t>((7 - p.pixel.y) * 16 + p.pixel.x)];
+    }
+  }
+  const std::string pgm = read_file(dir / "a.pgm");
+  const std::string header = "P5\n16 8\n255\n";
+  REQUIRE(pgm.size() == header.size() + counts.size());
+  CHECK(pgm.substr(0, header.size()) == header);
+  for (std::size_t i = 0; i < counts.size(); ++i) {
+    CHECK(static_cast<int>(static_cast<unsigned char>(pgm[header.size() + i])) == counts[i]);
+  }
+}
+
+TEST_CASE("raster rejects an unknown algorithm in one line and writes nothing") {
+  TempFolder dir;
+  const auto scene = dir.write("s.scene", "canvas 8 8\ntri 0 0 7 0 0 7\n");
+  const Run run = raster({"--algo", "no_such_algorithm", "--scene", scene.string(), "--out",
+                          (dir / "x.png").string()});
+  CHECK(run.status != 0);
+  CHECK(is_one_line(run.err));
+  CHECK(run.err.find("unknown algorithm 'no_such_algorithm'") != std::string::npos);
+  CHECK_FALSE(fs::exists(dir / "x.png"));
+  CHECK(dir.file_count() == 1);
+}
+
+TEST_CASE("raster rejects a malformed scene with file and line and writes nothing") {
+  TempFolder dir;
+  const auto scene = dir.write("bad.scene", "canvas 8 8\nline 0 0 7 7\nline 0 zero 3 3\n");
+  const Run run = raster({"--scene", scene.string(), "--out", (dir / "x.png").string(), "--counts",
+                          (dir / "x.pgm").string()});
+  CHECK(run.status == 1);
+  CHECK(is_one_line(run.err));
+  CHECK(run.err.find(scene.string() + ":3: expected a decimal number for y0, got 'zero'") !=
+        std::string::npos);
+  CHECK(dir.file_count() == 1);
+}
+
+TEST_CASE("raster rejects NaN and infinite coordinates and writes nothing") {
+  TempFolder dir;
+  const auto word = GENERATE(as<std::string>{}, "nan", "NaN", "inf", "-inf", "infinity");
+  const auto scene = dir.write("nan.scene", "canvas 8 8\nline 0 0 " + word + " 7\n");
+  const Run run = raster({"--scene", scene.string(), "--out", (dir / "x.png").string()});
+  CHECK(run.status == 1);
+  CHECK(is_one_line(run.err));
+  CHECK(run.err.find(scene.string() + ":2: x1 is") != std::string::npos);
+  CHECK(dir.file_count() == 1);
+}
+
+TEST_CASE("raster asks for an algorithm when the scene has triangles") {
+  TempFolder dir;
+  const auto scene = dir.write("t.scene", "canvas 8 8\ntri 0 0 7 0 0 7\n");
+  const Run run = raster({"--scene", scene.string(), "--out", (dir / "x.png").string()});
+  CHECK(run.status == 2);
+  CHECK(run.err.find("choose an algorithm with --algo") != std::string::npos);
+  CHECK(dir.file_count() == 1);
+}
+
+TEST_CASE("raster reports a missing scene file, a missing --scene and bad option mixes") {
+  TempFolder dir;
+  Run run = raster({"--scene", (dir / "none.scene").string()});
+  CHECK(run.status == 1);
+  CHECK(run.err.find("none.scene: cannot open the scene file") != std::string::npos);
+  run = raster({"--out", (dir / "x.png").string()});
+  CHECK(run.status == 2);
+  CHECK(run.err.find("--scene FILE is required") != std::string::npos);
+  run = raster({"--list", "--algo", "x"});
+  CHECK(run.status == 2);
+  const auto scene = dir.write("l.scene", "canvas 8 8\nline 0 0 7 7\n");
+  run = raster({"--scene", scene.string(), "--bench", "3", "--out", (dir / "x.png").string()});
+  CHECK(run.status == 2);
+  run = raster({"--scene", scene.string(), "--bench", "0"});
+  CHECK(run.status == 2);
+  CHECK(dir.file_count() == 1);
+}
+
+TEST_CASE("raster --bench prints the one-line speed report") {
+  TempFolder dir;
+  const auto scene = dir.write("l.scene", "canvas 8 8\nline 0 0 7 7\nline 0 7 7 0\n");
+  const Run run = raster({"--scene", scene.string(), "--bench", "5"});
+  REQUIRE(run.status == 0);
+  const std::regex format(
+      "triangles=0 frames=5 seconds=[0-9.e+-]+ tris_per_s=[0-9.e+-]+ mpix_per_s=[0-9.e+-]+\n");
+  CHECK(std::regex_match(run.out, format));
+  CHECK(dir.file_count() == 1);
+}

@@ -1,0 +1,31 @@
+/// @file
+/// Drawing a whole scene with one registered triangle algorithm.
+#pragma once
+
+#include <cstddef>
+
+#include "canvas.hpp"
+#include "scene.hpp"
+#include "triangle_algorithm.hpp"
+
+namespace tri {
+
+/// What drawing a scene did.
+struct RenderStats {
+  std::size_t triangles = 0;           ///< triangles handed to the algorithm
+  std::size_t lines = 0;               ///< lines drawn
+  std::size_t rejected_triangles = 0;  ///< triangles refused by draw_triangle (NaN, range)
+};
+
+/// A canvas of the scene's size and background.
+Canvas make_canvas(const Scene& scene);
+
+/// Draws every primitive in file order: triangles with the algorithm (through draw_triangle, so
+/// non-finite input is refused), lines with chapter 01's Bresenham between the nearest pixel
+/// centres. The algorithm may be null when the scene has no triangles.
+RenderStats render_scene(const Scene& scene, const TriangleAlgorithm* algorithm, Canvas& canvas);
+
+/// Number of triangles in a scene.
+std::size_t count_triangles(const Scene& scene);
+
+}  // namespace tri
