@@ -55,7 +55,8 @@ void benchmark(const Scene& scene, const TriangleAlgorithm* algorithm, long long
   render_scene(scene, algorithm, canvas);
   const auto start = std::chrono::steady_clock::now();
   for (long long i = 0; i < frames; ++i) render_scene(scene, algorithm, canvas);
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const auto triangles = count_triangles(scene);
   const double per_second = seconds > 0 ? 1.0 / seconds : 0.0;
   out << "triangles=" << triangles << " frames=" << frames << " seconds=" << seconds

@@ -3,4 +3,6 @@
 
 #include "raster_app.hpp"
 
-int main(int argc, char** argv) { return tri::run_raster(argc, argv, std::cout, std::cerr); }
+int main(int argc, char** argv) {
+  return tri::run_raster(argc, argv, std::cout, std::cerr);
+}

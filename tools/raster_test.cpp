@@ -34,7 +34,8 @@ class TempFolder {
   }
   fs::path operator/(const std::string& name) const { return path_ / name; }
   std::size_t file_count() const {
-    return static_cast<std::size_t>(std::distance(fs::directory_iterator(path_), fs::directory_iterator()));
+    return static_cast<std::size_t>(
+        std::distance(fs::directory_iterator(path_), fs::directory_iterator()));
   }
 
  private:

@@ -6,13 +6,15 @@
 #include "04_scanline/algorithms.hpp"
 #include "05_edge_function/algorithms.hpp"
 #include "06_barycentric/algorithms.hpp"
+#include "07_exact_coverage/algorithms.hpp"
 
 namespace tri {
 
 std::vector<TriangleAlgorithm> registered_algorithms() {
   std::vector<TriangleAlgorithm> all;
-  for (const auto chapter : {ch03::triangle_algorithms(), ch04::triangle_algorithms(),
-                             ch05::triangle_algorithms(), ch06::triangle_algorithms()}) {
+  for (const auto chapter :
+       {ch03::triangle_algorithms(), ch04::triangle_algorithms(), ch05::triangle_algorithms(),
+        ch06::triangle_algorithms(), ch07::triangle_algorithms()}) {
     all.insert(all.end(), chapter.begin(), chapter.end());
   }
   return all;

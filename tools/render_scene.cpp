@@ -6,11 +6,14 @@
 
 namespace tri {
 
-Canvas make_canvas(const Scene& scene) { return Canvas(scene.width, scene.height, scene.background); }
+Canvas make_canvas(const Scene& scene) {
+  return Canvas(scene.width, scene.height, scene.background);
+}
 
 std::size_t count_triangles(const Scene& scene) {
   std::size_t n = 0;
-  for (const auto& primitive : scene.primitives) n += std::holds_alternative<SceneTriangle>(primitive);
+  for (const auto& primitive : scene.primitives)
+    n += std::holds_alternative<SceneTriangle>(primitive);
   return n;
 }
 
@@ -19,7 +22,8 @@ RenderStats render_scene(const Scene& scene, const TriangleAlgorithm* algorithm,
   for (const auto& primitive : scene.primitives) {
     if (const auto* triangle = std::get_if<SceneTriangle>(&primitive)) {
       if (algorithm == nullptr) throw std::logic_error("the scene has triangles but no algorithm");
-      const DrawResult result = draw_triangle(*algorithm, canvas, triangle->vertices, triangle->color);
+      const DrawResult result =
+          draw_triangle(*algorithm, canvas, triangle->vertices, triangle->color);
       if (result == DrawResult::drawn) {
         ++stats.triangles;
       } else {

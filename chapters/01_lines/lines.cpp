@@ -11,7 +11,9 @@
 namespace tri::ch01 {
 namespace {
 
-int round_to_int(double v) { return static_cast<int>(std::floor(v + 0.5)); }
+int round_to_int(double v) {
+  return static_cast<int>(std::floor(v + 0.5));
+}
 
 }  // namespace
 

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <numbers>
 #include <string>
+#include <utility>
 
 #include "figures.hpp"
 #include "line_algorithms.hpp"
@@ -29,20 +30,21 @@ Canvas star(const LineAlgorithm& algorithm) {
   return canvas;
 }
 
-// Lines whose exact path passes halfway between two pixels, each drawn twice: left to right in
-// the upper copy, right to left in the lower one. White: the nearest pixel (ties rounded up);
-// red: a different pixel; dark grey: the nearest pixel, not drawn.
+// Lines whose exact path passes halfway between two pixels at some steps, each drawn twice: from
+// its left end in the upper copy, from its right end in the lower one. White: the nearest pixel
+// (ties rounded up); red: a different pixel; dark grey: the nearest pixel, not drawn.
 Canvas tie_close_up(const LineAlgorithm& algorithm) {
   Canvas canvas(26, 31, tri::Color{40, 40, 40, 255});
-  const glm::ivec2 lines[][2] = {{{1, 1}, {13, 5}}, {{1, 8}, {13, 14}}, {{15, 1}, {18, 13}}, {{20, 13}, {24, 1}}};
+  const glm::ivec2 lines[][2] = {
+      {{1, 1}, {13, 2}}, {{1, 8}, {13, 14}}, {{15, 1}, {18, 13}}, {{20, 13}, {22, 1}}};
   for (const int copy : {0, 1}) {
     const glm::ivec2 shift(0, copy == 0 ? 16 : 0);
     for (const auto& line : lines) {
       const glm::ivec2 a = line[0] + shift, b = line[1] + shift;
       Canvas drawn(canvas.width(), canvas.height());
       drawn.enable_write_counts();
-      if (copy == 0) algorithm.draw(drawn, a, b, tri::colors::white);
-      else algorithm.draw(drawn, b, a, tri::colors::white);
+      const auto [from, to] = copy == 0 ? std::pair(a, b) : std::pair(b, a);
+      algorithm.draw(drawn, from, to, tri::colors::white);
       for (const auto& exact : tri::ch01::exact_line_pixels(a, b)) {
         canvas.put_pixel(exact.pixel, tri::Color{90, 90, 90, 255});
       }
@@ -50,7 +52,8 @@ Canvas tie_close_up(const LineAlgorithm& algorithm) {
         for (int x = 0; x < drawn.width(); ++x) {
           if (drawn.write_count(x, y) == 0) continue;
           const auto major = std::abs(b.x - a.x) >= std::abs(b.y - a.y) ? x : y;
-          const bool nearest = tri::ch01::exact_line_pixel_at(a, b, major).pixel == glm::ivec2(x, y);
+          const bool nearest =
+              tri::ch01::exact_line_pixel_at(a, b, major).pixel == glm::ivec2(x, y);
           canvas.put_pixel(x, y, nearest ? tri::colors::white : tri::colors::red);
         }
       }

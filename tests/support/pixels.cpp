@@ -19,8 +19,12 @@ PixelSet pixels_with_count_above(const Canvas& canvas, std::uint32_t threshold) 
 
 }  // namespace
 
-PixelSet written_pixels(const Canvas& canvas) { return pixels_with_count_above(canvas, 0); }
-PixelSet overdrawn_pixels(const Canvas& canvas) { return pixels_with_count_above(canvas, 1); }
+PixelSet written_pixels(const Canvas& canvas) {
+  return pixels_with_count_above(canvas, 0);
+}
+PixelSet overdrawn_pixels(const Canvas& canvas) {
+  return pixels_with_count_above(canvas, 1);
+}
 
 PixelSet inclusive_pixels(glm::ivec2 a, glm::ivec2 b, glm::ivec2 c, int width, int height) {
   // Twice the signed area of (p, q, r): > 0 when r is left of p -> q.
@@ -32,8 +36,10 @@ PixelSet inclusive_pixels(glm::ivec2 a, glm::ivec2 b, glm::ivec2 c, int width, i
   PixelSet set;
   if (area == 0) return set;
   const std::int64_t sign = area > 0 ? 1 : -1;
-  const int x0 = std::max(0, std::min({a.x, b.x, c.x})), x1 = std::min(width - 1, std::max({a.x, b.x, c.x}));
-  const int y0 = std::max(0, std::min({a.y, b.y, c.y})), y1 = std::min(height - 1, std::max({a.y, b.y, c.y}));
+  const int x0 = std::max(0, std::min({a.x, b.x, c.x})),
+            x1 = std::min(width - 1, std::max({a.x, b.x, c.x}));
+  const int y0 = std::max(0, std::min({a.y, b.y, c.y})),
+            y1 = std::min(height - 1, std::max({a.y, b.y, c.y}));
   for (int y = y0; y <= y1; ++y) {
     for (int x = x0; x <= x1; ++x) {
       if (sign * cross(a, b, x, y) >= 0 && sign * cross(b, c, x, y) >= 0 &&

@@ -1,0 +1,23 @@
+#include "algorithms.hpp"
+
+#include <array>
+
+#include "coverage_oracle.hpp"
+#include "fixed_point.hpp"
+
+namespace tri::ch07 {
+
+std::span<const TriangleAlgorithm> triangle_algorithms() {
+  static constexpr std::array<TriangleAlgorithm, 2> algorithms{{
+      {"exact_oracle", "07_exact_coverage", CoverageRule::top_left,
+       "the truth: every pixel of the bounding box tested on its own with exact orientation signs",
+       draw_triangle_oracle},
+      {"fixed_point_8", "07_exact_coverage", CoverageRule::top_left,
+       "vertices snapped to 1/256 pixel, integer edge functions, top-left bias (exact on that "
+       "grid)",
+       draw_triangle_fixed_point_8},
+  }};
+  return algorithms;
+}
+
+}  // namespace tri::ch07

@@ -1,0 +1,14 @@
+/// @file
+/// The triangle algorithms chapter 07 registers (DESIGN section 5).
+#pragma once
+
+#include <span>
+
+#include "triangle_algorithm.hpp"
+
+namespace tri::ch07 {
+
+/// The exact oracle and the fixed-point rasterizer.
+std::span<const TriangleAlgorithm> triangle_algorithms();
+
+}  // namespace tri::ch07

@@ -1,0 +1,33 @@
+/// @file
+/// The truth every rasterizer of the book is measured against (DESIGN section 6): pixel (i, j)
+/// belongs to triangle abc exactly when the point (i, j) lies inside it, with the top-left rule
+/// deciding points exactly on an edge.
+#pragma once
+
+#include <glm/vec2.hpp>
+
+#include "canvas.hpp"
+#include "color.hpp"
+#include "triangle_algorithm.hpp"
+
+namespace tri::ch07 {
+
+/// True for a *top* or *left* edge a -> b of a counter-clockwise triangle (y up): a top edge is
+/// exactly horizontal with the triangle below it (it runs right to left), a left edge is not
+/// horizontal and has the triangle to its right (it runs downwards).
+bool is_top_left_edge(glm::dvec2 a, glm::dvec2 b) noexcept;
+
+/// The triangle's vertices in counter-clockwise order (y up); the order given when the signed
+/// area is already positive or zero.
+Triangle counter_clockwise(const Triangle& triangle) noexcept;
+
+/// Whether the centre of pixel p belongs to the triangle: strictly inside all three edges, or
+/// exactly on edges that are all top or left. Zero-area triangles cover nothing; both windings
+/// cover the same pixels. Exact for any finite vertices.
+bool oracle_covers(const Triangle& triangle, glm::ivec2 p) noexcept;
+
+/// Paints every covered pixel of the canvas, testing each pixel of the bounding box on its own
+/// with exact arithmetic (never incrementally). Slow, and right.
+void draw_triangle_oracle(Canvas& canvas, const Triangle& triangle, Color color);
+
+}  // namespace tri::ch07

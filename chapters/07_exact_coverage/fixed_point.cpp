@@ -1,0 +1,104 @@
+#include "fixed_point.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+namespace tri::ch07 {
+namespace {
+
+__extension__ using Int128 = __int128;
+
+// floor(a / 2^bits) and ceil(a / 2^bits) for any sign (arithmetic shift floors).
+std::int64_t floor_shift(std::int64_t a, int bits) {
+  return a >> bits;
+}
+std::int64_t ceil_shift(std::int64_t a, int bits) {
+  return -((-a) >> bits);
+}
+
+// The edge function of a -> b at p: twice the signed area of (a, b, p), > 0 when p is left of
+// a -> b. Int is std::int64_t or Int128, chosen by the bit budget.
+template <class Int>
+Int edge_function(SubpixelPoint a, SubpixelPoint b, std::int64_t px, std::int64_t py) {
+  return Int(b.x - a.x) * Int(py - a.y) - Int(b.y - a.y) * Int(px - a.x);
+}
+
+template <class Int>
+void fill(Canvas& canvas, SubpixelPoint a, SubpixelPoint b, SubpixelPoint c, int bits,
+          Color color) {
+  const PixelRange range = candidate_pixels(a, b, c, bits, canvas.width(), canvas.height());
+  if (range.empty()) return;
+  // A top-left edge keeps its zeros; any other edge needs strictly positive values: w - 1 >= 0.
+  const Int bias0 = is_top_left_edge(b, c) ? 0 : -1;
+  const Int bias1 = is_top_left_edge(c, a) ? 0 : -1;
+  const Int bias2 = is_top_left_edge(a, b) ? 0 : -1;
+  for (int y = range.first_y; y <= range.last_y; ++y) {
+    const std::int64_t py = std::int64_t{y} << bits;
+    for (int x = range.first_x; x <= range.last_x; ++x) {
+      const std::int64_t px = std::int64_t{x} << bits;
+      if (edge_function<Int>(b, c, px, py) + bias0 >= 0 &&
+          edge_function<Int>(c, a, px, py) + bias1 >= 0 &&
+          edge_function<Int>(a, b, px, py) + bias2 >= 0) {
+        canvas.put_pixel(x, y, color);
+      }
+    }
+  }
+}
+
+}  // namespace
+
+SubpixelPoint snap_to_subpixel(glm::dvec2 p, int bits) noexcept {
+  const double scale = std::ldexp(1.0, bits);
+  return {static_cast<std::int64_t>(std::floor(p.x * scale + 0.5)),
+          static_cast<std::int64_t>(std::floor(p.y * scale + 0.5))};
+}
+
+bool is_top_left_edge(SubpixelPoint a, SubpixelPoint b) noexcept {
+  const bool top = a.y == b.y && b.x < a.x;
+  const bool left = b.y < a.y;
+  return top || left;
+}
+
+bool fits_64_bit_edge_functions(SubpixelPoint a, SubpixelPoint b, SubpixelPoint c) noexcept {
+  constexpr std::int64_t limit = std::int64_t{1} << 29;
+  for (const SubpixelPoint& p : {a, b, c}) {
+    if (p.x < -limit || p.x > limit || p.y < -limit || p.y > limit) return false;
+  }
+  return true;
+}
+
+PixelRange candidate_pixels(SubpixelPoint a, SubpixelPoint b, SubpixelPoint c, int bits, int width,
+                            int height) noexcept {
+  const std::int64_t x0 = ceil_shift(std::min({a.x, b.x, c.x}), bits);
+  const std::int64_t x1 = floor_shift(std::max({a.x, b.x, c.x}), bits);
+  const std::int64_t y0 = ceil_shift(std::min({a.y, b.y, c.y}), bits);
+  const std::int64_t y1 = floor_shift(std::max({a.y, b.y, c.y}), bits);
+  return {static_cast<int>(std::max<std::int64_t>(x0, 0)),
+          static_cast<int>(std::min<std::int64_t>(x1, width - 1)),
+          static_cast<int>(std::max<std::int64_t>(y0, 0)),
+          static_cast<int>(std::min<std::int64_t>(y1, height - 1))};
+}
+
+void draw_triangle_fixed_point(Canvas& canvas, const Triangle& triangle, Color color,
+                               int subpixel_bits) {
+  SubpixelPoint a = snap_to_subpixel(triangle[0], subpixel_bits);
+  SubpixelPoint b = snap_to_subpixel(triangle[1], subpixel_bits);
+  SubpixelPoint c = snap_to_subpixel(triangle[2], subpixel_bits);
+  // Twice the signed area, in 128 bits so any snapped input fits: zero covers nothing, negative
+  // means clockwise, which we turn around so "inside" is always "left of every edge".
+  const Int128 area = edge_function<Int128>(a, b, c.x, c.y);
+  if (area == 0) return;
+  if (area < 0) std::swap(b, c);
+  if (fits_64_bit_edge_functions(a, b, c)) {
+    fill<std::int64_t>(canvas, a, b, c, subpixel_bits, color);
+  } else {
+    fill<Int128>(canvas, a, b, c, subpixel_bits, color);
+  }
+}
+
+void draw_triangle_fixed_point_8(Canvas& canvas, const Triangle& triangle, Color color) {
+  draw_triangle_fixed_point(canvas, triangle, color, 8);
+}
+
+}  // namespace tri::ch07
