@@ -18,7 +18,8 @@ int round_to_int(double v) {
 }  // namespace
 
 void draw_line_gambetta(Canvas& canvas, glm::ivec2 p0, glm::ivec2 p1, Color color) {
-  if (std::abs(p1.x - p0.x) > std::abs(p1.y - p0.y)) {
+  // 64-bit differences: endpoints 2^31 apart overflow int.
+  if (std::abs(std::int64_t{p1.x} - p0.x) > std::abs(std::int64_t{p1.y} - p0.y)) {
     // Mostly horizontal: y = f(x), one pixel per column.
     if (p0.x > p1.x) std::swap(p0, p1);
     const auto ys = interpolate(p0.x, p0.y, p1.x, p1.y);
@@ -82,8 +83,11 @@ void draw_line_bresenham(Canvas& canvas, glm::ivec2 p0, glm::ivec2 p1, Color col
       dx == 0 ? 0 : static_cast<std::int64_t>((Wide{2} * dy * k + dx - 1) / (Wide{2} * dx));
   std::int64_t error = 2 * dy * k - 2 * dx * moves;
   std::int64_t y = y0 + y_step * moves;
+  const std::int64_t minor_size = steep ? canvas.width() : canvas.height();
   for (std::int64_t x = first; x <= last; ++x) {
-    if (steep) {
+    if (y < 0 || y >= minor_size) {
+      // Off the canvas across the line: write nothing (a far line may cross it later).
+    } else if (steep) {
       canvas.put_pixel(static_cast<int>(y), static_cast<int>(x), color);
     } else {
       canvas.put_pixel(static_cast<int>(x), static_cast<int>(y), color);

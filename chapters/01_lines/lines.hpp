@@ -24,7 +24,8 @@ void draw_line_dda(Canvas& canvas, glm::ivec2 p0, glm::ivec2 p1, Color color);
 /// and the endpoints for leftward ones. Ties round toward the endpoint with the smaller major
 /// coordinate, so p0 -> p1 and p1 -> p0 give the same pixels. Only the steps whose major
 /// coordinate lies on the canvas are walked: the error term at the first such step is computed
-/// directly, so a line from -2^30 to 2^30 costs no more than the canvas is wide.
+/// directly, so a line from -2^30 to 2^30 costs no more than the canvas is wide. Steps whose
+/// other coordinate is off the canvas write nothing, so nothing is ever written outside.
 void draw_line_bresenham(Canvas& canvas, glm::ivec2 p0, glm::ivec2 p1, Color color);
 
 /// The midpoint algorithm: integers only, walking from p0 to p1 in the direction of each axis and
