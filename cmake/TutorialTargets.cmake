@@ -3,7 +3,10 @@
 add_library(tutorial_options INTERFACE)
 target_compile_options(tutorial_options INTERFACE
   $<$<CXX_COMPILER_ID:GNU,Clang>:-Wall -Wextra -Wpedantic>
-  $<$<AND:$<BOOL:${TUTORIAL_WARNINGS_AS_ERRORS}>,$<CXX_COMPILER_ID:GNU,Clang>>:-Werror>)
+  $<$<AND:$<BOOL:${TUTORIAL_WARNINGS_AS_ERRORS}>,$<CXX_COMPILER_ID:GNU,Clang>>:-Werror>
+  # Every product rounded on its own, as written: a fused multiply-add would change which pixels
+  # the float algorithms get wrong, and differ between compilers and -march settings.
+  $<$<CXX_COMPILER_ID:GNU,Clang>:-ffp-contract=off>)
 # GCC 12 reports a false -Wrestrict inside libstdc++ on plain std::string concatenation at -O2
 # (GCC bug 105329); nothing in our code can fix it, so that one diagnostic is off for GCC 12.
 if(CMAKE_CXX_COMPILER_ID STREQUAL "GNU" AND CMAKE_CXX_COMPILER_VERSION VERSION_GREATER_EQUAL 12

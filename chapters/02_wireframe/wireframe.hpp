@@ -1,0 +1,20 @@
+/// @file
+/// Gambetta's DrawWireframeTriangle: a triangle's outline as three lines.
+#pragma once
+
+#include <glm/vec2.hpp>
+
+#include "canvas.hpp"
+#include "color.hpp"
+
+namespace tri::ch02 {
+
+/// Draws the edges p0-p1, p1-p2 and p2-p0 with chapter 01's tri::ch01::draw_line_gambetta.
+/// Each line includes both its endpoints, so every vertex is written twice (once per edge that
+/// meets there). The line draws the same pixels in both directions, so the outline does not
+/// depend on the order of the vertices. As safe as that line function: every pixel of each edge
+/// is visited, so vertices far outside the canvas cost time and count outside writes.
+void draw_wireframe_triangle(Canvas& canvas, glm::ivec2 p0, glm::ivec2 p1, glm::ivec2 p2,
+                             Color color);
+
+}  // namespace tri::ch02

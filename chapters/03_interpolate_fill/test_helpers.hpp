@@ -1,0 +1,69 @@
+/// @file
+/// What chapter 03's tests share: pixel sets of a fill and of the book's unclipped composition.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <iterator>
+#include <utility>
+
+#include "fill_steps.hpp"
+#include "filled_triangle.hpp"
+#include "pixels.hpp"
+
+namespace tri::ch03::testing {
+
+using tri::testing::PixelSet;
+using Vertices = std::array<glm::ivec2, 3>;
+
+/// The pixels draw_filled_triangle writes on a counting width x height canvas.
+inline PixelSet fill_pixels(const Vertices& v, int width, int height) {
+  Canvas canvas(width, height);
+  canvas.enable_write_counts();
+  draw_filled_triangle(canvas, v[0], v[1], v[2], colors::white);
+  return tri::testing::written_pixels(canvas);
+}
+
+/// Steps 2-5 on every row of the triangle, as the book runs them (no clipping before step 2).
+inline PixelSet book_fill_pixels(const Vertices& v, int width, int height) {
+  Canvas canvas(width, height);
+  canvas.enable_write_counts();
+  const SortedTriangle t = sort_by_y(v[0], v[1], v[2]);
+  EdgeXs edges = interpolate_edges(t, triangle_rows(t));
+  auto x012 = concatenate_short_sides(std::move(edges.x01), edges.x12);
+  draw_spans(canvas, t.p0.y, choose_left_right(std::move(edges.x02), std::move(x012)),
+             colors::white);
+  return tri::testing::written_pixels(canvas);
+}
+
+/// How many pixels are in exactly one of the two sets.
+inline int differing_pixels(const PixelSet& a, const PixelSet& b) {
+  PixelSet difference;
+  std::set_symmetric_difference(a.begin(), a.end(), b.begin(), b.end(),
+                                std::inserter(difference, difference.end()));
+  return static_cast<int>(difference.size());
+}
+
+/// The pixels of `a` that are not in `b`.
+inline PixelSet minus(const PixelSet& a, const PixelSet& b) {
+  PixelSet difference;
+  std::set_difference(a.begin(), a.end(), b.begin(), b.end(),
+                      std::inserter(difference, difference.end()));
+  return difference;
+}
+
+/// Three vertices with both coordinates in [low, high].
+inline Vertices random_vertices(tri::testing::Random& random, int low, int high) {
+  Vertices v;
+  for (glm::ivec2& p : v) p = {random.integer(low, high), random.integer(low, high)};
+  return v;
+}
+
+/// Twice the signed area, in 64 bits; zero for collinear vertices.
+inline long long doubled_area(const Vertices& v) {
+  const long long ax = v[1].x - v[0].x, ay = v[1].y - v[0].y;
+  const long long bx = v[2].x - v[0].x, by = v[2].y - v[0].y;
+  return ax * by - ay * bx;
+}
+
+}  // namespace tri::ch03::testing
