@@ -51,20 +51,4 @@ PixelSet inclusive_pixels(glm::ivec2 a, glm::ivec2 b, glm::ivec2 c, int width, i
   return set;
 }
 
-std::uint64_t Random::next() noexcept {
-  std::uint64_t z = (state_ += 0x9e3779b97f4a7c15ULL);
-  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-  return z ^ (z >> 31);
-}
-
-int Random::integer(int low, int high) noexcept {
-  const auto span = static_cast<std::uint64_t>(static_cast<std::int64_t>(high) - low + 1);
-  return static_cast<int>(low + static_cast<std::int64_t>(next() % span));
-}
-
-double Random::real(double low, double high) noexcept {
-  return low + (high - low) * static_cast<double>(next() >> 11) * 0x1.0p-53;
-}
-
 }  // namespace tri::testing

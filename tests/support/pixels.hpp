@@ -9,6 +9,7 @@
 #include <glm/vec2.hpp>
 
 #include "canvas.hpp"
+#include "random.hpp"
 
 namespace tri::testing {
 
@@ -26,19 +27,7 @@ PixelSet overdrawn_pixels(const Canvas& canvas);
 /// What an `inclusive` algorithm must draw for a triangle of non-zero area; empty for zero area.
 PixelSet inclusive_pixels(glm::ivec2 a, glm::ivec2 b, glm::ivec2 c, int width, int height);
 
-/// A small, fully specified random generator (SplitMix64), so seeded test data is the same with
-/// every standard library.
-class Random {
- public:
-  explicit Random(std::uint64_t seed) noexcept : state_(seed) {}
-  std::uint64_t next() noexcept;
-  /// A whole number in [low, high].
-  int integer(int low, int high) noexcept;
-  /// A number in [low, high).
-  double real(double low, double high) noexcept;
-
- private:
-  std::uint64_t state_;
-};
+/// The portable seeded generator, under the name the tests use.
+using Random = tri::Random;
 
 }  // namespace tri::testing

@@ -1,0 +1,79 @@
+#include "error_metrics.hpp"
+
+#include <algorithm>
+#include <array>
+#include <vector>
+
+#include "canvas.hpp"
+#include "coverage_oracle.hpp"
+
+namespace tri {
+namespace {
+
+using DrawFunction = void (*)(Canvas&, const Triangle&, Color);
+
+// The six orders of three vertices; the first is the scene's own.
+constexpr std::array<std::array<int, 3>, 6> vertex_orders{
+    {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}, {0, 2, 1}, {2, 1, 0}, {1, 0, 2}}};
+
+struct Drawn {
+  std::vector<std::uint32_t> counts;
+  std::uint64_t outside_writes = 0;
+  std::uint64_t rejected = 0;
+};
+
+Drawn draw_counts(const TriangleAlgorithm& algorithm, const Scene& scene,
+                  const std::array<int, 3>& order) {
+  Canvas canvas(scene.width, scene.height);
+  canvas.enable_write_counts();
+  Drawn drawn;
+  for (const auto& primitive : scene.primitives) {
+    const auto* t = std::get_if<SceneTriangle>(&primitive);
+    if (t == nullptr) continue;
+    const Triangle reordered{t->vertices[order[0]], t->vertices[order[1]], t->vertices[order[2]]};
+    if (draw_triangle(algorithm, canvas, reordered, t->color) != DrawResult::drawn)
+      ++drawn.rejected;
+  }
+  drawn.counts.assign(canvas.write_counts().begin(), canvas.write_counts().end());
+  drawn.outside_writes = canvas.outside_writes();
+  return drawn;
+}
+
+}  // namespace
+
+double ErrorReport::error_rate() const noexcept {
+  const auto wrong = static_cast<double>(missed + extra);
+  if (covered == 0) return wrong == 0 ? 0.0 : wrong;
+  return wrong / static_cast<double>(covered);
+}
+
+ErrorReport measure_error(const TriangleAlgorithm& algorithm, const Scene& scene) {
+  static constexpr TriangleAlgorithm oracle{"exact_oracle", "07_exact_coverage",
+                                            CoverageRule::top_left, "", ch07::draw_triangle_oracle};
+  const Drawn truth = draw_counts(oracle, scene, vertex_orders[0]);
+  const Drawn drawn = draw_counts(algorithm, scene, vertex_orders[0]);
+  ErrorReport report;
+  report.outside_writes = drawn.outside_writes;
+  report.rejected = drawn.rejected;
+  for (std::size_t i = 0; i < truth.counts.size(); ++i) {
+    const std::uint32_t t = truth.counts[i], a = drawn.counts[i];
+    report.covered += t;
+    report.missed += t > a ? t - a : 0;
+    report.extra += a > t ? a - t : 0;
+    report.gaps += (t > 0 && a == 0) ? 1 : 0;
+    report.overdraw += (a > 1 && a > t) ? 1 : 0;
+  }
+  std::vector<bool> changed(drawn.counts.size(), false);
+  for (std::size_t k = 1; k < vertex_orders.size(); ++k) {
+    const Drawn other = draw_counts(algorithm, scene, vertex_orders[k]);
+    report.outside_writes = std::max(report.outside_writes, other.outside_writes);
+    for (std::size_t i = 0; i < changed.size(); ++i) {
+      if (other.counts[i] != drawn.counts[i]) changed[i] = true;
+    }
+  }
+  report.order_dependent =
+      static_cast<std::uint64_t>(std::count(changed.begin(), changed.end(), true));
+  return report;
+}
+
+}  // namespace tri

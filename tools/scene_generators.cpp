@@ -1,0 +1,132 @@
+#include "scene_generators.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include "random.hpp"
+
+namespace tri {
+namespace {
+
+Color random_color(Random& random) {
+  return Color{static_cast<std::uint8_t>(random.integer(64, 255)),
+               static_cast<std::uint8_t>(random.integer(64, 255)),
+               static_cast<std::uint8_t>(random.integer(64, 255)), 255};
+}
+
+glm::dvec2 snapped(glm::dvec2 p, int bits) {
+  return {snap_to_grid(p.x, bits), snap_to_grid(p.y, bits)};
+}
+
+void add(Scene& scene, Random& random, glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, int bits) {
+  scene.primitives.emplace_back(
+      SceneTriangle{{snapped(a, bits), snapped(b, bits), snapped(c, bits)}, random_color(random)});
+}
+
+void random_triangles(const SceneRecipe& r, Scene& scene, Random& random) {
+  for (int i = 0; i < r.triangles; ++i) {
+    const double extent = random.real(r.min_extent, r.max_extent);
+    const glm::dvec2 centre(random.real(0, r.width), random.real(0, r.height));
+    const auto vertex = [&] {
+      return centre + glm::dvec2(random.real(-extent, extent), random.real(-extent, extent));
+    };
+    add(scene, random, vertex(), vertex(), vertex(), r.grid_bits);
+  }
+}
+
+void slivers(const SceneRecipe& r, Scene& scene, Random& random) {
+  for (int i = 0; i < r.triangles; ++i) {
+    const double length = random.real(r.min_extent, r.max_extent);
+    const double angle = random.real(0, 2 * std::numbers::pi);
+    const glm::dvec2 a(random.real(0, r.width), random.real(0, r.height));
+    const glm::dvec2 direction(std::cos(angle), std::sin(angle));
+    const glm::dvec2 b = a + length * direction;
+    // The third vertex sits less than half a pixel off the long edge.
+    const glm::dvec2 normal(-direction.y, direction.x);
+    const glm::dvec2 c =
+        a + random.real(0.2, 0.8) * length * direction + random.real(-0.5, 0.5) * normal;
+    add(scene, random, a, b, c, r.grid_bits);
+  }
+}
+
+void fan(const SceneRecipe& r, Scene& scene, Random& random) {
+  const glm::dvec2 centre(r.width / 2.0 + random.real(-0.5, 0.5),
+                          r.height / 2.0 + random.real(-0.5, 0.5));
+  const double radius = 0.45 * std::min(r.width, r.height);
+  // Rim points are snapped once and shared by both neighbours, so the edges match exactly.
+  std::vector<glm::dvec2> rim;
+  for (int i = 0; i < r.triangles; ++i) {
+    const double angle = 2 * std::numbers::pi * i / r.triangles;
+    rim.push_back(
+        snapped(centre + radius * glm::dvec2(std::cos(angle), std::sin(angle)), r.grid_bits));
+  }
+  for (int i = 0; i < r.triangles; ++i) {
+    add(scene, random, centre, rim[i], rim[(i + 1) % r.triangles], r.grid_bits);
+  }
+}
+
+void jittered_grid(const SceneRecipe& r, Scene& scene, Random& random) {
+  // Cells as square as possible, two triangles each, covering the canvas with a margin.
+  const int cells = std::max(1, r.triangles / 2);
+  const double aspect = static_cast<double>(r.width) / r.height;
+  const int nx = std::max(1, static_cast<int>(std::lround(std::sqrt(cells * aspect))));
+  const int ny = std::max(1, cells / nx);
+  const double sx = (r.width + 2.0) / nx, sy = (r.height + 2.0) / ny;
+  std::vector<glm::dvec2> points;
+  for (int j = 0; j <= ny; ++j) {
+    for (int i = 0; i <= nx; ++i) {
+      const double jitter_x = (i == 0 || i == nx) ? 0 : random.real(-0.35, 0.35) * sx;
+      const double jitter_y = (j == 0 || j == ny) ? 0 : random.real(-0.35, 0.35) * sy;
+      points.push_back(snapped({-1 + i * sx + jitter_x, -1 + j * sy + jitter_y}, r.grid_bits));
+    }
+  }
+  const auto at = [&](int i, int j) { return points[static_cast<std::size_t>(j * (nx + 1) + i)]; };
+  for (int j = 0; j < ny; ++j) {
+    for (int i = 0; i < nx; ++i) {
+      // Alternate the diagonal so the mesh has edges of every direction.
+      if ((i + j) % 2 == 0) {
+        add(scene, random, at(i, j), at(i + 1, j), at(i + 1, j + 1), r.grid_bits);
+        add(scene, random, at(i, j), at(i + 1, j + 1), at(i, j + 1), r.grid_bits);
+      } else {
+        add(scene, random, at(i, j), at(i + 1, j), at(i, j + 1), r.grid_bits);
+        add(scene, random, at(i + 1, j), at(i + 1, j + 1), at(i, j + 1), r.grid_bits);
+      }
+    }
+  }
+}
+
+}  // namespace
+
+double snap_to_grid(double value, int bits) noexcept {
+  const double scale = std::ldexp(1.0, bits);
+  return std::floor(value * scale + 0.5) / scale;
+}
+
+bool is_mesh(const SceneRecipe& recipe) noexcept {
+  return recipe.kind == SceneRecipe::Kind::fan || recipe.kind == SceneRecipe::Kind::jittered_grid;
+}
+
+Scene generate_scene(const SceneRecipe& recipe) {
+  Scene scene;
+  scene.width = recipe.width;
+  scene.height = recipe.height;
+  Random random(recipe.seed);
+  switch (recipe.kind) {
+    case SceneRecipe::Kind::random:
+      random_triangles(recipe, scene, random);
+      break;
+    case SceneRecipe::Kind::slivers:
+      slivers(recipe, scene, random);
+      break;
+    case SceneRecipe::Kind::fan:
+      fan(recipe, scene, random);
+      break;
+    case SceneRecipe::Kind::jittered_grid:
+      jittered_grid(recipe, scene, random);
+      break;
+  }
+  return scene;
+}
+
+}  // namespace tri

@@ -1,0 +1,41 @@
+/// @file
+/// Seeded scene families shared by the tests and the speed-vs-error report: random triangles of
+/// chosen sizes, slivers, fans and jittered-grid meshes, on the integer or the 1/256 grid.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "scene.hpp"
+
+namespace tri {
+
+/// What a generated scene looks like.
+struct SceneRecipe {
+  enum class Kind {
+    random,         ///< independent triangles of a chosen extent (overlaps allowed)
+    slivers,        ///< long needles less than a pixel thick
+    fan,            ///< triangles around one centre, sharing edges
+    jittered_grid,  ///< a grid of cells split in two, vertices jittered: a mesh
+  };
+  Kind kind = Kind::random;
+  int width = 256;
+  int height = 256;
+  int triangles = 1000;      ///< how many (a mesh or fan may round to its shape)
+  double min_extent = 1.0;   ///< random: vertices within ±extent of a centre, extent drawn from
+  double max_extent = 10.0;  ///< [min_extent, max_extent]
+  int grid_bits = 8;         ///< vertices rounded to 1/2^grid_bits (0: integer pixel centres)
+  std::uint64_t seed = 1;
+};
+
+/// Builds the scene a recipe describes, deterministically.
+Scene generate_scene(const SceneRecipe& recipe);
+
+/// True when the scene's triangles tile a region without overlap (fan, jittered grid), so gaps
+/// and overdraw are meaningful.
+bool is_mesh(const SceneRecipe& recipe) noexcept;
+
+/// Rounds a coordinate to the 1/2^bits grid.
+double snap_to_grid(double value, int bits) noexcept;
+
+}  // namespace tri
