@@ -40,6 +40,8 @@ void Canvas::clear(Color color) noexcept {
   outside_writes_ = 0;
 }
 
-void Canvas::enable_write_counts() { counts_.assign(pixels_.size(), 0u); }
+void Canvas::enable_write_counts() {
+  counts_.assign(pixels_.size(), 0u);
+}
 
 }  // namespace tri

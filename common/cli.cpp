@@ -22,11 +22,9 @@ std::optional<long long> CliArguments::integer(std::string_view name, long long 
   if (!text) return std::nullopt;
   long long result = 0;
   const auto [end, error] = std::from_chars(text->data(), text->data() + text->size(), result);
-  if (error != std::errc() || end != text->data() + text->size() || result < low ||
-      result > high) {
+  if (error != std::errc() || end != text->data() + text->size() || result < low || result > high) {
     throw UsageError("--" + std::string(name) + " expects a whole number from " +
-                     std::to_string(low) + " to " + std::to_string(high) + ", got '" + *text +
-                     "'");
+                     std::to_string(low) + " to " + std::to_string(high) + ", got '" + *text + "'");
   }
   return result;
 }
@@ -60,7 +58,8 @@ CliArguments CommandLine::parse(int argc, const char* const* argv) const {
       args.values_.emplace(std::string(name), std::string());
       continue;
     }
-    if (i + 1 >= argc) {
+    // "--scene --list" is a forgotten value, not a scene named "--list".
+    if (i + 1 >= argc || std::string_view(argv[i + 1]).starts_with("--")) {
       throw UsageError("option '" + std::string(word) + "' needs a value (" + option->value_name +
                        ")");
     }

@@ -49,7 +49,8 @@ class CommandLine {
  public:
   CommandLine(std::string program, std::string summary, std::vector<CliOption> options);
 
-  /// Throws UsageError on an unknown option, a missing value or a stray argument.
+  /// Throws UsageError on an unknown option, an option given twice, a missing value (the end of
+  /// the line, or a next word that starts with "--") or a stray argument.
   CliArguments parse(int argc, const char* const* argv) const;
   /// The text --help prints: what the program does and every option.
   std::string help_text() const;

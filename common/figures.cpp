@@ -42,9 +42,8 @@ Canvas magnified(const Canvas& canvas, int factor) {
 int run_chapter_program(int argc, const char* const* argv, std::string program,
                         std::string what_it_draws,
                         const std::function<void(FigureWriter& figures)>& render) {
-  const CommandLine command_line(
-      std::move(program), std::move(what_it_draws),
-      {{"out", "DIR", "folder for the figures (default: out)"}});
+  const CommandLine command_line(std::move(program), std::move(what_it_draws),
+                                 {{"out", "DIR", "folder for the figures (default: out)"}});
   return run_command_line(command_line, argc, argv, std::cout, std::cerr,
                           [&](const CliArguments& args) {
                             FigureWriter figures(args.value_or("out", "out"), std::cout);

@@ -54,7 +54,8 @@ std::vector<std::uint8_t> encode_counts_pgm(const Canvas& canvas) {
   pgm.reserve(pgm.size() + static_cast<std::size_t>(w) * h);
   for (int y = h - 1; y >= 0; --y) {
     for (int x = 0; x < w; ++x) {
-      pgm.push_back(static_cast<std::uint8_t>(std::min<std::uint32_t>(canvas.write_count(x, y), 255)));
+      pgm.push_back(
+          static_cast<std::uint8_t>(std::min<std::uint32_t>(canvas.write_count(x, y), 255)));
     }
   }
   return pgm;
@@ -66,8 +67,8 @@ void write_file_atomically(const std::filesystem::path& path, std::span<const st
   if (path.has_parent_path()) {
     fs::create_directories(path.parent_path(), error);
     if (error) {
-      throw std::runtime_error("cannot create folder " + path.parent_path().string() + ": " +
-                               error.message());
+      throw std::runtime_error("cannot write " + path.string() + ": cannot create folder " +
+                               path.parent_path().string() + ": " + error.message());
     }
   }
   fs::path temporary = path;

@@ -14,8 +14,8 @@ namespace tri {
 /// The canvas as PNG bytes (RGBA8), top row first so the image reads the way y-up coordinates do.
 std::vector<std::uint8_t> encode_png(const Canvas& canvas);
 
-/// The canvas's per-pixel write counts as a binary PGM ("P5", maxval 255, counts above 255 saturate),
-/// top row first. Throws std::logic_error when write counting is off.
+/// The canvas's per-pixel write counts as a binary PGM ("P5", maxval 255, counts above 255
+/// saturate), top row first. Throws std::logic_error when write counting is off.
 std::vector<std::uint8_t> encode_counts_pgm(const Canvas& canvas);
 
 /// Writes bytes to a file through a temporary file and a rename, so a failure never leaves a

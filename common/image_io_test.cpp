@@ -1,1 +1,237 @@
 #include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+// stb_image decodes the PNGs back; Debian's libstb (which the common library links) contains it.
+#if __has_include(<stb_image.h>)
+#include <stb_image.h>
+#else
+#include <stb/stb_image.h>
+#endif
+
+#include "canvas.hpp"
+#include "image_io.hpp"
+
+namespace tri {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::vector<std::uint8_t> bytes_of(const std::string& text) {
+  return std::vector<std::uint8_t>(text.begin(), text.end());
+}
+
+std::vector<std::uint8_t> read_file(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::vector<std::uint8_t>(std::istreambuf_iterator<char>(in), {});
+}
+
+std::uint32_t big_endian_u32(const std::vector<std::uint8_t>& bytes, std::size_t at) {
+  return (std::uint32_t{bytes.at(at)} << 24) | (std::uint32_t{bytes.at(at + 1)} << 16) |
+         (std::uint32_t{bytes.at(at + 2)} << 8) | std::uint32_t{bytes.at(at + 3)};
+}
+
+// Every file below the folder (recursively), as paths relative to it, so leftovers show up.
+std::vector<std::string> files_below(const fs::path& folder) {
+  std::vector<std::string> names;
+  for (const auto& entry : fs::recursive_directory_iterator(folder)) {
+    names.push_back(fs::relative(entry.path(), folder).generic_string());
+  }
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+// A fresh, empty folder for one test case, below the test's working directory (the build tree).
+fs::path fresh_folder(const std::string& name) {
+  const fs::path folder = fs::current_path() / "image_io_test_output" / name;
+  fs::remove_all(folder);
+  fs::create_directories(folder);
+  return folder;
+}
+
+// A 5x3 canvas whose every pixel has a different colour, so a flip or a shift shows.
+Canvas numbered_canvas() {
+  Canvas canvas(5, 3);
+  for (int y = 0; y < 3; ++y) {
+    for (int x = 0; x < 5; ++x) {
+      const auto v = static_cast<std::uint8_t>(10 * y + x);
+      canvas.put_pixel(
+          x, y,
+          Color{v, static_cast<std::uint8_t>(100 + v), static_cast<std::uint8_t>(200 + v / 2),
+                static_cast<std::uint8_t>(255 - 3 * v)});
+    }
+  }
+  return canvas;
+}
+
+}  // namespace
+
+TEST_CASE("The counts PGM has a P5 header and lists the top row first", "[image_io]") {
+  Canvas canvas(3, 2);
+  canvas.enable_write_counts();
+  canvas.put_pixel(0, 0, colors::white);
+  canvas.put_pixel(2, 0, colors::white);
+  canvas.put_pixel(2, 0, colors::white);
+  for (int i = 0; i < 3; ++i) canvas.put_pixel(1, 1, colors::white);
+
+  std::vector<std::uint8_t> expected = bytes_of("P5\n3 2\n255\n");
+  for (const std::uint8_t count : {0, 3, 0,   // top row (y = 1)
+                                   1, 0, 2})  // bottom row (y = 0)
+    expected.push_back(count);
+  CHECK(encode_counts_pgm(canvas) == expected);
+}
+
+TEST_CASE("The counts PGM saturates counts above 255", "[image_io]") {
+  Canvas canvas(3, 1);
+  canvas.enable_write_counts();
+  for (int i = 0; i < 254; ++i) canvas.put_pixel(0, 0, colors::white);
+  for (int i = 0; i < 255; ++i) canvas.put_pixel(1, 0, colors::white);
+  for (int i = 0; i < 300; ++i) canvas.put_pixel(2, 0, colors::white);
+  REQUIRE(canvas.write_count(2, 0) == 300);
+
+  std::vector<std::uint8_t> expected = bytes_of("P5\n3 1\n255\n");
+  expected.insert(expected.end(), {254, 255, 255});
+  CHECK(encode_counts_pgm(canvas) == expected);
+}
+
+TEST_CASE("The counts PGM needs write counting to be on", "[image_io]") {
+  const Canvas canvas(2, 2);
+  CHECK_THROWS_AS(encode_counts_pgm(canvas), std::logic_error);
+}
+
+TEST_CASE("The PNG has the PNG signature and an 8-bit RGBA header of the canvas size",
+          "[image_io][png]") {
+  const auto png = encode_png(numbered_canvas());
+  const std::vector<std::uint8_t> signature = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+  REQUIRE(png.size() > 33);
+  CHECK(std::vector<std::uint8_t>(png.begin(), png.begin() + 8) == signature);
+  // The first chunk is IHDR: length 13, then width, height, bit depth, colour type.
+  CHECK(big_endian_u32(png, 8) == 13);
+  CHECK(std::string(png.begin() + 12, png.begin() + 16) == "IHDR");
+  CHECK(big_endian_u32(png, 16) == 5);
+  CHECK(big_endian_u32(png, 20) == 3);
+  CHECK(int{png[24]} == 8);  // bits per channel
+  CHECK(int{png[25]} == 6);  // colour type 6: RGBA
+  CHECK(std::string(png.end() - 8, png.end() - 4) == "IEND");
+}
+
+TEST_CASE("The PNG decodes back to the canvas, top row first, alpha included", "[image_io][png]") {
+  const Canvas canvas = numbered_canvas();
+  const auto png = encode_png(canvas);
+  int width = 0;
+  int height = 0;
+  int channels = 0;
+  stbi_uc* decoded = stbi_load_from_memory(png.data(), static_cast<int>(png.size()), &width,
+                                           &height, &channels, 4);
+  REQUIRE(decoded != nullptr);
+  const std::vector<std::uint8_t> image(decoded, decoded + 5 * 3 * 4);
+  stbi_image_free(decoded);
+  CHECK(width == 5);
+  CHECK(height == 3);
+  CHECK(channels == 4);
+
+  std::vector<std::uint8_t> expected;
+  for (int y = 2; y >= 0; --y) {
+    for (int x = 0; x < 5; ++x) {
+      const Color c = canvas.pixel(x, y);
+      expected.insert(expected.end(), {c.r, c.g, c.b, c.a});
+    }
+  }
+  CHECK(image == expected);
+}
+
+TEST_CASE("A one-pixel canvas encodes as a valid PNG", "[image_io][png]") {
+  const auto png = encode_png(Canvas(1, 1, Color{1, 2, 3, 4}));
+  int width = 0;
+  int height = 0;
+  int channels = 0;
+  stbi_uc* decoded = stbi_load_from_memory(png.data(), static_cast<int>(png.size()), &width,
+                                           &height, &channels, 4);
+  REQUIRE(decoded != nullptr);
+  const std::vector<std::uint8_t> image(decoded, decoded + 4);
+  stbi_image_free(decoded);
+  CHECK(width == 1);
+  CHECK(height == 1);
+  CHECK(image == std::vector<std::uint8_t>{1, 2, 3, 4});
+}
+
+TEST_CASE("write_file_atomically creates the missing folders and leaves only the file",
+          "[image_io][files]") {
+  const fs::path folder = fresh_folder("creates_folders");
+  const fs::path path = folder / "a" / "b" / "figure.bin";
+  const std::vector<std::uint8_t> bytes = {0, 1, 2, 255, '\n', '\r', 0};
+  write_file_atomically(path, bytes);
+  CHECK(read_file(path) == bytes);
+  CHECK(files_below(folder) == std::vector<std::string>{"a", "a/b", "a/b/figure.bin"});
+  fs::remove_all(folder);
+}
+
+TEST_CASE("write_file_atomically replaces an existing file and writes empty files",
+          "[image_io][files]") {
+  const fs::path folder = fresh_folder("replaces");
+  const fs::path path = folder / "data.txt";
+  write_file_atomically(path, bytes_of("the old, longer content"));
+  write_file_atomically(path, bytes_of("new"));
+  CHECK(read_file(path) == bytes_of("new"));
+  write_file_atomically(path, std::vector<std::uint8_t>{});
+  CHECK(fs::exists(path));
+  CHECK(fs::file_size(path) == 0);
+  CHECK(files_below(folder) == std::vector<std::string>{"data.txt"});
+  fs::remove_all(folder);
+}
+
+TEST_CASE("write_file_atomically below a regular file fails, names the path, writes nothing",
+          "[image_io][files]") {
+  const fs::path folder = fresh_folder("below_a_file");
+  const fs::path blocker = folder / "blocker";
+  std::ofstream(blocker) << "not a folder";
+  const fs::path path = blocker / "sub" / "figure.png";
+
+  CHECK_THROWS_AS(write_file_atomically(path, bytes_of("png")), std::runtime_error);
+  CHECK_THROWS_WITH(write_file_atomically(path, bytes_of("png")), Catch::Contains(path.string()));
+  CHECK(files_below(folder) == std::vector<std::string>{"blocker"});
+  CHECK(read_file(blocker) == bytes_of("not a folder"));
+  fs::remove_all(folder);
+}
+
+TEST_CASE("write_file_atomically onto an existing folder fails, names the path, leaves no .tmp",
+          "[image_io][files]") {
+  const fs::path folder = fresh_folder("onto_a_folder");
+  const fs::path path = folder / "taken";
+  fs::create_directory(path);
+
+  CHECK_THROWS_AS(write_file_atomically(path, bytes_of("png")), std::runtime_error);
+  CHECK_THROWS_WITH(write_file_atomically(path, bytes_of("png")), Catch::Contains(path.string()));
+  CHECK(fs::is_directory(path));
+  CHECK(files_below(folder) == std::vector<std::string>{"taken"});
+  fs::remove_all(folder);
+}
+
+TEST_CASE("write_png and write_counts_pgm write exactly the encoded bytes", "[image_io][files]") {
+  const fs::path folder = fresh_folder("write_png");
+  Canvas canvas = numbered_canvas();
+  canvas.enable_write_counts();
+  canvas.put_pixel(4, 2, colors::red);
+  write_png(canvas, folder / "picture.png");
+  write_counts_pgm(canvas, folder / "counts.pgm");
+  CHECK(read_file(folder / "picture.png") == encode_png(canvas));
+  CHECK(read_file(folder / "counts.pgm") == encode_counts_pgm(canvas));
+  CHECK(files_below(folder) == std::vector<std::string>{"counts.pgm", "picture.png"});
+  fs::remove_all(folder);
+}
+
+TEST_CASE("write_counts_pgm without write counts fails and writes nothing", "[image_io][files]") {
+  const fs::path folder = fresh_folder("no_counts");
+  CHECK_THROWS_AS(write_counts_pgm(Canvas(2, 2), folder / "counts.pgm"), std::logic_error);
+  CHECK(files_below(folder).empty());
+  fs::remove_all(folder);
+}
+
+}  // namespace tri

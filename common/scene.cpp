@@ -3,6 +3,8 @@
 #include <charconv>
 #include <cmath>
 #include <fstream>
+#include <limits>
+#include <locale>
 #include <sstream>
 
 #include "canvas.hpp"
@@ -23,6 +25,17 @@ std::vector<std::string_view> split_words(std::string_view line) {
   return words;
 }
 
+// The value of a well-formed number that from_chars found out of range: ±max when it is too large
+// for a double (so the caller reports it beyond ±2^30), else the nearest double, 0 or a subnormal.
+double magnitude_beyond_double(std::string_view word) {
+  std::istringstream in{std::string(word)};
+  in.imbue(std::locale::classic());
+  double value = 0.0;
+  in >> value;  // overflow gives ±max or ±inf depending on the library, underflow about 0
+  if (std::abs(value) >= 1.0) return std::copysign(std::numeric_limits<double>::max(), value);
+  return value;
+}
+
 // Reads one directive's words, throwing SceneError with the position on the first problem.
 class LineReader {
  public:
@@ -35,10 +48,11 @@ class LineReader {
   double coordinate(std::string_view word, std::string_view what) const {
     double value = 0.0;
     const auto [end, error] = std::from_chars(word.data(), word.data() + word.size(), value);
-    if (error == std::errc::result_out_of_range) {
-      fail(std::string(what) + " '" + std::string(word) + "' is out of range (limit ±2^30)");
-    }
-    if (error != std::errc() || end != word.data() + word.size()) {
+    const bool whole_word = end == word.data() + word.size();
+    if (error == std::errc::result_out_of_range && whole_word) {
+      // from_chars reports 1e-400 (too close to zero for a double) like 1e400 (too large).
+      value = magnitude_beyond_double(word);
+    } else if (error != std::errc() || !whole_word) {
       fail("expected a decimal number for " + std::string(what) + ", got '" + std::string(word) +
            "'");
     }
@@ -55,8 +69,14 @@ class LineReader {
   int integer(std::string_view word, std::string_view what, int low, int high) const {
     int value = 0;
     const auto [end, error] = std::from_chars(word.data(), word.data() + word.size(), value);
-    if (error != std::errc() || end != word.data() + word.size()) {
-      fail("expected a whole number for " + std::string(what) + ", got '" + std::string(word) + "'");
+    const bool whole_word = end == word.data() + word.size();
+    if (error == std::errc::result_out_of_range && whole_word) {
+      fail(std::string(what) + " " + std::string(word) + " is outside " + std::to_string(low) +
+           ".." + std::to_string(high));
+    }
+    if (error != std::errc() || !whole_word) {
+      fail("expected a whole number for " + std::string(what) + ", got '" + std::string(word) +
+           "'");
     }
     if (value < low || value > high) {
       fail(std::string(what) + " " + std::to_string(value) + " is outside " + std::to_string(low) +
@@ -77,8 +97,9 @@ class LineReader {
   void expect_count(const std::vector<std::string_view>& words, std::size_t bare,
                     const char* usage) const {
     if (words.size() != bare && words.size() != bare + 3) {
-      fail(std::string("expected '") + usage + "', got " + std::to_string(words.size() - 1) +
-           " values");
+      const std::size_t count = words.size() - 1;
+      fail(std::string("expected '") + usage + "', got " + std::to_string(count) +
+           (count == 1 ? " value" : " values"));
     }
   }
 
@@ -104,7 +125,8 @@ Scene parse_scene(std::istream& in, std::string_view source_name) {
   while (std::getline(in, text)) {
     ++line_number;
     std::string_view line(text);
-    if (const auto hash = line.find('#'); hash != std::string_view::npos) line = line.substr(0, hash);
+    if (const auto hash = line.find('#'); hash != std::string_view::npos)
+      line = line.substr(0, hash);
     const auto words = split_words(line);
     if (words.empty()) continue;
     const LineReader reader(source_name, line_number);
@@ -117,7 +139,8 @@ Scene parse_scene(std::istream& in, std::string_view source_name) {
       scene.background = reader.color(words, 3, colors::black);
       have_canvas = true;
     } else if (directive == "tri" || directive == "line") {
-      if (!have_canvas) reader.fail("'" + std::string(directive) + "' before the 'canvas' directive");
+      if (!have_canvas)
+        reader.fail("'" + std::string(directive) + "' before the 'canvas' directive");
       if (directive == "tri") {
         reader.expect_count(words, 7, "tri x0 y0 x1 y1 x2 y2 [r g b]");
         SceneTriangle t;

@@ -1,6 +1,7 @@
 #include "triangle_algorithm.hpp"
 
 #include <cmath>
+#include <vector>
 
 #include "scene.hpp"
 
@@ -49,8 +50,38 @@ DrawResult draw_triangle(const TriangleAlgorithm& algorithm, Canvas& canvas,
   return result;
 }
 
+namespace {
+
+// Not floor(x + 0.5): for x = 0.49999999999999994 the sum itself rounds up to 1. x - floor(x) is
+// exact (Sterbenz) except for -0.5 < x < 0, where it exceeds a half either way.
+int nearest_integer(double x) noexcept {
+  const double below = std::floor(x);
+  return static_cast<int>(x - below >= 0.5 ? below + 1.0 : below);
+}
+
+}  // namespace
+
+std::size_t draw_triangles(const TriangleAlgorithm& algorithm, Canvas& canvas,
+                           std::span<const SceneTriangle> triangles) {
+  std::size_t refused = 0;
+  for (const SceneTriangle& t : triangles)
+    refused += validate_triangle(t.vertices) != DrawResult::drawn;
+  if (algorithm.draw_batch == nullptr) {
+    for (const SceneTriangle& t : triangles) draw_triangle(algorithm, canvas, t.vertices, t.color);
+  } else if (refused == 0) {
+    algorithm.draw_batch(canvas, triangles);
+  } else {
+    std::vector<SceneTriangle> valid;  // only when some input was refused
+    for (const SceneTriangle& t : triangles) {
+      if (validate_triangle(t.vertices) == DrawResult::drawn) valid.push_back(t);
+    }
+    algorithm.draw_batch(canvas, valid);
+  }
+  return refused;
+}
+
 glm::ivec2 nearest_pixel(glm::dvec2 p) noexcept {
-  return {static_cast<int>(std::floor(p.x + 0.5)), static_cast<int>(std::floor(p.y + 0.5))};
+  return {nearest_integer(p.x), nearest_integer(p.y)};
 }
 
 }  // namespace tri

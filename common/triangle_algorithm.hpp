@@ -4,12 +4,15 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
+#include <span>
 #include <string_view>
 
 #include <glm/vec2.hpp>
 
 #include "canvas.hpp"
 #include "color.hpp"
+#include "scene.hpp"
 
 namespace tri {
 
@@ -29,6 +32,11 @@ std::string_view rule_name(CoverageRule rule) noexcept;
 /// Draws one triangle in one colour. Called only with finite vertices within the scene limits.
 using DrawTriangleFunction = void (*)(Canvas& canvas, const Triangle& triangle, Color color);
 
+/// Draws many triangles as if one after the other (later ones paint over earlier ones), for
+/// algorithms that work on a whole batch at once, e.g. by splitting the canvas among threads.
+/// Called only with triangles that passed validate_triangle.
+using DrawBatchFunction = void (*)(Canvas& canvas, std::span<const SceneTriangle> triangles);
+
 /// A registered triangle algorithm.
 struct TriangleAlgorithm {
   std::string_view name;     ///< stable name, e.g. "scanline_single_loop"
@@ -36,7 +44,8 @@ struct TriangleAlgorithm {
   CoverageRule rule;
   std::string_view summary;  ///< one line for `raster --list`
   DrawTriangleFunction draw;
-  bool threaded = false;  ///< uses more than one thread
+  bool threaded = false;                   ///< uses more than one thread
+  DrawBatchFunction draw_batch = nullptr;  ///< optional: a faster way to draw many at once
 };
 
 /// Whether a triangle was drawn or refused before reaching the algorithm.
@@ -56,6 +65,12 @@ DrawResult validate_triangle(const Triangle& triangle) noexcept;
 /// triangle draws nothing and the result says why.
 DrawResult draw_triangle(const TriangleAlgorithm& algorithm, Canvas& canvas,
                          const Triangle& triangle, Color color);
+
+/// Draws triangles in order with one algorithm: each is validated, refused ones are skipped, and
+/// the rest go through the algorithm's batch entry point when it has one (one by one otherwise).
+/// Returns how many were refused.
+std::size_t draw_triangles(const TriangleAlgorithm& algorithm, Canvas& canvas,
+                           std::span<const SceneTriangle> triangles);
 
 /// The pixel centre nearest to p (halves round up), which is what the articles' integer
 /// algorithms receive. Precondition: p is finite and within ±2^30.

@@ -1,1 +1,212 @@
 #include <catch2/catch.hpp>
+
+#include <array>
+#include <cmath>
+#include <limits>
+#include <utility>
+#include <vector>
+
+#include "pixels.hpp"
+#include "scene.hpp"
+#include "triangle_algorithm.hpp"
+
+namespace tri {
+namespace {
+
+using testing::PixelSet;
+
+// Catch prints std::array and std::pair, not glm vectors, so those are compared instead.
+std::array<int, 4> rgba(Color c) {
+  return {c.r, c.g, c.b, c.a};
+}
+std::pair<int, int> xy(glm::ivec2 p) {
+  return {p.x, p.y};
+}
+
+constexpr double not_a_number = std::numeric_limits<double>::quiet_NaN();
+constexpr double infinity = std::numeric_limits<double>::infinity();
+constexpr double limit = 1073741824.0;  // 2^30
+
+const Triangle ordinary = {glm::dvec2(1, 1), glm::dvec2(5, 1), glm::dvec2(1, 4)};
+
+// The triangle with one of its six coordinates replaced.
+Triangle with_coordinate(int index, double value) {
+  Triangle t = ordinary;
+  t[index / 2][index % 2] = value;
+  return t;
+}
+
+// A stand-in algorithm: one pixel at the first vertex, so a test sees whether and with what it
+// was called.
+const TriangleAlgorithm one_pixel_algorithm{
+    "one_pixel", "00_test", CoverageRule::approximate, "writes the pixel of the first vertex",
+    [](Canvas& canvas, const Triangle& triangle, Color color) {
+      canvas.put_pixel(nearest_pixel(triangle[0]), color);
+    }};
+
+}  // namespace
+
+TEST_CASE("The coverage rules are named top-left, inclusive and approximate", "[algorithm]") {
+  CHECK(rule_name(CoverageRule::top_left) == "top-left");
+  CHECK(rule_name(CoverageRule::inclusive) == "inclusive");
+  CHECK(rule_name(CoverageRule::approximate) == "approximate");
+}
+
+TEST_CASE("Each draw result is described in one line", "[algorithm]") {
+  CHECK(describe(DrawResult::drawn) == "drawn");
+  CHECK(describe(DrawResult::rejected_non_finite) ==
+        "not drawn: a vertex coordinate is NaN or infinite");
+  CHECK(describe(DrawResult::rejected_out_of_range) ==
+        "not drawn: a vertex coordinate is outside ±2^30");
+}
+
+TEST_CASE("The triangle limit is the scene limit, 2^30", "[algorithm]") {
+  CHECK(max_scene_coordinate == limit);
+  CHECK(max_scene_coordinate == std::ldexp(1.0, 30));
+}
+
+TEST_CASE("validate_triangle accepts finite coordinates up to exactly plus or minus 2^30",
+          "[algorithm][validate]") {
+  CHECK(validate_triangle(ordinary) == DrawResult::drawn);
+  CHECK(validate_triangle({glm::dvec2(0, 0), glm::dvec2(0, 0), glm::dvec2(0, 0)}) ==
+        DrawResult::drawn);
+  CHECK(validate_triangle({glm::dvec2(limit, -limit), glm::dvec2(-limit, limit),
+                           glm::dvec2(limit, limit)}) == DrawResult::drawn);
+  CHECK(validate_triangle({glm::dvec2(std::numeric_limits<double>::denorm_min(), -0.0),
+                           glm::dvec2(1e-300, 0), glm::dvec2(0, 0)}) == DrawResult::drawn);
+}
+
+TEST_CASE("validate_triangle refuses NaN and infinities in any coordinate",
+          "[algorithm][validate]") {
+  for (int index = 0; index < 6; ++index) {
+    INFO("coordinate " << index);
+    CHECK(validate_triangle(with_coordinate(index, not_a_number)) ==
+          DrawResult::rejected_non_finite);
+    CHECK(validate_triangle(with_coordinate(index, -not_a_number)) ==
+          DrawResult::rejected_non_finite);
+    CHECK(validate_triangle(with_coordinate(index, infinity)) == DrawResult::rejected_non_finite);
+    CHECK(validate_triangle(with_coordinate(index, -infinity)) == DrawResult::rejected_non_finite);
+  }
+}
+
+TEST_CASE("validate_triangle refuses coordinates beyond plus or minus 2^30",
+          "[algorithm][validate]") {
+  const double just_above = std::nextafter(limit, infinity);
+  for (int index = 0; index < 6; ++index) {
+    INFO("coordinate " << index);
+    CHECK(validate_triangle(with_coordinate(index, limit)) == DrawResult::drawn);
+    CHECK(validate_triangle(with_coordinate(index, -limit)) == DrawResult::drawn);
+    CHECK(validate_triangle(with_coordinate(index, just_above)) ==
+          DrawResult::rejected_out_of_range);
+    CHECK(validate_triangle(with_coordinate(index, -just_above)) ==
+          DrawResult::rejected_out_of_range);
+    CHECK(validate_triangle(with_coordinate(index, 1e300)) == DrawResult::rejected_out_of_range);
+    CHECK(validate_triangle(with_coordinate(index, std::numeric_limits<double>::lowest())) ==
+          DrawResult::rejected_out_of_range);
+  }
+}
+
+TEST_CASE("A non-finite coordinate is reported before an out-of-range one",
+          "[algorithm][validate]") {
+  const Triangle both = {glm::dvec2(2 * limit, 0), glm::dvec2(0, 0), glm::dvec2(0, not_a_number)};
+  CHECK(validate_triangle(both) == DrawResult::rejected_non_finite);
+}
+
+TEST_CASE("draw_triangle calls the algorithm once with the triangle and colour it was given",
+          "[algorithm][draw]") {
+  Canvas canvas(8, 8);
+  canvas.enable_write_counts();
+  const Triangle triangle = {glm::dvec2(3.4, 5.6), glm::dvec2(7, 0), glm::dvec2(0, 0)};
+  CHECK(draw_triangle(one_pixel_algorithm, canvas, triangle, colors::yellow) == DrawResult::drawn);
+  CHECK(testing::written_pixels(canvas) == PixelSet{{3, 6}});
+  CHECK(canvas.write_count(3, 6) == 1);
+  CHECK(rgba(canvas.pixel(3, 6)) == rgba(colors::yellow));
+  CHECK(canvas.outside_writes() == 0);
+}
+
+TEST_CASE("draw_triangle draws nothing for a refused triangle and says why", "[algorithm][draw]") {
+  struct Case {
+    Triangle triangle;
+    DrawResult expected;
+  };
+  const std::vector<Case> cases = {
+      {with_coordinate(0, not_a_number), DrawResult::rejected_non_finite},
+      {with_coordinate(3, infinity), DrawResult::rejected_non_finite},
+      {with_coordinate(5, -infinity), DrawResult::rejected_non_finite},
+      {with_coordinate(1, std::nextafter(limit, infinity)), DrawResult::rejected_out_of_range},
+      {with_coordinate(4, -1e10), DrawResult::rejected_out_of_range},
+      // The first vertex is fine; only another vertex is refused, yet nothing is drawn.
+      {{glm::dvec2(2, 2), glm::dvec2(not_a_number, 0), glm::dvec2(0, 0)},
+       DrawResult::rejected_non_finite},
+      {{glm::dvec2(2, 2), glm::dvec2(0, 0), glm::dvec2(0, 1e12)},
+       DrawResult::rejected_out_of_range},
+  };
+  for (const Case& c : cases) {
+    Canvas canvas(8, 8);
+    canvas.enable_write_counts();
+    CHECK(draw_triangle(one_pixel_algorithm, canvas, c.triangle, colors::red) == c.expected);
+    CHECK(testing::written_pixels(canvas).empty());
+    CHECK(canvas.outside_writes() == 0);
+  }
+}
+
+TEST_CASE("nearest_pixel rounds to the nearest pixel centre, halves up", "[algorithm][round]") {
+  struct Case {
+    double value;
+    int expected;
+  };
+  const Case cases[] = {
+      {0.0, 0},
+      {-0.0, 0},
+      {0.5, 1},
+      {-0.5, 0},
+      {1.5, 2},
+      {-1.5, -1},
+      {2.5, 3},
+      {-2.5, -2},
+      {2.49, 2},
+      {2.51, 3},
+      {-2.49, -2},
+      {-2.51, -3},
+      {0.49999999999999994, 0},  // the largest double below 0.5: floor(x + 0.5) would give 1
+      {-0.49999999999999994, 0},
+      {std::nextafter(0.5, 1.0), 1},
+      {std::nextafter(-0.5, -1.0), -1},
+      {1e-300, 0},
+      {-1e-300, 0},
+      {1000000000.4, 1000000000},
+      {1000000000.5, 1000000001},
+      {-1000000000.5, -1000000000},
+      {limit - 0.5, 1073741824},
+      {limit - 0.75, 1073741823},
+      {std::nextafter(limit - 0.5, 0.0), 1073741823},
+      {limit, 1073741824},
+      {-limit, -1073741824},
+      {-limit + 0.5, -1073741823},
+      {-limit + 0.25, -1073741824},
+  };
+  for (const Case& c : cases) {
+    INFO(std::hexfloat << c.value);
+    CHECK(xy(nearest_pixel({c.value, 0.0})) == std::pair(c.expected, 0));
+    CHECK(xy(nearest_pixel({0.0, c.value})) == std::pair(0, c.expected));
+  }
+  CHECK(xy(nearest_pixel({3.5, -7.5})) == std::pair(4, -7));
+}
+
+TEST_CASE("nearest_pixel is never more than half a pixel away, on random points",
+          "[algorithm][round]") {
+  testing::Random random(7);
+  for (int trial = 0; trial < 2000; ++trial) {
+    const double range = trial < 1000 ? 100.0 : limit;
+    const glm::dvec2 p(random.real(-range, range), random.real(-range, range));
+    const glm::ivec2 n = nearest_pixel(p);
+    INFO(std::hexfloat << p.x << ", " << p.y);
+    // p - n is exact here: p and n are within half a unit and of the same sign or both small.
+    CHECK(p.x - n.x >= -0.5);
+    CHECK(p.x - n.x < 0.5);
+    CHECK(p.y - n.y >= -0.5);
+    CHECK(p.y - n.y < 0.5);
+  }
+}
+
+}  // namespace tri

@@ -26,14 +26,15 @@ Drawn draw_counts(const TriangleAlgorithm& algorithm, const Scene& scene,
                   const std::array<int, 3>& order) {
   Canvas canvas(scene.width, scene.height);
   canvas.enable_write_counts();
-  Drawn drawn;
+  std::vector<SceneTriangle> triangles;
   for (const auto& primitive : scene.primitives) {
     const auto* t = std::get_if<SceneTriangle>(&primitive);
     if (t == nullptr) continue;
-    const Triangle reordered{t->vertices[order[0]], t->vertices[order[1]], t->vertices[order[2]]};
-    if (draw_triangle(algorithm, canvas, reordered, t->color) != DrawResult::drawn)
-      ++drawn.rejected;
+    triangles.push_back(
+        {{t->vertices[order[0]], t->vertices[order[1]], t->vertices[order[2]]}, t->color});
   }
+  Drawn drawn;
+  drawn.rejected = draw_triangles(algorithm, canvas, triangles);
   drawn.counts.assign(canvas.write_counts().begin(), canvas.write_counts().end());
   drawn.outside_writes = canvas.outside_writes();
   return drawn;

@@ -17,25 +17,38 @@ std::size_t count_triangles(const Scene& scene) {
   return n;
 }
 
+std::vector<SceneTriangle> scene_triangles(const Scene& scene) {
+  std::vector<SceneTriangle> triangles;
+  for (const auto& primitive : scene.primitives) {
+    if (const auto* t = std::get_if<SceneTriangle>(&primitive)) triangles.push_back(*t);
+  }
+  return triangles;
+}
+
 RenderStats render_scene(const Scene& scene, const TriangleAlgorithm* algorithm, Canvas& canvas) {
   RenderStats stats;
+  // Consecutive triangles are drawn as one batch, so a batch algorithm sees them together.
+  std::vector<SceneTriangle> run;
+  const auto flush = [&] {
+    if (run.empty()) return;
+    if (algorithm == nullptr) throw std::logic_error("the scene has triangles but no algorithm");
+    const std::size_t refused = draw_triangles(*algorithm, canvas, run);
+    stats.rejected_triangles += refused;
+    stats.triangles += run.size() - refused;
+    run.clear();
+  };
   for (const auto& primitive : scene.primitives) {
     if (const auto* triangle = std::get_if<SceneTriangle>(&primitive)) {
-      if (algorithm == nullptr) throw std::logic_error("the scene has triangles but no algorithm");
-      const DrawResult result =
-          draw_triangle(*algorithm, canvas, triangle->vertices, triangle->color);
-      if (result == DrawResult::drawn) {
-        ++stats.triangles;
-      } else {
-        ++stats.rejected_triangles;
-      }
+      run.push_back(*triangle);
     } else {
+      flush();
       const auto& line = std::get<SceneLine>(primitive);
       ch01::draw_line_bresenham(canvas, nearest_pixel(line.ends[0]), nearest_pixel(line.ends[1]),
                                 line.color);
       ++stats.lines;
     }
   }
+  flush();
   return stats;
 }
 

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <vector>
 
 #include "canvas.hpp"
 #include "scene.hpp"
@@ -20,10 +21,14 @@ struct RenderStats {
 /// A canvas of the scene's size and background.
 Canvas make_canvas(const Scene& scene);
 
-/// Draws every primitive in file order: triangles with the algorithm (through draw_triangle, so
-/// non-finite input is refused), lines with chapter 01's Bresenham between the nearest pixel
-/// centres. The algorithm may be null when the scene has no triangles.
+/// Draws every primitive in file order: runs of consecutive triangles with the algorithm (through
+/// draw_triangles, so non-finite input is refused and batch algorithms get whole runs), lines with
+/// chapter 01's Bresenham between the nearest pixel centres. The algorithm may be null when the
+/// scene has no triangles.
 RenderStats render_scene(const Scene& scene, const TriangleAlgorithm* algorithm, Canvas& canvas);
+
+/// The scene's triangles in order, without its lines.
+std::vector<SceneTriangle> scene_triangles(const Scene& scene);
 
 /// Number of triangles in a scene.
 std::size_t count_triangles(const Scene& scene);
