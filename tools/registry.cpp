@@ -7,6 +7,7 @@
 #include "05_edge_function/algorithms.hpp"
 #include "06_barycentric/algorithms.hpp"
 #include "07_exact_coverage/algorithms.hpp"
+#include "08_fast_exact/algorithms.hpp"
 
 namespace tri {
 

@@ -101,4 +101,14 @@ void draw_triangle_fixed_point_8(Canvas& canvas, const Triangle& triangle, Color
   draw_triangle_fixed_point(canvas, triangle, color, 8);
 }
 
+void draw_triangle_fixed_point_0(Canvas& canvas, const Triangle& triangle, Color color) {
+  draw_triangle_fixed_point(canvas, triangle, color, 0);
+}
+void draw_triangle_fixed_point_2(Canvas& canvas, const Triangle& triangle, Color color) {
+  draw_triangle_fixed_point(canvas, triangle, color, 2);
+}
+void draw_triangle_fixed_point_4(Canvas& canvas, const Triangle& triangle, Color color) {
+  draw_triangle_fixed_point(canvas, triangle, color, 4);
+}
+
 }  // namespace tri::ch07

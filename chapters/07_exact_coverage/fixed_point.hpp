@@ -50,4 +50,10 @@ void draw_triangle_fixed_point(Canvas& canvas, const Triangle& triangle, Color c
 /// draw_triangle_fixed_point with 8 fractional bits: exact for vertices on the 1/256 grid.
 void draw_triangle_fixed_point_8(Canvas& canvas, const Triangle& triangle, Color color);
 
+/// The precision knob of the speed-vs-error report: 0, 2 and 4 fractional bits snap vertices to
+/// coarser grids, so they are exact only for vertices already on those grids.
+void draw_triangle_fixed_point_0(Canvas& canvas, const Triangle& triangle, Color color);
+void draw_triangle_fixed_point_2(Canvas& canvas, const Triangle& triangle, Color color);
+void draw_triangle_fixed_point_4(Canvas& canvas, const Triangle& triangle, Color color);
+
 }  // namespace tri::ch07

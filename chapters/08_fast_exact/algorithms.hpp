@@ -1,0 +1,14 @@
+/// @file
+/// The triangle algorithms chapter 08 registers (DESIGN section 5).
+#pragma once
+
+#include <span>
+
+#include "triangle_algorithm.hpp"
+
+namespace tri::ch08 {
+
+/// Every triangle algorithm of this chapter, in the order the chapter tells them.
+std::span<const TriangleAlgorithm> triangle_algorithms();
+
+}  // namespace tri::ch08
