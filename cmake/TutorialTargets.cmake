@@ -32,14 +32,19 @@ function(tutorial_chapter_executable chapter)
       CACHE INTERNAL "")
 endfunction()
 
-# tutorial_tests(<target> <test prefix> SOURCES... LIBRARIES...)
+# tutorial_tests(<target> <test prefix> SOURCES... LIBRARIES... [LABELS...])
 # One Catch2 executable per folder; every TEST_CASE becomes a CTest test named
 # "<prefix>/<test name>", so 'ctest -R 01_lines' runs one chapter alone.
 function(tutorial_tests target prefix)
-  cmake_parse_arguments(ARG "" "" "SOURCES;LIBRARIES" ${ARGN})
+  cmake_parse_arguments(ARG "" "" "SOURCES;LIBRARIES;LABELS" ${ARGN})
   add_executable(${target} ${ARG_SOURCES})
   target_link_libraries(${target} PRIVATE ${ARG_LIBRARIES} test_support Catch2::Catch2WithMain
                         tutorial_options)
+  set(properties TIMEOUT 600)
+  if(ARG_LABELS)
+    list(APPEND properties LABELS "${ARG_LABELS}")
+  endif()
   catch_discover_tests(${target} TEST_PREFIX "${prefix}/"
-                       WORKING_DIRECTORY "${CMAKE_CURRENT_BINARY_DIR}")
+                       WORKING_DIRECTORY "${CMAKE_CURRENT_BINARY_DIR}"
+                       PROPERTIES ${properties})
 endfunction()

@@ -71,13 +71,14 @@ void jittered_grid(const SceneRecipe& r, Scene& scene, Random& random) {
   const int cells = std::max(1, r.triangles / 2);
   const double aspect = static_cast<double>(r.width) / r.height;
   const int nx = std::max(1, static_cast<int>(std::lround(std::sqrt(cells * aspect))));
-  const int ny = std::max(1, cells / nx);
+  const int ny = std::max(1, (cells + nx - 1) / nx);  // round up: at least the triangles asked for
   const double sx = (r.width + 2.0) / nx, sy = (r.height + 2.0) / ny;
   std::vector<glm::dvec2> points;
   for (int j = 0; j <= ny; ++j) {
     for (int i = 0; i <= nx; ++i) {
-      const double jitter_x = (i == 0 || i == nx) ? 0 : random.real(-0.35, 0.35) * sx;
-      const double jitter_y = (j == 0 || j == ny) ? 0 : random.real(-0.35, 0.35) * sy;
+      // Below 1/6 of a cell every quad stays convex, so no triangle folds over its neighbour.
+      const double jitter_x = (i == 0 || i == nx) ? 0 : random.real(-0.15, 0.15) * sx;
+      const double jitter_y = (j == 0 || j == ny) ? 0 : random.real(-0.15, 0.15) * sy;
       points.push_back(snapped({-1 + i * sx + jitter_x, -1 + j * sy + jitter_y}, r.grid_bits));
     }
   }
