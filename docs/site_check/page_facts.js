@@ -1,0 +1,39 @@
+// Evaluated in a page after its load event; returns what the checker judges, as plain JSON.
+(async () => {
+  const pause = (ms) => new Promise((resolve) => setTimeout(resolve, ms));
+  const images = () => [...document.images];
+  const objects = () => [...document.querySelectorAll('object[data]')];
+  // The load event already waited for images; this only covers late additions, for 5 s at most.
+  for (let i = 0; i < 50 && images().some((image) => !image.complete); ++i) await pause(100);
+  // Doxygen builds the visible tree from NAVTREE once the document is ready.
+  const hasTree = typeof NAVTREE !== 'undefined';
+  for (let i = 0; i < 50 && hasTree && !document.querySelector('#nav-tree-contents a'); ++i) {
+    await pause(100);
+  }
+  const failed = window.__siteCheckFailedLoads || [];
+  const text = (element) => element.textContent.replace(/\s+/g, ' ').trim();
+  return {
+    url: location.href,
+    title: document.title,
+    images: images().map((image) => ({
+      src: image.src,
+      loaded: image.complete && image.naturalWidth > 0 && !failed.includes(image.src),
+      naturalWidth: image.naturalWidth,
+    })),
+    // Doxygen embeds block-level SVG figures as <object>; a loaded one has a document.
+    objects: objects().map((object) => ({
+      src: object.data,
+      loaded: !failed.includes(object.data) && object.contentDocument !== null &&
+          object.contentDocument.documentElement !== null &&
+          object.contentDocument.documentElement.localName === 'svg',
+    })),
+    links: [...document.querySelectorAll('a[href]')].map((link) => ({
+      href: link.href,
+      text: text(link),
+      inNavTree: link.closest('#nav-tree') !== null,
+      inContents: link.closest('div.contents') !== null,
+    })),
+    navTree: hasTree ? NAVTREE[0][2].map((entry) => ({title: entry[0], href: entry[1]})) : null,
+    navTreeRoot: hasTree ? NAVTREE[0][1] : null,
+  };
+})()
