@@ -15,7 +15,7 @@ std::vector<TriangleAlgorithm> registered_algorithms() {
   std::vector<TriangleAlgorithm> all;
   for (const auto chapter :
        {ch03::triangle_algorithms(), ch04::triangle_algorithms(), ch05::triangle_algorithms(),
-        ch06::triangle_algorithms(), ch07::triangle_algorithms()}) {
+        ch06::triangle_algorithms(), ch07::triangle_algorithms(), ch08::triangle_algorithms()}) {
     all.insert(all.end(), chapter.begin(), chapter.end());
   }
   return all;

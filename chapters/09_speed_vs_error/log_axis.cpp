@@ -1,0 +1,30 @@
+#include "log_axis.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace tri::ch09 {
+
+double LogScale::position(double value) const noexcept {
+  const double low = low_decade;
+  const double high = std::max(high_decade, low_decade + 1);  // never a zero-width scale
+  const double decade = value > 0 ? std::clamp(std::log10(value), low, high) : low;
+  return low_position + (decade - low) / (high - low) * (high_position - low_position);
+}
+
+DecadeRange decades_covering(std::span<const double> values) noexcept {
+  double smallest = 0, largest = 0;
+  bool any = false;
+  for (const double v : values) {
+    if (!(v > 0) || !std::isfinite(v)) continue;
+    smallest = any ? std::min(smallest, v) : v;
+    largest = any ? std::max(largest, v) : v;
+    any = true;
+  }
+  if (!any) return {};
+  const int low = static_cast<int>(std::floor(std::log10(smallest)));
+  const int high = static_cast<int>(std::ceil(std::log10(largest)));
+  return {low, std::max(high, low + 1)};
+}
+
+}  // namespace tri::ch09

@@ -1,0 +1,30 @@
+#include <sstream>
+
+#include <catch2/catch.hpp>
+
+#include "machine.hpp"
+
+TEST_CASE("The CPU model is the first model name line of /proc/cpuinfo", "[machine]") {
+  std::istringstream cpuinfo(
+      "processor\t: 0\nvendor_id\t: AuthenticAMD\nmodel\t\t: 1\n"
+      "model name\t: AMD EPYC 7B13 64-Core Processor  \nprocessor\t: 1\n"
+      "model name\t: something else\n");
+  CHECK(tri::ch09::cpu_model_from(cpuinfo) == "AMD EPYC 7B13 64-Core Processor");
+}
+
+TEST_CASE("Without a model name line the CPU model is unknown", "[machine]") {
+  std::istringstream arm("processor\t: 0\nBogoMIPS\t: 50.00\nmodel name\t:   \n");
+  CHECK(tri::ch09::cpu_model_from(arm) == "unknown");
+  std::istringstream empty("");
+  CHECK(tri::ch09::cpu_model_from(empty) == "unknown");
+}
+
+TEST_CASE("The machine description names the compiler, the build type and the OSMesa peer",
+          "[machine]") {
+  const tri::ch09::Machine machine = tri::ch09::describe_machine();
+  CHECK_FALSE(machine.cpu_model.empty());
+  CHECK_FALSE(machine.compiler.empty());
+  CHECK_FALSE(machine.build_type.empty());
+  const bool not_built = machine.osmesa_peer == "not built (libosmesa6-dev not found)";
+  CHECK((not_built || machine.osmesa_peer.starts_with("found")));
+}

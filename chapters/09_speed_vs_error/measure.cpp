@@ -1,0 +1,138 @@
+#include "measure.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <numeric>
+
+#include "render_scene.hpp"
+
+namespace tri::ch09 {
+
+PreparedScene prepare_scene(const SuiteScene& suite, std::size_t error_triangle_limit) {
+  PreparedScene prepared{suite, generate_scene(suite.recipe), {}, {}};
+  prepared.triangles = scene_triangles(prepared.scene);
+  prepared.error_scene = prepared.scene;
+  if (error_triangle_limit != 0 && prepared.triangles.size() > error_triangle_limit) {
+    prepared.error_scene.primitives.clear();
+    for (std::size_t i = 0; i < error_triangle_limit; ++i) {
+      prepared.error_scene.primitives.emplace_back(prepared.triangles[i]);
+    }
+  }
+  return prepared;
+}
+
+FillCeilings measure_fill_ceilings(int width, int height, int threads, const TimingPlan& plan) {
+  Canvas canvas(width, height);
+  const double pixels = static_cast<double>(width) * height;
+  FillCeilings ceilings;
+  ceilings.threads = std::max(1, threads);
+  ceilings.single_thread_mpix_per_s =
+      mpix_per_second(pixels, time_canvas_fill(canvas, 1, plan).seconds.median);
+  ceilings.threads_mpix_per_s =
+      ceilings.threads == 1
+          ? ceilings.single_thread_mpix_per_s
+          : mpix_per_second(pixels,
+                            time_canvas_fill(canvas, ceilings.threads, plan).seconds.median);
+  return ceilings;
+}
+
+double Measurement::triangles_per_second() const noexcept {
+  const double seconds = timing.seconds.median;
+  return seconds > 0 ? static_cast<double>(triangles) / seconds : 0.0;
+}
+
+double Measurement::mpix_per_second() const noexcept {
+  return ch09::mpix_per_second(static_cast<double>(written_pixels), timing.seconds.median);
+}
+
+double Measurement::ratio_to_ceiling() const noexcept {
+  return fill_ceiling_mpix_per_s > 0 ? mpix_per_second() / fill_ceiling_mpix_per_s : 0.0;
+}
+
+std::uint64_t count_written_pixels(const TriangleAlgorithm& algorithm, const Scene& scene,
+                                   std::span<const SceneTriangle> triangles) {
+  Canvas canvas(scene.width, scene.height);
+  canvas.enable_write_counts();
+  draw_triangles(algorithm, canvas, triangles);
+  const auto counts = canvas.write_counts();
+  return std::accumulate(counts.begin(), counts.end(), std::uint64_t{0});
+}
+
+Measurement measure(const TriangleAlgorithm& algorithm, const PreparedScene& prepared,
+                    const TimingPlan& plan, const FillCeilings& ceilings) {
+  Measurement m;
+  m.algorithm = algorithm.name;
+  m.chapter = algorithm.chapter;
+  m.rule = rule_name(algorithm.rule);
+  m.threaded = algorithm.threaded;
+  m.scene = prepared.suite.name;
+  m.grid = prepared.suite.grid;
+  m.mesh = prepared.suite.mesh;
+  m.width = prepared.scene.width;
+  m.height = prepared.scene.height;
+  m.triangles = prepared.triangles.size();
+  m.written_pixels = count_written_pixels(algorithm, prepared.scene, prepared.triangles);
+
+  Canvas canvas = make_canvas(prepared.scene);  // no write counts: they would be timed too
+  const std::span<const SceneTriangle> triangles(prepared.triangles);
+  m.timing = time_runs([&] { draw_triangles(algorithm, canvas, triangles); }, plan);
+  m.fill_ceiling_mpix_per_s =
+      algorithm.threaded ? ceilings.threaded_mpix_per_s() : ceilings.single_thread_mpix_per_s;
+
+  m.error_triangles = count_triangles(prepared.error_scene);
+  m.error = measure_error(algorithm, prepared.error_scene);
+  return m;
+}
+
+namespace {
+
+double median_of(std::vector<double> values) {
+  return values.empty() ? 0.0 : spread_of(std::move(values)).median;
+}
+
+std::string progress_line(std::size_t done, std::size_t total, const Measurement& m,
+                          double elapsed_seconds) {
+  char line[256];
+  std::snprintf(line, sizeof line, "[%3zu/%zu] %-8s %-7s %-28s %9.2f Mpix/s  error %.3g  (%.1f s)",
+                done, total, m.scene.c_str(), m.grid.c_str(), m.algorithm.c_str(),
+                m.mpix_per_second(), m.error.error_rate(), elapsed_seconds);
+  return line;
+}
+
+}  // namespace
+
+BenchReport run_benchmark(std::span<const TriangleAlgorithm> algorithms,
+                          const BenchSettings& settings, const Machine& machine,
+                          std::ostream& progress) {
+  BenchReport report;
+  report.machine = machine;
+  report.size = settings.size;
+  report.error_triangle_limit = settings.error_triangle_limit;
+  const auto start = std::chrono::steady_clock::now();
+  const std::size_t total = settings.scenes.size() * algorithms.size();
+  std::vector<double> single_ceilings, threaded_ceilings;
+  for (const SuiteScene& suite : settings.scenes) {
+    const PreparedScene prepared = prepare_scene(suite, settings.error_triangle_limit);
+    report.width = prepared.scene.width;
+    report.height = prepared.scene.height;
+    const FillCeilings ceilings =
+        measure_fill_ceilings(prepared.scene.width, prepared.scene.height,
+                              static_cast<int>(std::max(1u, machine.threads)), settings.timing);
+    single_ceilings.push_back(ceilings.single_thread_mpix_per_s);
+    threaded_ceilings.push_back(ceilings.threads_mpix_per_s);
+    report.ceilings.threads = ceilings.threads;
+    for (const TriangleAlgorithm& algorithm : algorithms) {
+      report.rows.push_back(measure(algorithm, prepared, settings.timing, ceilings));
+      const double elapsed =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      progress << progress_line(report.rows.size(), total, report.rows.back(), elapsed)
+               << std::endl;  // flushed: the line is the progress
+    }
+  }
+  report.ceilings.single_thread_mpix_per_s = median_of(single_ceilings);
+  report.ceilings.threads_mpix_per_s = median_of(threaded_ceilings);
+  return report;
+}
+
+}  // namespace tri::ch09

@@ -1,0 +1,103 @@
+/// @file
+/// Measuring one algorithm on one scene (speed, pixels written, error against the oracle), and a
+/// whole run: every algorithm on every scene of a suite.
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+#include <ostream>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "error_metrics.hpp"
+#include "machine.hpp"
+#include "scene.hpp"
+#include "suites.hpp"
+#include "timing.hpp"
+#include "triangle_algorithm.hpp"
+
+namespace tri::ch09 {
+
+/// A suite scene made ready once, so no timed run allocates or copies it.
+struct PreparedScene {
+  SuiteScene suite;
+  Scene scene;
+  std::vector<SceneTriangle> triangles;  ///< the scene's triangles, as draw_triangles takes them
+  Scene error_scene;  ///< what the error is measured on: the scene, or its first triangles
+};
+
+/// Generates the scene and its triangle list; the error scene keeps the first
+/// error_triangle_limit triangles (all of them for 0).
+PreparedScene prepare_scene(const SuiteScene& suite, std::size_t error_triangle_limit);
+
+/// The std::fill ceilings of one canvas size, measured in the same run as the algorithms.
+struct FillCeilings {
+  double single_thread_mpix_per_s = 0;
+  /// Filled by `threads` threads started for every fill, as a threaded algorithm starts them for
+  /// every batch; on a small canvas starting them can cost more than the fill.
+  double threads_mpix_per_s = 0;
+  int threads = 1;
+
+  /// The ceiling of a threaded algorithm: the faster of the two fills (it could use one thread).
+  double threaded_mpix_per_s() const noexcept {
+    return std::max(single_thread_mpix_per_s, threads_mpix_per_s);
+  }
+};
+
+/// Times std::fill over a width x height canvas in one thread and in `threads` threads.
+FillCeilings measure_fill_ceilings(int width, int height, int threads, const TimingPlan& plan);
+
+/// One algorithm on one scene: a row of the CSV.
+struct Measurement {
+  std::string algorithm;
+  std::string chapter;
+  std::string rule;
+  bool threaded = false;
+  std::string scene;
+  std::string grid;
+  bool mesh = false;
+  int width = 0;
+  int height = 0;
+  std::size_t triangles = 0;
+  std::uint64_t written_pixels = 0;    ///< pixel writes of one draw of the scene (write counts)
+  Timing timing;                       ///< seconds per draw of the whole scene
+  double fill_ceiling_mpix_per_s = 0;  ///< the ceiling that applies: threaded or single thread
+  std::size_t error_triangles = 0;     ///< triangles the error was measured on
+  ErrorReport error;
+
+  double triangles_per_second() const noexcept;
+  /// Written pixels per second of the median draw, in millions.
+  double mpix_per_second() const noexcept;
+  /// mpix_per_second / fill_ceiling_mpix_per_s (0 without a ceiling).
+  double ratio_to_ceiling() const noexcept;
+};
+
+/// Pixel writes of one draw of the triangles on a counting canvas of the scene's size.
+std::uint64_t count_written_pixels(const TriangleAlgorithm& algorithm, const Scene& scene,
+                                   std::span<const SceneTriangle> triangles);
+
+/// Measures one algorithm on one prepared scene: timed with draw_triangles on a canvas without
+/// write counts (allocated before the clock starts), pixels counted once in a separate draw, and
+/// the error from measure_error on the error scene.
+Measurement measure(const TriangleAlgorithm& algorithm, const PreparedScene& prepared,
+                    const TimingPlan& plan, const FillCeilings& ceilings);
+
+/// Everything one run measured.
+struct BenchReport {
+  Machine machine;
+  SuiteSize size = SuiteSize::quick;
+  int width = 0;  ///< canvas of the suite (every scene of a suite has the same)
+  int height = 0;
+  std::size_t error_triangle_limit = 0;
+  FillCeilings ceilings;          ///< medians over the scenes of the per-scene ceilings
+  std::vector<Measurement> rows;  ///< scene by scene, every algorithm on each
+};
+
+/// Runs every algorithm on every scene of the settings, printing one progress line per
+/// (algorithm, scene) to progress.
+BenchReport run_benchmark(std::span<const TriangleAlgorithm> algorithms,
+                          const BenchSettings& settings, const Machine& machine,
+                          std::ostream& progress);
+
+}  // namespace tri::ch09

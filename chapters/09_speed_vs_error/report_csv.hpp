@@ -1,0 +1,24 @@
+/// @file
+/// 09_report.csv: every measurement of a run, one row per (algorithm, scene).
+#pragma once
+
+#include <span>
+#include <string>
+#include <string_view>
+
+#include "measure.hpp"
+
+namespace tri::ch09 {
+
+/// The header line's column names, in order.
+std::span<const std::string_view> csv_columns() noexcept;
+
+/// The header and one line per measurement. Text fields never contain commas (names are
+/// identifiers, the grid is "integer" or "1/256").
+std::string to_csv(std::span<const Measurement> rows);
+
+/// A number with `significant` significant digits, "%g" style, as the CSV and the tables write
+/// it.
+std::string format_number(double value, int significant = 4);
+
+}  // namespace tri::ch09

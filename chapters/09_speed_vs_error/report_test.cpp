@@ -1,0 +1,331 @@
+// The report code on the tiny setting: three algorithms, 32x32 scenes, one run per sample. These
+// tests check the outputs' form and the error numbers, never a speed.
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <catch2/catch.hpp>
+
+#include "error_metrics.hpp"
+#include "plot_svg.hpp"
+#include "registry.hpp"
+#include "render_scene.hpp"
+#include "report.hpp"
+#include "report_csv.hpp"
+#include "report_markdown.hpp"
+#include "summary.hpp"
+
+using tri::ch09::BenchReport;
+using tri::ch09::Measurement;
+
+namespace {
+
+const std::vector<std::string> tiny_algorithms{"edge_function", "fixed_point_0", "fixed_point_8"};
+
+std::vector<tri::TriangleAlgorithm> chosen_algorithms() {
+  const auto all = tri::registered_algorithms();
+  std::vector<tri::TriangleAlgorithm> chosen;
+  for (const std::string& name : tiny_algorithms) {
+    const tri::TriangleAlgorithm* algorithm = tri::find_algorithm(all, name);
+    REQUIRE(algorithm != nullptr);
+    chosen.push_back(*algorithm);
+  }
+  return chosen;
+}
+
+// One tiny run shared by the tests (it takes well under a second).
+struct TinyRun {
+  tri::ch09::BenchSettings settings = tri::ch09::bench_settings(tri::ch09::SuiteSize::tiny);
+  std::ostringstream progress;
+  BenchReport report;
+  tri::ch09::ReportFiles files;
+  TinyRun() {
+    report = tri::ch09::run_benchmark(chosen_algorithms(), settings, tri::ch09::describe_machine(),
+                                      progress);
+    files = tri::ch09::render_report(report);
+  }
+};
+
+const TinyRun& tiny_run() {
+  static const TinyRun run;
+  return run;
+}
+
+std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+std::vector<std::string> fields_of(const std::string& line) {
+  std::vector<std::string> fields;
+  std::istringstream in(line);
+  for (std::string field; std::getline(in, field, ',');) fields.push_back(field);
+  if (!line.empty() && line.back() == ',') fields.emplace_back();
+  return fields;
+}
+
+std::size_t count_of(const std::string& text, const std::string& part) {
+  std::size_t count = 0;
+  for (auto at = text.find(part); at != std::string::npos; at = text.find(part, at + 1)) ++count;
+  return count;
+}
+
+// Checks that every element is closed in order: "<a>" ... "</a>", or "<a/>". Returns the first
+// problem, or "" for a balanced document.
+std::string unbalanced_tag(const std::string& svg) {
+  std::vector<std::string> open;
+  for (auto at = svg.find('<'); at != std::string::npos; at = svg.find('<', at + 1)) {
+    const auto end = svg.find('>', at);
+    if (end == std::string::npos) return "a tag is never closed with '>'";
+    const std::string tag = svg.substr(at + 1, end - at - 1);
+    if (tag.empty()) return "an empty tag";
+    if (tag.front() == '/') {
+      if (open.empty() || open.back() != tag.substr(1)) return "unexpected </" + tag.substr(1);
+      open.pop_back();
+    } else if (tag.back() != '/') {
+      open.push_back(tag.substr(0, tag.find_first_of(" \n")));
+    }
+    at = end;
+  }
+  return open.empty() ? "" : "<" + open.back() + "> is never closed";
+}
+
+}  // namespace
+
+TEST_CASE("The tiny run measures every algorithm on every scene once, with a progress line each",
+          "[report]") {
+  const TinyRun& run = tiny_run();
+  REQUIRE(run.report.rows.size() == tiny_algorithms.size() * run.settings.scenes.size());
+  std::map<std::tuple<std::string, std::string, std::string>, int> seen;
+  for (const Measurement& m : run.report.rows) ++seen[{m.algorithm, m.scene, m.grid}];
+  CHECK(seen.size() == run.report.rows.size());
+  CHECK(lines_of(run.progress.str()).size() == run.report.rows.size());
+  CHECK(run.report.width == 32);
+  CHECK(run.report.height == 32);
+}
+
+TEST_CASE("Each measurement is timed with one run per sample, its median within its spread",
+          "[report]") {
+  for (const Measurement& m : tiny_run().report.rows) {
+    CHECK(m.timing.repetitions == 1);
+    CHECK(m.timing.samples == 1);
+    CHECK(m.timing.seconds.min <= m.timing.seconds.median);
+    CHECK(m.timing.seconds.median <= m.timing.seconds.max);
+    CHECK(m.fill_ceiling_mpix_per_s >= 0);
+  }
+}
+
+TEST_CASE("The error numbers are measure_error's on the same scene", "[report]") {
+  const auto algorithms = chosen_algorithms();
+  for (const Measurement& m : tiny_run().report.rows) {
+    const auto it =
+        std::find_if(algorithms.begin(), algorithms.end(),
+                     [&](const tri::TriangleAlgorithm& a) { return a.name == m.algorithm; });
+    REQUIRE(it != algorithms.end());
+    const auto suite = std::find_if(
+        tiny_run().settings.scenes.begin(), tiny_run().settings.scenes.end(),
+        [&](const tri::ch09::SuiteScene& s) { return s.name == m.scene && s.grid == m.grid; });
+    REQUIRE(suite != tiny_run().settings.scenes.end());
+    const tri::Scene scene = tri::generate_scene(suite->recipe);
+    const tri::ErrorReport expected = tri::measure_error(*it, scene);
+    CAPTURE(m.algorithm, m.scene, m.grid);
+    CHECK(m.error_triangles == m.triangles);
+    CHECK(m.error.covered == expected.covered);
+    CHECK(m.error.missed == expected.missed);
+    CHECK(m.error.extra == expected.extra);
+    CHECK(m.error.gaps == expected.gaps);
+    CHECK(m.error.overdraw == expected.overdraw);
+    CHECK(m.error.order_dependent == expected.order_dependent);
+    CHECK(m.error.outside_writes == 0);
+    // Pixels written, counted in their own draw, agree with the oracle's count and the error.
+    CHECK(m.written_pixels == m.error.covered - m.error.missed + m.error.extra);
+  }
+}
+
+TEST_CASE("The top-left algorithm is exact on every scene and the 0-bit one is not", "[report]") {
+  std::uint64_t wrong_0 = 0;
+  for (const Measurement& m : tiny_run().report.rows) {
+    if (m.algorithm == "fixed_point_8") CHECK(m.error.exact());
+    if (m.algorithm == "fixed_point_0") wrong_0 += m.error.missed + m.error.extra;
+  }
+  CHECK(wrong_0 > 0);
+}
+
+TEST_CASE("The CSV has its header and the same number of fields on every row", "[report]") {
+  const TinyRun& run = tiny_run();
+  const auto lines = lines_of(run.files.csv);
+  REQUIRE(lines.size() == 1 + run.report.rows.size());
+  const auto columns = tri::ch09::csv_columns();
+  const auto header = fields_of(lines[0]);
+  REQUIRE(header.size() == columns.size());
+  for (std::size_t i = 0; i < columns.size(); ++i) CHECK(header[i] == columns[i]);
+  for (const std::string_view name : {"algorithm",
+                                      "chapter",
+                                      "rule",
+                                      "scene",
+                                      "grid",
+                                      "triangles",
+                                      "covered_pixels",
+                                      "median_s",
+                                      "min_s",
+                                      "max_s",
+                                      "tris_per_s",
+                                      "mpix_per_s",
+                                      "fill_ceiling_mpix_per_s",
+                                      "ratio_to_ceiling",
+                                      "missed",
+                                      "extra",
+                                      "gaps",
+                                      "overdraw",
+                                      "order_dependent",
+                                      "error_rate"}) {
+    CHECK(std::find(header.begin(), header.end(), name) != header.end());
+  }
+  for (std::size_t i = 1; i < lines.size(); ++i) {
+    const auto fields = fields_of(lines[i]);
+    CHECK(fields.size() == columns.size());
+    const Measurement& m = run.report.rows[i - 1];
+    CHECK(fields[0] == m.algorithm);
+    CHECK(fields[4] == m.scene);
+    CHECK(fields[5] == m.grid);
+    CHECK(fields[21] == std::to_string(m.error.missed));
+    CHECK(fields[22] == std::to_string(m.error.extra));
+  }
+}
+
+TEST_CASE("The Markdown report has the machine and a table row per algorithm", "[report]") {
+  const TinyRun& run = tiny_run();
+  const std::string& md = run.files.markdown;
+  CHECK(md.starts_with("# "));
+  CHECK(md.find("| nproc | ") != std::string::npos);
+  CHECK(md.find("| CPU | " + run.report.machine.cpu_model + " |") != std::string::npos);
+  CHECK(md.find("| compiler | ") != std::string::npos);
+  CHECK(md.find("| build type | ") != std::string::npos);
+  CHECK(md.find("| std::fill ceiling, 1 thread | ") != std::string::npos);
+  CHECK(md.find("| OSMesa peer | " + run.report.machine.osmesa_peer + " |") != std::string::npos);
+  const auto lines = lines_of(md);
+  const auto header = std::find_if(lines.begin(), lines.end(), [](const std::string& l) {
+    return l.starts_with("| algorithm |");
+  });
+  REQUIRE(header != lines.end());
+  const std::size_t columns = count_of(*header, "|");
+  std::size_t rows = 0;
+  for (auto it = header + 2; it != lines.end() && it->starts_with("| `"); ++it, ++rows) {
+    CHECK(count_of(*it, "|") == columns);
+    CHECK(it->find("`" + tiny_algorithms[rows] + "`") != std::string::npos);
+  }
+  CHECK(rows == tiny_algorithms.size());
+  CHECK(md.find("| `fixed_point_8` | 07_exact_coverage | top-left |") != std::string::npos);
+}
+
+TEST_CASE("The SVG is one balanced document with a circle per algorithm", "[report]") {
+  const std::string& svg = tiny_run().files.svg;
+  CHECK(svg.starts_with("<svg "));
+  CHECK(unbalanced_tag(svg).empty());
+  CHECK(count_of(svg, "<svg") == 1);
+  CHECK(count_of(svg, "<circle ") == tiny_algorithms.size());
+  for (const std::string& name : tiny_algorithms) {
+    CHECK(svg.find(">" + name + "</text>") != std::string::npos);
+  }
+  // fixed_point_0 and fixed_point_8 are one family: one line joins them.
+  CHECK(count_of(svg, "<polyline ") == 1);
+  CHECK(svg.find(">exact</text>") != std::string::npos);
+  CHECK(svg.find("std::fill ceiling, 1 thread: ") != std::string::npos);
+}
+
+TEST_CASE("The exact algorithm is drawn on the exact floor of the plot", "[report]") {
+  const auto summaries = tri::ch09::summarize(tiny_run().report.rows);
+  const tri::ch09::PlotLayout layout;
+  const tri::ch09::ErrorAxis axis = tri::ch09::error_axis_for(summaries, layout);
+  for (const auto& s : summaries) {
+    CAPTURE(s.algorithm);
+    if (s.algorithm == "fixed_point_8") CHECK(axis.position(s.error_rate()) == axis.zero_position);
+    if (s.algorithm == "fixed_point_0") CHECK(axis.position(s.error_rate()) > axis.zero_position);
+    CHECK(axis.position(s.error_rate()) >= layout.left);
+    CHECK(axis.position(s.error_rate()) <= layout.right);
+  }
+}
+
+TEST_CASE("Text in the SVG is escaped", "[report]") {
+  CHECK(tri::ch09::escape_xml("a<b & \"c\">") == "a&lt;b &amp; &quot;c&quot;&gt;");
+}
+
+TEST_CASE("Rates are written with a k, M or G suffix", "[report]") {
+  CHECK(tri::ch09::human_rate(0) == "–");
+  CHECK(tri::ch09::human_rate(950) == "950");
+  CHECK(tri::ch09::human_rate(12'345) == "12.3 k");
+  CHECK(tri::ch09::human_rate(4'560'000) == "4.56 M");
+  CHECK(tri::ch09::human_rate(2e9) == "2 G");
+}
+
+TEST_CASE("Table speeds are whole numbers from 100 Mpix/s up", "[report]") {
+  CHECK(tri::ch09::format_mpix(1559.6) == "1560");
+  CHECK(tri::ch09::format_mpix(100.0) == "100");
+  CHECK(tri::ch09::format_mpix(22.94) == "22.9");
+  CHECK(tri::ch09::format_mpix(0.0) == "0");
+}
+
+TEST_CASE("save_report writes the three files the run rendered", "[report]") {
+  const auto folder = std::filesystem::temp_directory_path() / "tri_ch09_report_test";
+  std::filesystem::remove_all(folder);
+  std::ostringstream log;
+  tri::FigureWriter figures(folder, log);
+  tri::ch09::save_report(figures, tiny_run().report);
+  const auto read = [&](const char* name) {
+    std::ifstream in(folder / name, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  CHECK(read(tri::ch09::csv_file_name) == tiny_run().files.csv);
+  CHECK(read(tri::ch09::markdown_file_name) == tiny_run().files.markdown);
+  CHECK(read(tri::ch09::svg_file_name) == tiny_run().files.svg);
+  CHECK(lines_of(log.str()).size() == 3);
+  std::filesystem::remove_all(folder);
+}
+
+TEST_CASE("A threaded algorithm is held to the faster ceiling, any other to one thread's",
+          "[report]") {
+  tri::TriangleAlgorithm threaded = chosen_algorithms().front();
+  threaded.threaded = true;
+  const tri::ch09::FillCeilings ceilings{100.0, 300.0, 2};
+  CHECK(ceilings.threaded_mpix_per_s() == 300.0);
+  CHECK(tri::ch09::FillCeilings{100.0, 40.0, 2}.threaded_mpix_per_s() == 100.0);
+  const auto prepared = tri::ch09::prepare_scene(tiny_run().settings.scenes.front(), 0);
+  const auto plan = tiny_run().settings.timing;
+  CHECK(tri::ch09::measure(threaded, prepared, plan, ceilings).fill_ceiling_mpix_per_s == 300.0);
+  CHECK(tri::ch09::measure(chosen_algorithms().front(), prepared, plan, ceilings)
+            .fill_ceiling_mpix_per_s == 100.0);
+}
+
+TEST_CASE("The error scene keeps the first triangles when the error is measured on a subset",
+          "[report]") {
+  const tri::ch09::SuiteScene& suite = tiny_run().settings.scenes.front();
+  const auto whole = tri::ch09::prepare_scene(suite, 0);
+  const auto part = tri::ch09::prepare_scene(suite, 5);
+  REQUIRE(whole.triangles.size() > 5);
+  CHECK(part.triangles.size() == whole.triangles.size());  // the timed scene is never cut
+  const auto kept = tri::scene_triangles(part.error_scene);
+  REQUIRE(kept.size() == 5);
+  for (std::size_t i = 0; i < kept.size(); ++i) {
+    CHECK(kept[i].vertices == whole.triangles[i].vertices);
+  }
+  CHECK(tri::count_triangles(whole.error_scene) == whole.triangles.size());
+}
+
+TEST_CASE("A threaded algorithm is labelled as such and gets its own ceiling line", "[report]") {
+  BenchReport report = tiny_run().report;
+  report.ceilings = {100.0, 250.0, 2};
+  auto summaries = tri::ch09::summarize(report.rows);
+  summaries[0].threaded = true;
+  const std::string svg = tri::ch09::to_svg(report, summaries);
+  CHECK(unbalanced_tag(svg).empty());
+  CHECK(count_of(svg, "<circle ") == summaries.size());
+  CHECK(svg.find(">" + summaries[0].algorithm + " (threads)</text>") != std::string::npos);
+  CHECK(svg.find("std::fill ceiling, 1 thread: 100 Mpix/s") != std::string::npos);
+  CHECK(svg.find("std::fill ceiling, 2 threads: 250 Mpix/s") != std::string::npos);
+}

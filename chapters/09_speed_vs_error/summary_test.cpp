@@ -1,0 +1,101 @@
+#include <string>
+#include <vector>
+
+#include <catch2/catch.hpp>
+
+#include "summary.hpp"
+
+using tri::ch09::AlgorithmSummary;
+using tri::ch09::Measurement;
+using tri::ch09::PrecisionStep;
+
+namespace {
+
+// A measurement with round numbers: `pixels` written in `seconds`, and an error report.
+Measurement made_up(std::string algorithm, std::string scene, bool mesh, double seconds,
+                    std::uint64_t pixels, std::uint64_t covered, std::uint64_t missed,
+                    std::uint64_t extra, std::uint64_t gaps) {
+  Measurement m;
+  m.algorithm = std::move(algorithm);
+  m.chapter = "07_exact_coverage";
+  m.rule = "approximate";
+  m.scene = std::move(scene);
+  m.grid = "integer";
+  m.mesh = mesh;
+  m.triangles = 1000;
+  m.written_pixels = pixels;
+  m.timing.seconds = {seconds, seconds, seconds};
+  m.fill_ceiling_mpix_per_s = 1000;
+  m.error.covered = covered;
+  m.error.missed = missed;
+  m.error.extra = extra;
+  m.error.gaps = gaps;
+  m.error.overdraw = gaps;
+  return m;
+}
+
+}  // namespace
+
+TEST_CASE("A summary takes geometric means of speeds and sums of errors", "[summary]") {
+  const std::vector<Measurement> rows{
+      made_up("a", "tiny", false, 0.001, 1'000'000, 100, 1, 2, 5),  // 1000 Mpix/s
+      made_up("b", "tiny", false, 0.002, 1'000'000, 100, 0, 0, 0),
+      made_up("a", "large", false, 0.1, 1'000'000, 1000, 3, 4, 6),  // 10 Mpix/s
+      made_up("a", "mesh", true, 0.01, 1'000'000, 900, 0, 0, 7),    // 100 Mpix/s
+  };
+  const std::vector<AlgorithmSummary> summaries = tri::ch09::summarize(rows);
+  REQUIRE(summaries.size() == 2);
+  const AlgorithmSummary& a = summaries[0];
+  CHECK(a.algorithm == "a");
+  CHECK(a.scenes == 3);
+  CHECK(a.large_mpix_per_s == Approx(10));
+  CHECK(a.tiny_tris_per_s == Approx(1e6));
+  CHECK(a.mesh_tris_per_s == Approx(1e5));
+  CHECK(a.mpix_per_s == Approx(100));  // (1000 * 10 * 100)^(1/3)
+  CHECK(a.ratio_to_ceiling == Approx(0.1));
+  CHECK(a.covered == 2000);
+  CHECK(a.missed == 4);
+  CHECK(a.extra == 6);
+  CHECK(a.error_rate() == Approx(10.0 / 2000));
+  CHECK(a.gaps == 7);  // from the mesh scene only
+  CHECK(a.overdraw == 7);
+  const AlgorithmSummary& b = summaries[1];
+  CHECK(b.algorithm == "b");
+  CHECK(b.error_rate() == 0);
+  CHECK(b.large_mpix_per_s == 0);  // no large scene measured
+}
+
+TEST_CASE("Precision suffixes name a family and its bits", "[summary]") {
+  const auto step = [](const char* name) { return tri::ch09::precision_step(name); };
+  REQUIRE(step("fixed_point_8"));
+  CHECK(step("fixed_point_8")->family == "fixed_point");
+  CHECK(step("fixed_point_8")->bits == 8);
+  CHECK(step("fixed_point_0")->bits == 0);
+  CHECK(step("barycentric_float")->family == "barycentric");
+  CHECK(step("barycentric_float")->bits == 24);
+  CHECK(step("barycentric_double")->bits == 53);
+  CHECK_FALSE(step("edge_function"));
+  CHECK_FALSE(step("scanline_two_loops"));
+  CHECK_FALSE(step("block_8x8"));
+  CHECK_FALSE(step("_8"));
+  CHECK_FALSE(step("many_1234"));
+}
+
+TEST_CASE("Precision families join members of one chapter from fewer to more bits", "[summary]") {
+  const auto summary = [](const char* name, const char* chapter) {
+    AlgorithmSummary s;
+    s.algorithm = name;
+    s.chapter = chapter;
+    return s;
+  };
+  const std::vector<AlgorithmSummary> summaries{
+      summary("fixed_point_8", "07"),      summary("fixed_point_0", "07"),
+      summary("edge_function", "05"),      summary("fixed_point_4", "07"),
+      summary("barycentric_double", "06"), summary("barycentric_float", "06"),
+      summary("lonely_16", "08"),          summary("fixed_point_2", "08"),
+  };
+  const auto families = tri::ch09::precision_families(summaries);
+  REQUIRE(families.size() == 2);
+  CHECK(families[0] == std::vector<std::size_t>{1, 3, 0});
+  CHECK(families[1] == std::vector<std::size_t>{5, 4});
+}
