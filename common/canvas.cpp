@@ -23,8 +23,9 @@ void Canvas::fill_span(int y, int x_begin, int x_end, Color color) noexcept {
   }
   const int first = std::max(x_begin, 0);
   const int last = std::min(x_end, width_);
-  outside_writes_ += static_cast<std::uint64_t>(static_cast<std::int64_t>(x_end) - x_begin -
-                                                std::max(last - first, 0));
+  const auto clipped = static_cast<std::int64_t>(x_end) - x_begin - std::max(last - first, 0);
+  // Written only when nonzero: threads filling disjoint rows of one canvas then share no data.
+  if (clipped != 0) outside_writes_ += static_cast<std::uint64_t>(clipped);
   if (first >= last) return;
   const auto begin = pixels_.begin() + static_cast<std::ptrdiff_t>(index(first, y));
   std::fill(begin, begin + (last - first), color);

@@ -50,7 +50,8 @@ class Canvas {
   void put_pixel(glm::ivec2 p, Color color) noexcept { put_pixel(p.x, p.y, color); }
 
   /// Sets the pixels x_begin <= x < x_end of row y, clipped to the canvas (the fast path for
-  /// span-based rasterizers). Pixels cut off by the clip are counted in outside_writes().
+  /// span-based rasterizers). Pixels cut off by the clip are counted in outside_writes(). Threads
+  /// may fill disjoint rows of one canvas at once, as long as their spans lie inside it.
   void fill_span(int y, int x_begin, int x_end, Color color) noexcept;
 
   /// The colour of a pixel of the canvas (precondition: contains(x, y)).
