@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <fstream>
 #include <regex>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -93,6 +94,13 @@ TEST_CASE("raster --list prints one tab-separated line per registered algorithm"
     ++count;
   }
   CHECK(count == algorithms.size());
+}
+
+TEST_CASE("the registry lists the algorithms of every chapter that fills triangles") {
+  std::set<std::string> chapters;
+  for (const auto& a : tri::registered_algorithms()) chapters.emplace(a.chapter);
+  CHECK(chapters == std::set<std::string>{"03_interpolate_fill", "04_scanline", "05_edge_function",
+                                          "06_barycentric", "07_exact_coverage", "08_fast_exact"});
 }
 
 TEST_CASE("raster draws a scene's lines with chapter 01's Bresenham and writes PNG and counts") {

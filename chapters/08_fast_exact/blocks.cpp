@@ -1,0 +1,30 @@
+#include "blocks.hpp"
+
+#include <algorithm>
+#include <cstdint>
+
+#include "pixel_writers.hpp"
+
+namespace tri::ch08 {
+
+namespace {
+
+template <class Writer>
+void fill_blocks(const TriangleSetup& setup, Writer& writer) {
+  for_each_block_run(
+      setup,
+      [&](const ch07::PixelRange& run) {
+        for (int y = run.first_y; y <= run.last_y; ++y) writer.span(y, run.first_x, run.last_x + 1);
+      },
+      [&](const ch07::PixelRange& block) { fill_block_pixels(setup, block, writer); });
+}
+
+}  // namespace
+
+void draw_triangle_blocks_8x8(Canvas& canvas, const Triangle& triangle, Color color) {
+  const auto setup = setup_triangle(triangle, canvas.width(), canvas.height());
+  if (!setup) return;
+  with_writer(canvas, color, [&](auto& writer) { fill_blocks(*setup, writer); });
+}
+
+}  // namespace tri::ch08

@@ -1,0 +1,121 @@
+/// @file
+/// Step 4 · block-level accept/reject: the candidate pixels cut into 8x8 blocks, each decided
+/// from its corners as a whole (fully outside: skipped; fully inside: filled) and only the rest
+/// tested pixel by pixel.
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+
+#include "canvas.hpp"
+#include "color.hpp"
+#include "fixed_point.hpp"
+#include "incremental.hpp"
+#include "triangle_algorithm.hpp"
+#include "triangle_setup.hpp"
+
+namespace tri::ch08 {
+
+/// Side of a block in pixels.
+inline constexpr int block_size = 8;
+
+/// What a block of pixels is, as far as the triangle is concerned.
+enum class BlockCoverage {
+  outside,  ///< one edge fails on every pixel of the block: nothing to draw
+  inside,   ///< every edge passes on every pixel: fill it without testing
+  partial,  ///< neither: test its pixels
+};
+
+/// Classifies a rectangle of pixels within the setup's range. An edge value is linear in x and y,
+/// so over a rectangle it is smallest and largest at two of its corners, which the step signs
+/// name: exact integers, so "inside" and "outside" are never wrong, only "partial" is cautious
+/// (e.g. a block beyond a vertex that no single edge rejects).
+inline BlockCoverage classify_block(const TriangleSetup& setup,
+                                    const ch07::PixelRange& block) noexcept {
+  const std::int64_t dx = block.first_x - setup.range.first_x;
+  const std::int64_t dy = block.first_y - setup.range.first_y;
+  const std::int64_t width = block.last_x - block.first_x;
+  const std::int64_t height = block.last_y - block.first_y;
+  bool inside = true;
+  for (const EdgeFunction& edge : setup.edges) {
+    const std::int64_t corner = edge.at(dx, dy);
+    const std::int64_t across = edge.step_x * width, up = edge.step_y * height;
+    const std::int64_t largest =
+        corner + std::max<std::int64_t>(across, 0) + std::max<std::int64_t>(up, 0);
+    if (largest < 0) return BlockCoverage::outside;
+    const std::int64_t smallest =
+        corner + std::min<std::int64_t>(across, 0) + std::min<std::int64_t>(up, 0);
+    inside = inside && smallest >= 0;
+  }
+  return inside ? BlockCoverage::inside : BlockCoverage::partial;
+}
+
+/// Calls visit(block, coverage) for each block_size x block_size block of the setup's range (the
+/// last column and row of blocks clipped to the range), row of blocks by row of blocks from the
+/// bottom. Blocks start at the range's first pixel, so a triangle smaller than a block is one.
+template <class Visit>
+void for_each_block(const TriangleSetup& setup, Visit&& visit) {
+  const ch07::PixelRange& r = setup.range;
+  for (int y = r.first_y; y <= r.last_y; y += block_size) {
+    const int last_y = y + block_size - 1 < r.last_y ? y + block_size - 1 : r.last_y;
+    for (int x = r.first_x; x <= r.last_x; x += block_size) {
+      const int last_x = x + block_size - 1 < r.last_x ? x + block_size - 1 : r.last_x;
+      const ch07::PixelRange block{x, last_x, y, last_y};
+      visit(block, classify_block(setup, block));
+    }
+  }
+}
+
+/// for_each_block for drawing: each run of consecutive inside blocks of a row of blocks is handed
+/// over as one rectangle, fill_run(rectangle), so it is filled with long spans rather than block
+/// by block; each partial block goes to test_block(block); outside blocks to nobody.
+template <class FillRun, class TestBlock>
+void for_each_block_run(const TriangleSetup& setup, FillRun&& fill_run, TestBlock&& test_block) {
+  const ch07::PixelRange& r = setup.range;
+  for (int y = r.first_y; y <= r.last_y; y += block_size) {
+    const int last_y = y + block_size - 1 < r.last_y ? y + block_size - 1 : r.last_y;
+    int run_first_x = -1, run_last_x = -1;
+    for (int x = r.first_x; x <= r.last_x; x += block_size) {
+      const int last_x = x + block_size - 1 < r.last_x ? x + block_size - 1 : r.last_x;
+      const ch07::PixelRange block{x, last_x, y, last_y};
+      const BlockCoverage coverage = classify_block(setup, block);
+      if (coverage == BlockCoverage::inside) {
+        if (run_first_x < 0) run_first_x = x;
+        run_last_x = last_x;
+        continue;
+      }
+      if (run_first_x >= 0) fill_run(ch07::PixelRange{run_first_x, run_last_x, y, last_y});
+      run_first_x = -1;
+      if (coverage == BlockCoverage::partial) test_block(block);
+    }
+    if (run_first_x >= 0) fill_run(ch07::PixelRange{run_first_x, run_last_x, y, last_y});
+  }
+}
+
+/// The pixels of a partial block, each tested with step 2's one-branch test on incrementally
+/// updated edge values; writer.pixel(x, y) for the covered ones.
+template <class Writer>
+void fill_block_pixels(const TriangleSetup& setup, const ch07::PixelRange& block, Writer& writer) {
+  const std::int64_t dx = block.first_x - setup.range.first_x;
+  const std::int64_t dy = block.first_y - setup.range.first_y;
+  const auto& [e0, e1, e2] = setup.edges;
+  std::int64_t row0 = e0.at(dx, dy), row1 = e1.at(dx, dy), row2 = e2.at(dx, dy);
+  for (int y = block.first_y; y <= block.last_y; ++y) {
+    std::int64_t w0 = row0, w1 = row1, w2 = row2;
+    for (int x = block.first_x; x <= block.last_x; ++x) {
+      if (inside_all_edges(w0, w1, w2)) writer.pixel(x, y);
+      w0 += e0.step_x;
+      w1 += e1.step_x;
+      w2 += e2.step_x;
+    }
+    row0 += e0.step_y;
+    row1 += e1.step_y;
+    row2 += e2.step_y;
+  }
+}
+
+/// Step 4 · 8x8 blocks: skip the outside ones, fill runs of inside ones span by span, and test
+/// the pixels of the partial ones with step 2's incremental one-branch test.
+void draw_triangle_blocks_8x8(Canvas& canvas, const Triangle& triangle, Color color);
+
+}  // namespace tri::ch08

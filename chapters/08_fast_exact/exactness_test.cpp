@@ -1,0 +1,155 @@
+// Every variant of the chapter against the oracle (chapter 07), through the registry's entry.
+#include <catch2/catch.hpp>
+
+#include <array>
+#include <limits>
+#include <vector>
+
+#include "algorithms.hpp"
+#include "coverage_oracle.hpp"
+#include "fixed_point.hpp"
+#include "test_triangles.hpp"
+
+using tri::Canvas;
+using tri::Triangle;
+using tri::TriangleAlgorithm;
+
+namespace {
+
+constexpr std::array<std::array<int, 3>, 6> vertex_orders{
+    {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}, {0, 2, 1}, {2, 1, 0}, {1, 0, 2}}};
+
+Triangle reordered(const Triangle& t, const std::array<int, 3>& order) {
+  return {t[order[0]], t[order[1]], t[order[2]]};
+}
+
+// The canvas a draw function leaves, with write counts, on a background the colour never is.
+Canvas drawn_with_counts(tri::DrawTriangleFunction draw, const Triangle& t, int width, int height) {
+  Canvas canvas(width, height, tri::Color{9, 9, 9, 255});
+  canvas.enable_write_counts();
+  draw(canvas, t, tri::colors::white);
+  return canvas;
+}
+
+// The same without counting: the direct row writes.
+Canvas drawn(tri::DrawTriangleFunction draw, const Triangle& t, int width, int height) {
+  Canvas canvas(width, height, tri::Color{9, 9, 9, 255});
+  draw(canvas, t, tri::colors::white);
+  return canvas;
+}
+
+bool same_counts(const Canvas& a, const Canvas& b) {
+  return std::equal(a.write_counts().begin(), a.write_counts().end(), b.write_counts().begin(),
+                    b.write_counts().end());
+}
+
+bool same_colors(const Canvas& a, const Canvas& b) {
+  return std::equal(a.pixels().begin(), a.pixels().end(), b.pixels().begin(), b.pixels().end());
+}
+
+}  // namespace
+
+TEST_CASE("the chapter registers seven exact variants under stable names") {
+  const auto algorithms = tri::ch08::triangle_algorithms();
+  REQUIRE(algorithms.size() == 7);
+  const char* names[] = {"fast_incremental", "fast_all_edges", "fast_spans",   "fast_blocks_8x8",
+                         "fast_simd",        "fast_hybrid",    "fast_threaded"};
+  for (std::size_t i = 0; i < algorithms.size(); ++i) {
+    CHECK(algorithms[i].name == names[i]);
+    CHECK(algorithms[i].chapter == "08_fast_exact");
+    CHECK(algorithms[i].rule == tri::CoverageRule::top_left);
+    CHECK(algorithms[i].threaded == (algorithms[i].name == "fast_threaded"));
+  }
+}
+
+TEST_CASE("every variant draws exactly the oracle's pixels on 1/256-grid triangles") {
+  // All shapes (tiny to huge, slivers, pixel-centre ties, far and ±2^30 vertices), all six vertex
+  // orders (both windings), on canvases whose sides are not multiples of 8 or 16.
+  tri::testing::Random random(2024);
+  for (int i = 0; i < 1400; ++i) {
+    const int width = i % 2 == 0 ? 45 : 21, height = i % 3 == 0 ? 37 : 19;
+    const Triangle t =
+        tri::ch08::testing::random_triangle(random, tri::ch08::testing::shape_number(i), 40);
+    const Canvas truth = drawn_with_counts(tri::ch07::draw_triangle_oracle, t, width, height);
+    const Canvas truth_colors = drawn(tri::ch07::draw_triangle_oracle, t, width, height);
+    for (const TriangleAlgorithm& algorithm : tri::ch08::triangle_algorithms()) {
+      for (const auto& order : vertex_orders) {
+        const Triangle u = reordered(t, order);
+        INFO(algorithm.name << ", triangle " << i << ": " << u[0].x << "," << u[0].y << " "
+                            << u[1].x << "," << u[1].y << " " << u[2].x << "," << u[2].y);
+        const Canvas counted = drawn_with_counts(algorithm.draw, u, width, height);
+        REQUIRE(counted.outside_writes() == 0);
+        REQUIRE(same_counts(counted, truth));
+        const Canvas plain = drawn(algorithm.draw, u, width, height);
+        REQUIRE(plain.outside_writes() == 0);
+        REQUIRE(same_colors(plain, truth_colors));
+      }
+    }
+  }
+}
+
+TEST_CASE("on arbitrary doubles every variant snaps exactly as chapter 07's fixed_point_8") {
+  tri::testing::Random random(77);
+  for (int i = 0; i < 1500; ++i) {
+    Triangle t;
+    for (auto& v : t) v = {random.real(-6, 38), random.real(-6, 38)};
+    const Canvas reference = drawn_with_counts(tri::ch07::draw_triangle_fixed_point_8, t, 33, 33);
+    for (const TriangleAlgorithm& algorithm : tri::ch08::triangle_algorithms()) {
+      INFO(algorithm.name << ", triangle " << i);
+      REQUIRE(same_counts(drawn_with_counts(algorithm.draw, t, 33, 33), reference));
+    }
+  }
+}
+
+TEST_CASE("every variant is safe on degenerate, tiny-canvas and refused input") {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double far = 1073741824.0;
+  const std::vector<Triangle> cases{
+      {{{0, 0}, {0, 0}, {0, 0}}},
+      {{{1, 1}, {9, 9}, {5, 5}}},
+      {{{0, 3}, {7, 3}, {3, 3}}},
+      {{{1e7, 1e7}, {-1e7, 1e7}, {0, -1e7}}},
+      {{{-far, -far}, {far, -far}, {0, far}}},
+      {{{-far, far}, {far, far}, {far, -far}}},
+      {{{0.5, 0.5}, {0.5, 0.5}, {0.75, 0.5}}},
+      {{{-3, -3}, {-1, -3}, {-2, -1}}},
+  };
+  for (const TriangleAlgorithm& algorithm : tri::ch08::triangle_algorithms()) {
+    for (const int size : {1, 3, 8, 9}) {
+      for (const Triangle& t : cases) {
+        INFO(algorithm.name << " on a " << size << "x" << size << " canvas");
+        const Canvas truth = drawn_with_counts(tri::ch07::draw_triangle_oracle, t, size, size + 2);
+        const Canvas counted = drawn_with_counts(algorithm.draw, t, size, size + 2);
+        CHECK(counted.outside_writes() == 0);
+        CHECK(same_counts(counted, truth));
+      }
+    }
+    Canvas canvas(8, 8);
+    canvas.enable_write_counts();
+    CHECK(tri::draw_triangle(algorithm, canvas, {{{0, 0}, {7, 0}, {nan, 7}}}, tri::colors::white) ==
+          tri::DrawResult::rejected_non_finite);
+    CHECK(tri::testing::written_pixels(canvas).empty());
+  }
+}
+
+TEST_CASE("batches through the registry's entry point equal drawing one by one") {
+  // fast_hybrid and fast_threaded have batch entries; draw_triangles uses them.
+  tri::testing::Random random(31);
+  std::vector<tri::SceneTriangle> scene;
+  for (int i = 0; i < 300; ++i) {
+    scene.push_back(
+        {tri::ch08::testing::random_triangle(random, tri::ch08::testing::shape_number(i), 50),
+         tri::Color{static_cast<std::uint8_t>(i), 100, 200, 255}});
+  }
+  for (const TriangleAlgorithm& algorithm : tri::ch08::triangle_algorithms()) {
+    INFO(algorithm.name);
+    Canvas batch(50, 47), one_by_one(50, 47);
+    batch.enable_write_counts();
+    one_by_one.enable_write_counts();
+    CHECK(tri::draw_triangles(algorithm, batch, scene) == 0);
+    for (const auto& t : scene) tri::ch07::draw_triangle_oracle(one_by_one, t.vertices, t.color);
+    CHECK(same_colors(batch, one_by_one));
+    CHECK(same_counts(batch, one_by_one));
+    CHECK(batch.outside_writes() == 0);
+  }
+}

@@ -1,0 +1,22 @@
+// The repository's hard cases (tests/hard_cases) run on this chapter's variants here as well, so
+// that `ctest -R 08_fast_exact` alone shows whether a change to the chapter broke one.
+#include <catch2/catch.hpp>
+
+#include "algorithms.hpp"
+#include "hard_cases.hpp"
+
+TEST_CASE("every variant of the chapter is safe and exact on every hard case") {
+  for (const auto& algorithm : tri::ch08::triangle_algorithms()) {
+    for (const auto& c : tri::hard_cases::all_cases()) {
+      INFO(algorithm.name << " on " << c.name);
+      const auto outcome = tri::hard_cases::run_case(algorithm, c);
+      CHECK(outcome.safe);
+      CHECK(outcome.error.outside_writes == 0);
+      CHECK(outcome.error.missed == 0);
+      CHECK(outcome.error.extra == 0);
+      CHECK(outcome.error.gaps == 0);
+      CHECK(outcome.error.overdraw == 0);
+      CHECK(outcome.error.order_dependent == 0);
+    }
+  }
+}

@@ -1,0 +1,51 @@
+#include "hybrid.hpp"
+
+#include "simd.hpp"
+#include "spans.hpp"
+
+namespace tri::ch08 {
+namespace {
+
+template <class Writer>
+void fill_hybrid_with(const TriangleSetup& setup, Writer& writer) {
+  if (fits_one_block(setup)) {
+    fill_simd(setup, writer);
+  } else {
+    fill_spans(setup, writer);
+  }
+}
+
+template <class Writer>
+void draw_batch_with(Canvas& canvas, std::span<const SceneTriangle> triangles) {
+  for (const SceneTriangle& triangle : triangles) {
+    const auto setup = setup_triangle(triangle.vertices, canvas.width(), canvas.height());
+    if (!setup) continue;
+    Writer writer(canvas, triangle.color);
+    fill_hybrid_with(*setup, writer);
+  }
+}
+
+}  // namespace
+
+void fill_hybrid(const TriangleSetup& setup, RowWriter& writer) {
+  fill_hybrid_with(setup, writer);
+}
+void fill_hybrid(const TriangleSetup& setup, CountingWriter& writer) {
+  fill_hybrid_with(setup, writer);
+}
+
+void draw_triangle_hybrid(Canvas& canvas, const Triangle& triangle, Color color) {
+  const auto setup = setup_triangle(triangle, canvas.width(), canvas.height());
+  if (!setup) return;
+  with_writer(canvas, color, [&](auto& writer) { fill_hybrid(*setup, writer); });
+}
+
+void draw_batch_hybrid(Canvas& canvas, std::span<const SceneTriangle> triangles) {
+  if (canvas.write_counts_enabled()) {
+    draw_batch_with<CountingWriter>(canvas, triangles);
+  } else {
+    draw_batch_with<RowWriter>(canvas, triangles);
+  }
+}
+
+}  // namespace tri::ch08

@@ -1,0 +1,29 @@
+/// @file
+/// Step 6 · choosing per triangle: step 5's eight-lane test for triangles within one block, step
+/// 3's spans for everything larger; the best serial variant, and what each thread of step 7 runs.
+#pragma once
+
+#include <span>
+
+#include "canvas.hpp"
+#include "color.hpp"
+#include "pixel_writers.hpp"
+#include "scene.hpp"
+#include "triangle_algorithm.hpp"
+#include "triangle_setup.hpp"
+
+namespace tri::ch08 {
+
+/// Draws a prepared triangle: fill_simd when it fits one block (fits_one_block), else
+/// fill_spans.
+void fill_hybrid(const TriangleSetup& setup, RowWriter& writer);
+void fill_hybrid(const TriangleSetup& setup, CountingWriter& writer);
+
+/// Step 6 · one triangle: setup, then fill_hybrid.
+void draw_triangle_hybrid(Canvas& canvas, const Triangle& triangle, Color color);
+
+/// Step 6 · a whole batch on the calling thread: draw_triangle_hybrid for each triangle in order,
+/// with the writer chosen once instead of per triangle.
+void draw_batch_hybrid(Canvas& canvas, std::span<const SceneTriangle> triangles);
+
+}  // namespace tri::ch08

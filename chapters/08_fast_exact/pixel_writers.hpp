@@ -1,0 +1,94 @@
+/// @file
+/// The two ways the fast variants put pixels on the canvas: straight into its rows (the fast
+/// path), or through put_pixel when the canvas counts writes (tests and error measurement). The
+/// variants decide which pixels to write once and are templated on the writer, so both paths
+/// write exactly the same pixels.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cstdint>
+#include <cstring>
+
+#include "canvas.hpp"
+#include "color.hpp"
+
+namespace tri::ch08 {
+
+static_assert(sizeof(Color) == sizeof(std::uint32_t), "a pixel is one 32-bit word");
+
+/// Fills count pixels from first with one colour word, 8 (or 4) pixels per store: the last
+/// store of a span overlaps the one before instead of finishing pixel by pixel. GCC 12 compiles
+/// std::fill over Color (canvas.cpp) into one 4-byte store per pixel (see the README).
+inline void fill_pixels(Color* first, int count,
+                        const std::array<std::uint32_t, 8>& words) noexcept {
+  if (count >= 8) {
+    int i = 0;
+    for (; i + 8 <= count; i += 8) std::memcpy(first + i, words.data(), 32);
+    if (i < count) std::memcpy(first + count - 8, words.data(), 32);
+  } else if (count >= 4) {
+    std::memcpy(first, words.data(), 16);
+    std::memcpy(first + count - 4, words.data(), 16);
+  } else {
+    for (int i = 0; i < count; ++i) std::memcpy(first + i, words.data(), 4);
+  }
+}
+
+/// Writes into Canvas::row, with no per-pixel bounds or counter checks. Callers pass only
+/// pixels of the canvas. Safe for threads that write disjoint rows.
+class RowWriter {
+ public:
+  RowWriter(Canvas& canvas, Color color) noexcept : canvas_(canvas), color_(color) {
+    words_.fill(std::bit_cast<std::uint32_t>(color));
+  }
+
+  /// Pixels x_begin <= x < x_end of row y.
+  void span(int y, int x_begin, int x_end) noexcept {
+    fill_pixels(canvas_.row(y).data() + x_begin, x_end - x_begin, words_);
+  }
+  void pixel(int x, int y) noexcept { canvas_.row(y)[static_cast<std::size_t>(x)] = color_; }
+
+  /// For code that writes rows itself (step 5's blends): row y's first pixel, the canvas width
+  /// and the colour as a 32-bit word.
+  Color* row_pixels(int y) noexcept { return canvas_.row(y).data(); }
+  int width() const noexcept { return canvas_.width(); }
+  std::uint32_t word() const noexcept { return words_[0]; }
+
+ private:
+  Canvas& canvas_;
+  Color color_;
+  std::array<std::uint32_t, 8> words_;
+};
+
+/// Writes through Canvas::put_pixel so that every write is counted. Slow, and only used while the
+/// canvas counts writes. Touches nothing shared between rows (put_pixel of a canvas pixel changes
+/// only that pixel and its counter), so it is safe for threads that write disjoint rows.
+class CountingWriter {
+ public:
+  CountingWriter(Canvas& canvas, Color color) noexcept : canvas_(canvas), color_(color) {}
+
+  void span(int y, int x_begin, int x_end) noexcept {
+    for (int x = x_begin; x < x_end; ++x) canvas_.put_pixel(x, y, color_);
+  }
+  void pixel(int x, int y) noexcept { canvas_.put_pixel(x, y, color_); }
+  int width() const noexcept { return canvas_.width(); }
+
+ private:
+  Canvas& canvas_;
+  Color color_;
+};
+
+/// Calls draw(writer) with the writer that suits the canvas: counting when it counts writes.
+template <class Draw>
+void with_writer(Canvas& canvas, Color color, Draw&& draw) {
+  if (canvas.write_counts_enabled()) {
+    CountingWriter writer(canvas, color);
+    draw(writer);
+  } else {
+    RowWriter writer(canvas, color);
+    draw(writer);
+  }
+}
+
+}  // namespace tri::ch08

@@ -1,0 +1,107 @@
+#include "spans.hpp"
+
+#include <algorithm>
+
+namespace tri::ch08 {
+
+RowSpan row_span(const TriangleSetup& setup, int y) noexcept {
+  const ch07::PixelRange& r = setup.range;
+  if (y < r.first_y || y > r.last_y) return {r.first_x, r.first_x - 1};
+  std::int64_t first = 0, last = r.last_x - r.first_x;
+  for (const EdgeFunction& edge : setup.edges) {
+    const std::int64_t w = edge.at(0, y - r.first_y);
+    if (edge.step_x > 0) {
+      first = std::max(first, -floor_div(w, edge.step_x));
+    } else if (edge.step_x < 0) {
+      last = std::min(last, floor_div(w, -edge.step_x));
+    } else if (w < 0) {
+      last = -1;
+    }
+  }
+  if (first > last) return {r.first_x, r.first_x - 1};
+  return {r.first_x + static_cast<int>(first), r.first_x + static_cast<int>(last)};
+}
+
+namespace {
+
+// Beyond any pixel offset of a canvas: a right bound that never binds.
+constexpr std::int64_t never_binding_right = std::int64_t{1} << 62;
+
+}  // namespace
+
+SpanWalker::SpanWalker(const TriangleSetup& setup) noexcept
+    : first_x_(setup.range.first_x), last_dx_(setup.range.last_x - setup.range.first_x) {
+  const ch07::PixelRange& r = setup.range;
+  // Rows (offsets from first_y) where every horizontal edge passes: w + step_y * k >= 0.
+  std::int64_t first_k = 0, last_k = r.last_y - r.first_y;
+  for (const EdgeFunction& e : setup.edges) {
+    if (e.step_x != 0) continue;
+    if (e.step_y > 0) {
+      first_k = std::max(first_k, -floor_div(e.value, e.step_y));
+    } else if (e.step_y < 0) {
+      last_k = std::min(last_k, floor_div(e.value, -e.step_y));
+    } else if (e.value < 0) {
+      last_k = -1;
+    }
+  }
+  if (first_k > last_k) {
+    first_row_ = r.first_y;
+    last_row_ = r.first_y - 1;
+    first_k = 0;
+  } else {
+    first_row_ = r.first_y + static_cast<int>(first_k);
+    last_row_ = r.first_y + static_cast<int>(last_k);
+  }
+  // A slot with quotient 0 and no steps never binds: from the left it allows first >= 0, from
+  // the right last <= 0 would, so an unused third slot counts as "from the left".
+  bounds_ = {{{0, 0, 1, 0, 0}, {never_binding_right, 0, 1, 0, 0}, {0, 0, 1, 0, 0}}};
+  third_from_left_ = true;
+  bool have_left = false, have_right = false;
+  for (const EdgeFunction& e : setup.edges) {
+    if (e.step_x == 0) continue;
+    const std::int64_t w = e.at(0, first_k);
+    const std::int64_t s = e.step_x > 0 ? e.step_x : -e.step_x;
+    const std::int64_t q = floor_div(w, s);
+    const std::int64_t dq = floor_div(e.step_y, s);
+    const Bound bound{q, w - s * q, s, dq, e.step_y - s * dq};
+    const bool from_left = e.step_x > 0;
+    if (from_left && !have_left) {
+      bounds_[0] = bound;
+      have_left = true;
+    } else if (!from_left && !have_right) {
+      bounds_[1] = bound;
+      have_right = true;
+    } else {
+      bounds_[2] = bound;
+      third_from_left_ = from_left;
+    }
+  }
+}
+
+namespace {
+
+template <class Writer>
+void fill_spans_with(const TriangleSetup& setup, Writer& writer) {
+  SpanWalker walker(setup);
+  for (int y = walker.first_row(); y <= walker.last_row(); ++y, walker.next_row()) {
+    const RowSpan s = walker.span();
+    if (!s.empty()) writer.span(y, s.first, s.last + 1);
+  }
+}
+
+}  // namespace
+
+void fill_spans(const TriangleSetup& setup, RowWriter& writer) {
+  fill_spans_with(setup, writer);
+}
+void fill_spans(const TriangleSetup& setup, CountingWriter& writer) {
+  fill_spans_with(setup, writer);
+}
+
+void draw_triangle_spans(Canvas& canvas, const Triangle& triangle, Color color) {
+  const auto setup = setup_triangle(triangle, canvas.width(), canvas.height());
+  if (!setup) return;
+  with_writer(canvas, color, [&](auto& writer) { fill_spans(*setup, writer); });
+}
+
+}  // namespace tri::ch08

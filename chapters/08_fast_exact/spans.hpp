@@ -1,0 +1,106 @@
+/// @file
+/// Step 3 · span traversal: per row, the first and last covered pixel follow exactly from the
+/// three edges, and the pixels between them are filled without any per-pixel test.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+
+#include "canvas.hpp"
+#include "color.hpp"
+#include "pixel_writers.hpp"
+#include "triangle_algorithm.hpp"
+#include "triangle_setup.hpp"
+
+namespace tri::ch08 {
+
+/// The covered pixels first..last (inclusive) of one row; empty when first > last.
+struct RowSpan {
+  int first;
+  int last;
+  bool empty() const noexcept { return first > last; }
+  friend bool operator==(const RowSpan&, const RowSpan&) = default;
+};
+
+/// floor(a / b) for b > 0 and any sign of a (C++ division truncates toward zero instead).
+constexpr std::int64_t floor_div(std::int64_t a, std::int64_t b) noexcept {
+  const std::int64_t q = a / b;
+  return (a % b != 0 && a < 0) ? q - 1 : q;
+}
+
+/// The covered pixels of row y (within the setup's range), computed directly: each edge is
+/// w(dx) = w_row + step_x * dx >= 0, so an edge whose value grows to the right allows
+/// dx >= ceil(-w_row / step_x) = -floor(w_row / step_x), one whose value shrinks allows
+/// dx <= floor(w_row / -step_x), and a horizontal one (step_x == 0) allows all or nothing. Three
+/// divisions per row: the reference the walker is tested against. Empty for an empty row.
+RowSpan row_span(const TriangleSetup& setup, int y) noexcept;
+
+/// The spans of successive rows, bottom to top, without any division per row. For each sloped
+/// edge it keeps q = floor(w_row / s) (s = |step_x|) and the remainder w_row - s * q in [0, s);
+/// a row adds step_y = dq * s + dr to w_row, so q grows by dq, the remainder by dr, and by one
+/// more when the remainder reaches s. Exact, like Bresenham's error term.
+///
+/// An edge whose value grows to the right bounds a span from the left (first = -q), one shrinking
+/// bounds it from the right (last = q). The three steps in x sum to zero (they are the vertex
+/// height differences around the triangle), so one edge grows and one shrinks, and the third goes
+/// either way: the walker keeps three slots and a flag for the third, no branch per row. A
+/// horizontal edge (step_x == 0) bounds rows instead of pixels, so it only narrows the rows
+/// walked, and its slot holds a bound that never binds.
+class SpanWalker {
+ public:
+  explicit SpanWalker(const TriangleSetup& setup) noexcept;
+
+  /// The rows where a span can be non-empty: every horizontal edge passes there. The range's
+  /// other rows are empty. first_row() > last_row() when there is none.
+  int first_row() const noexcept { return first_row_; }
+  int last_row() const noexcept { return last_row_; }
+
+  /// The span of the current row (starting with first_row()).
+  RowSpan span() const noexcept {
+    const std::int64_t third = bounds_[2].quotient;
+    const std::int64_t first =
+        std::max({std::int64_t{0}, -bounds_[0].quotient, third_from_left_ ? -third : 0});
+    const std::int64_t last =
+        std::min({last_dx_, bounds_[1].quotient, third_from_left_ ? last_dx_ : third});
+    if (first > last) return {first_x_, first_x_ - 1};
+    return {first_x_ + static_cast<int>(first), first_x_ + static_cast<int>(last)};
+  }
+
+  /// Moves to the next row up.
+  void next_row() noexcept {
+    for (Bound& b : bounds_) {
+      b.quotient += b.quotient_step;
+      b.remainder += b.remainder_step;
+      // Branch-free carry: the remainder stays in [0, divisor).
+      const bool carry = b.remainder >= b.divisor;
+      b.quotient += carry;
+      b.remainder -= carry ? b.divisor : 0;
+    }
+  }
+
+ private:
+  struct Bound {
+    std::int64_t quotient;   // floor(w_row / s)
+    std::int64_t remainder;  // w_row - s * quotient, in [0, s)
+    std::int64_t divisor;    // s = |step_x|
+    std::int64_t quotient_step;
+    std::int64_t remainder_step;
+  };
+  std::array<Bound, 3> bounds_;  // [0] from the left, [1] from the right, [2] either
+  bool third_from_left_;
+  int first_x_;
+  std::int64_t last_dx_;
+  int first_row_;
+  int last_row_;
+};
+
+/// Draws a prepared triangle the way draw_triangle_spans does, through either writer.
+void fill_spans(const TriangleSetup& setup, RowWriter& writer);
+void fill_spans(const TriangleSetup& setup, CountingWriter& writer);
+
+/// Step 3 · span traversal: setup, then one filled span per row from SpanWalker. A sliver costs
+/// its rows, not its bounding box.
+void draw_triangle_spans(Canvas& canvas, const Triangle& triangle, Color color);
+
+}  // namespace tri::ch08

@@ -1,0 +1,109 @@
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "spans.hpp"
+#include "test_triangles.hpp"
+
+using tri::Triangle;
+using tri::ch08::RowSpan;
+
+TEST_CASE("floor_div rounds toward minus infinity for every sign") {
+  using tri::ch08::floor_div;
+  CHECK(floor_div(7, 2) == 3);
+  CHECK(floor_div(-7, 2) == -4);
+  CHECK(floor_div(-8, 2) == -4);
+  CHECK(floor_div(0, 5) == 0);
+  CHECK(floor_div(-1, 1000000) == -1);
+  CHECK(floor_div(std::int64_t{1} << 61, 3) == ((std::int64_t{1} << 61) / 3));
+  tri::testing::Random random(17);
+  for (int i = 0; i < 100000; ++i) {
+    const std::int64_t a = random.integer(-1000000, 1000000);
+    const std::int64_t b = random.integer(1, 1000);
+    REQUIRE(floor_div(a, b) ==
+            static_cast<std::int64_t>(std::floor(static_cast<double>(a) / static_cast<double>(b))));
+  }
+}
+
+TEST_CASE("a row's span ends are exact: covered inside, uncovered just beyond, nothing else") {
+  tri::testing::Random random(21);
+  for (int i = 0; i < 3000; ++i) {
+    const Triangle t =
+        tri::ch08::testing::random_triangle(random, tri::ch08::testing::shape_number(i), 40);
+    const auto setup = tri::ch08::setup_triangle(t, 40, 37);
+    if (!setup) continue;
+    const auto& r = setup->range;
+    for (int y = r.first_y; y <= r.last_y; ++y) {
+      const RowSpan span = tri::ch08::row_span(*setup, y);
+      for (int x = r.first_x; x <= r.last_x; ++x) {
+        INFO("triangle " << i << " pixel " << x << "," << y);
+        REQUIRE(setup->covers(x, y) == (x >= span.first && x <= span.last));
+      }
+      if (!span.empty()) {
+        CHECK(span.first >= r.first_x);
+        CHECK(span.last <= r.last_x);
+      }
+    }
+  }
+}
+
+TEST_CASE("a horizontal edge limits the rows the walker visits") {
+  // A bottom edge exactly on row 3 is not top-left: the walker starts one row higher.
+  const auto bottom = tri::ch08::setup_triangle({{{2, 3}, {12, 3}, {7, 9}}}, 16, 16);
+  REQUIRE(bottom);
+  CHECK(bottom->range.first_y == 3);
+  const tri::ch08::SpanWalker from_above(*bottom);
+  CHECK(from_above.first_row() == 4);
+  CHECK(from_above.last_row() == 9);
+  // A top edge exactly on row 9 is top-left: its row is walked.
+  const auto top = tri::ch08::setup_triangle({{{2, 9}, {12, 9}, {7, 3}}}, 16, 16);
+  REQUIRE(top);
+  const tri::ch08::SpanWalker to_the_top(*top);
+  CHECK(to_the_top.first_row() == 3);
+  CHECK(to_the_top.last_row() == 9);
+}
+
+TEST_CASE("the division-free walker gives the direct span on every row") {
+  tri::testing::Random random(22);
+  for (int i = 0; i < 3000; ++i) {
+    const Triangle t =
+        tri::ch08::testing::random_triangle(random, tri::ch08::testing::shape_number(i), 64);
+    const auto setup = tri::ch08::setup_triangle(t, 64, 61);
+    if (!setup) continue;
+    tri::ch08::SpanWalker walker(*setup);
+    // Rows a horizontal edge excludes are skipped: their direct spans are empty.
+    for (int y = setup->range.first_y; y <= setup->range.last_y; ++y) {
+      if (y < walker.first_row() || y > walker.last_row()) {
+        INFO("triangle " << i << " row " << y << " skipped");
+        REQUIRE(tri::ch08::row_span(*setup, y).empty());
+      }
+    }
+    for (int y = walker.first_row(); y <= walker.last_row(); ++y, walker.next_row()) {
+      const RowSpan direct = tri::ch08::row_span(*setup, y);
+      const RowSpan walked = walker.span();
+      INFO("triangle " << i << " row " << y);
+      REQUIRE(walked.empty() == direct.empty());
+      if (!direct.empty()) REQUIRE(walked == direct);
+    }
+  }
+}
+
+TEST_CASE("a sliver costs its rows: one short span per row instead of its bounding box") {
+  // A needle from (2, 3) to (60, 40), a quarter of a pixel thick: a 59 x 38 bounding box.
+  const Triangle sliver{{{2, 3}, {60, 40}, {31, 21.75}}};
+  const auto setup = tri::ch08::setup_triangle(sliver, 64, 64);
+  REQUIRE(setup);
+  int rows = 0, pixels = 0, covered = 0;
+  tri::ch08::SpanWalker walker(*setup);
+  for (int y = walker.first_row(); y <= walker.last_row(); ++y, walker.next_row()) {
+    ++rows;
+    const RowSpan s = walker.span();
+    if (!s.empty()) pixels += s.last - s.first + 1;
+    CHECK(s.last - s.first + 1 <= 2);
+    for (int x = setup->range.first_x; x <= setup->range.last_x; ++x)
+      covered += setup->covers(x, y);
+  }
+  CHECK(rows == 38);
+  CHECK(pixels == covered);
+  CHECK(pixels > 0);
+}

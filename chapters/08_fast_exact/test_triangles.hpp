@@ -1,0 +1,90 @@
+/// @file
+/// Seeded triangles on the 1/256 grid for chapter 08's tests (tests only): every size from
+/// sub-pixel to canvas-covering, slivers, vertices far off the canvas, and pixel-grid ties.
+#pragma once
+
+#include <cmath>
+
+#include "pixels.hpp"
+#include "triangle_algorithm.hpp"
+
+namespace tri::ch08::testing {
+
+/// A coordinate on the 1/256 grid in [low, high).
+inline double grid_coordinate(tri::testing::Random& random, double low, double high) {
+  return std::floor(random.real(low, high) * 256) / 256;
+}
+
+/// The kinds of triangle the exactness tests cycle through.
+enum class Shape { tiny, small, medium, large, sliver, integer, far, huge, count };
+
+/// A triangle of the given shape near a size x size canvas (partly off it at times), with
+/// vertices on the 1/256 grid.
+inline Triangle random_triangle(tri::testing::Random& random, Shape shape, int size) {
+  const double cx = random.real(-4, size + 4), cy = random.real(-4, size + 4);
+  const auto around = [&](double extent) {
+    Triangle t;
+    for (auto& v : t) {
+      v = {grid_coordinate(random, cx - extent, cx + extent),
+           grid_coordinate(random, cy - extent, cy + extent)};
+    }
+    return t;
+  };
+  switch (shape) {
+    case Shape::tiny:
+      return around(1.5);
+    case Shape::small:
+      return around(5);
+    case Shape::medium:
+      return around(20);
+    case Shape::large:
+      return around(2.0 * size);
+    case Shape::sliver: {
+      // Two far-apart vertices and a third within half a pixel of their line.
+      const Triangle t = around(size);
+      const double s = random.real(0.2, 0.8);
+      const glm::dvec2 on_line = t[0] + s * (t[1] - t[0]);
+      return {t[0],
+              t[1],
+              {std::round((on_line.x + random.real(-0.5, 0.5)) * 256) / 256,
+               std::round((on_line.y + random.real(-0.5, 0.5)) * 256) / 256}};
+    }
+    case Shape::integer: {
+      // Vertices on pixel centres: many edges pass exactly through centres (top-left ties).
+      Triangle t;
+      for (auto& v : t) {
+        v = {std::round(cx + random.real(-12, 12)), std::round(cy + random.real(-12, 12))};
+      }
+      return t;
+    }
+    case Shape::far: {
+      // Two vertices up to 2^21 pixels away: still within chapter 07's 64-bit budget or just out.
+      Triangle t = around(6);
+      t[1] = {std::round(random.real(-2097152.0, 2097152.0)), t[1].y};
+      t[2] = {t[2].x, std::round(random.real(-2097152.0, 2097152.0))};
+      return t;
+    }
+    case Shape::huge: {
+      // Vertices anywhere within ±2^30: the 128-bit setup and its clamped edges.
+      Triangle t;
+      for (auto& v : t) {
+        v = {std::round(random.real(-1073741824.0, 1073741824.0)),
+             std::round(random.real(-1073741824.0, 1073741824.0))};
+      }
+      if (random.integer(0, 1) == 0) {
+        t[0] = {grid_coordinate(random, 0, size), grid_coordinate(random, 0, size)};
+      }
+      return t;
+    }
+    case Shape::count:
+      break;
+  }
+  return around(1);
+}
+
+/// The i-th shape of the cycle.
+inline Shape shape_number(int i) {
+  return static_cast<Shape>(i % static_cast<int>(Shape::count));
+}
+
+}  // namespace tri::ch08::testing

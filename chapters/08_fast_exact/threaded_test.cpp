@@ -1,0 +1,101 @@
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <vector>
+
+#include "hybrid.hpp"
+#include "test_triangles.hpp"
+#include "threaded.hpp"
+
+using tri::Canvas;
+using tri::SceneTriangle;
+
+namespace {
+
+// Overlapping triangles of every shape in many colours: a later one paints over earlier ones, so
+// any change of order shows in the colours.
+std::vector<SceneTriangle> overlapping_scene(std::uint64_t seed, int count, int size) {
+  tri::testing::Random random(seed);
+  std::vector<SceneTriangle> scene;
+  for (int i = 0; i < count; ++i) {
+    scene.push_back(
+        {tri::ch08::testing::random_triangle(random, tri::ch08::testing::shape_number(i), size),
+         tri::Color{static_cast<std::uint8_t>(random.integer(0, 255)),
+                    static_cast<std::uint8_t>(random.integer(0, 255)),
+                    static_cast<std::uint8_t>(i % 256), 255}});
+  }
+  return scene;
+}
+
+bool same_canvas(const Canvas& a, const Canvas& b) {
+  return std::equal(a.pixels().begin(), a.pixels().end(), b.pixels().begin(), b.pixels().end()) &&
+         std::equal(a.write_counts().begin(), a.write_counts().end(), b.write_counts().begin(),
+                    b.write_counts().end());
+}
+
+}  // namespace
+
+TEST_CASE("bands are 16 to 64 rows, about four per thread, dealt to the threads in turn") {
+  using tri::ch08::bands_for;
+  CHECK(bands_for(512, 2).rows == 64);
+  CHECK(bands_for(512, 4).rows == 32);
+  CHECK(bands_for(512, 8).rows == 16);
+  CHECK(bands_for(512, 64).rows == 16);
+  CHECK(bands_for(4096, 2).rows == 64);
+  CHECK(bands_for(45, 2).rows == 16);
+  CHECK(bands_for(200, 3).rows == 16);  // 200 / 12 = 16.7, a multiple of 8 below
+  const tri::ch08::Bands two{64, 2};
+  CHECK(two.owner(0) == 0);
+  CHECK(two.owner(63) == 0);
+  CHECK(two.owner(64) == 1);
+  CHECK(two.owner(128) == 0);
+  CHECK(tri::ch08::Bands{16, 3}.owner(47) == 2);
+}
+
+TEST_CASE("the threaded batch equals the serial one pixel for pixel, colours and write counts") {
+  for (const auto& [width, height] : {std::pair{50, 45}, std::pair{64, 64}, std::pair{13, 100}}) {
+    const auto scene = overlapping_scene(static_cast<std::uint64_t>(width * height), 400, 48);
+    for (const bool counting : {true, false}) {
+      Canvas serial(width, height);
+      if (counting) serial.enable_write_counts();
+      tri::ch08::draw_batch_hybrid(serial, scene);
+      for (const int threads : {1, 2, 3, 4, 7, 100}) {
+        INFO(width << "x" << height << ", " << threads << " threads, counting " << counting);
+        Canvas threaded(width, height);
+        if (counting) threaded.enable_write_counts();
+        tri::ch08::draw_batch_on_threads(threaded, scene, threads);
+        CHECK(threaded.outside_writes() == 0);
+        CHECK(same_canvas(threaded, serial));
+      }
+      Canvas hardware(width, height);
+      if (counting) hardware.enable_write_counts();
+      tri::ch08::draw_batch_threaded(hardware, scene);
+      CHECK(same_canvas(hardware, serial));
+    }
+  }
+}
+
+TEST_CASE("each thread writes only the rows of its own bands, and together they write all") {
+  const auto scene = overlapping_scene(9, 300, 60);
+  Canvas serial(60, 70);
+  serial.enable_write_counts();
+  tri::ch08::draw_batch_hybrid(serial, scene);
+  for (const int threads : {2, 3}) {
+    std::vector<std::uint32_t> total(serial.write_counts().size(), 0);
+    for (int thread = 0; thread < threads; ++thread) {
+      Canvas part(60, 70);
+      part.enable_write_counts();
+      tri::ch08::draw_bands_of_thread(part, scene, thread, threads);
+      for (int y = 0; y < 70; ++y) {
+        for (int x = 0; x < 60; ++x) {
+          if (part.write_count(x, y) > 0) {
+            REQUIRE(tri::ch08::bands_for(70, threads).owner(y) == thread);
+          }
+          total[static_cast<std::size_t>(y) * 60 + static_cast<std::size_t>(x)] +=
+              part.write_count(x, y);
+        }
+      }
+    }
+    CHECK(std::equal(total.begin(), total.end(), serial.write_counts().begin()));
+  }
+}

@@ -1,0 +1,96 @@
+#include "triangle_setup.hpp"
+
+#include <algorithm>
+#include <utility>
+
+namespace tri::ch08 {
+namespace {
+
+__extension__ using Int128 = __int128;
+
+using ch07::SubpixelPoint;
+
+// Chapter 07's edge function of a -> b at the sub-pixel point (px, py), in Int.
+template <class Int>
+Int edge_function(SubpixelPoint a, SubpixelPoint b, std::int64_t px, std::int64_t py) {
+  return Int(b.x - a.x) * Int(py - a.y) - Int(b.y - a.y) * Int(px - a.x);
+}
+
+// The edge a -> b at the origin pixel (origin_x, origin_y), in whole-pixel units.
+template <class Int>
+EdgeFunction make_edge(SubpixelPoint a, SubpixelPoint b, std::int64_t origin_x,
+                       std::int64_t origin_y) {
+  const Int e = edge_function<Int>(a, b, origin_x << subpixel_bits, origin_y << subpixel_bits);
+  Int value = e >> subpixel_bits;  // floor(e / 256): the shift floors negatives too
+  // A non-top-left edge must reject exact zeros (e >= 1); with no remainder that is value >= 1.
+  // Asked in this order because a remainder of zero is rare off the integer grid.
+  if ((e & ((Int(1) << subpixel_bits) - 1)) == 0 && !ch07::is_top_left_edge(a, b)) value -= 1;
+  // The vertex differences fit in 40 bits, so the steps are exact in 64 bits.
+  EdgeFunction edge{0, -(b.y - a.y), b.x - a.x};
+  if constexpr (sizeof(Int) == sizeof(std::int64_t)) {
+    edge.value = value;  // within chapter 07's 64-bit budget |e| < 2^62: no clamp needed
+  } else if (value >= Int(edge_value_limit)) {
+    edge = {edge_value_limit, 0, 0};  // passes on the whole canvas
+  } else if (value <= Int(-edge_value_limit)) {
+    edge = {-edge_value_limit, 0, 0};  // fails on the whole canvas
+  } else {
+    edge.value = static_cast<std::int64_t>(value);
+  }
+  return edge;
+}
+
+template <class Int>
+std::optional<TriangleSetup> setup(SubpixelPoint a, SubpixelPoint b, SubpixelPoint c,
+                                   const ch07::PixelRange& range) {
+  // Twice the signed area: zero covers nothing, negative is clockwise and gets turned around.
+  const Int area = edge_function<Int>(a, b, c.x, c.y);
+  if (area == 0) return std::nullopt;
+  if (area < 0) std::swap(b, c);
+  TriangleSetup s{{make_edge<Int>(b, c, range.first_x, range.first_y),
+                   make_edge<Int>(c, a, range.first_x, range.first_y),
+                   make_edge<Int>(a, b, range.first_x, range.first_y)},
+                  range,
+                  std::max(std::max({a.x, b.x, c.x}) - std::min({a.x, b.x, c.x}),
+                           std::max({a.y, b.y, c.y}) - std::min({a.y, b.y, c.y}))};
+  if constexpr (sizeof(Int) > sizeof(std::int64_t)) {
+    for (const EdgeFunction& edge : s.edges) {
+      if (edge.value <= -edge_value_limit) return std::nullopt;  // fails on the whole canvas
+    }
+  }
+  return s;
+}
+
+}  // namespace
+
+bool TriangleSetup::covers(int x, int y) const noexcept {
+  const std::int64_t dx = x - range.first_x, dy = y - range.first_y;
+  return edges[0].at(dx, dy) >= 0 && edges[1].at(dx, dy) >= 0 && edges[2].at(dx, dy) >= 0;
+}
+
+std::optional<TriangleSetup> setup_triangle(const Triangle& triangle, int width,
+                                            int height) noexcept {
+  const SubpixelPoint a = snap_to_256ths(triangle[0]);
+  const SubpixelPoint b = snap_to_256ths(triangle[1]);
+  const SubpixelPoint c = snap_to_256ths(triangle[2]);
+  const ch07::PixelRange range = ch07::candidate_pixels(a, b, c, subpixel_bits, width, height);
+  if (range.empty()) return std::nullopt;
+  if (ch07::fits_64_bit_edge_functions(a, b, c)) return setup<std::int64_t>(a, b, c, range);
+  return setup<Int128>(a, b, c, range);
+}
+
+std::optional<TriangleSetup> clip_setup(const TriangleSetup& setup,
+                                        const ch07::PixelRange& clip) noexcept {
+  const ch07::PixelRange& r = setup.range;
+  const ch07::PixelRange clipped{std::max(r.first_x, clip.first_x), std::min(r.last_x, clip.last_x),
+                                 std::max(r.first_y, clip.first_y),
+                                 std::min(r.last_y, clip.last_y)};
+  if (clipped.empty()) return std::nullopt;
+  TriangleSetup s = setup;
+  s.range = clipped;
+  for (EdgeFunction& edge : s.edges) {
+    edge.value = edge.at(clipped.first_x - r.first_x, clipped.first_y - r.first_y);
+  }
+  return s;
+}
+
+}  // namespace tri::ch08

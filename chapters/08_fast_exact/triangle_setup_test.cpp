@@ -1,0 +1,162 @@
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <limits>
+
+#include "coverage_oracle.hpp"
+#include "fixed_point.hpp"
+#include "test_triangles.hpp"
+#include "triangle_setup.hpp"
+
+using tri::Triangle;
+using tri::ch08::TriangleSetup;
+using tri::testing::PixelSet;
+
+namespace {
+
+// Every pixel of the canvas the setup covers, evaluated directly.
+PixelSet covered_by(const std::optional<TriangleSetup>& setup) {
+  PixelSet pixels;
+  if (!setup) return pixels;
+  for (int y = setup->range.first_y; y <= setup->range.last_y; ++y) {
+    for (int x = setup->range.first_x; x <= setup->range.last_x; ++x) {
+      if (setup->covers(x, y)) pixels.emplace(x, y);
+    }
+  }
+  return pixels;
+}
+
+PixelSet oracle_pixels(const Triangle& t, int width, int height) {
+  tri::Canvas canvas(width, height);
+  canvas.enable_write_counts();
+  tri::ch07::draw_triangle_oracle(canvas, t, tri::colors::white);
+  return tri::testing::written_pixels(canvas);
+}
+
+}  // namespace
+
+TEST_CASE("floor_to_integer is std::floor for every kind of double it meets") {
+  using tri::ch08::floor_to_integer;
+  for (const double x : {0.0, -0.0, 0.5, -0.5, 1.0, -1.0, 2.999999, -2.000001, 1e-300, -1e-300,
+                         274877906944.5, -274877906944.5, 274877906943.99997}) {
+    INFO(x);
+    CHECK(floor_to_integer(x) == static_cast<std::int64_t>(std::floor(x)));
+  }
+  tri::testing::Random random(8);
+  for (int i = 0; i < 100000; ++i) {
+    const double x = random.real(-3e11, 3e11) / std::ldexp(1.0, random.integer(0, 40));
+    REQUIRE(floor_to_integer(x) == static_cast<std::int64_t>(std::floor(x)));
+  }
+}
+
+TEST_CASE("snap_to_256ths gives exactly chapter 07's snap_to_subpixel with 8 bits") {
+  tri::testing::Random random(256);
+  const auto same = [](glm::dvec2 p) {
+    const tri::ch07::SubpixelPoint ours = tri::ch08::snap_to_256ths(p);
+    const tri::ch07::SubpixelPoint theirs = tri::ch07::snap_to_subpixel(p, 8);
+    return ours.x == theirs.x && ours.y == theirs.y;
+  };
+  // Exact halves of a 1/256 step round up on both sides of zero, as chapter 07 does.
+  for (const double v : {0.5 / 256, -0.5 / 256, 1.5 / 256, -1.5 / 256, 0.49999999 / 256,
+                         -0.50000001 / 256, 1073741824.0, -1073741824.0, 0.0, -0.0}) {
+    INFO(v);
+    CHECK(same({v, -v}));
+  }
+  for (int i = 0; i < 100000; ++i) {
+    const double scale = std::ldexp(1.0, random.integer(-10, 30));
+    REQUIRE(same({random.real(-1, 1) * scale, random.real(-1, 1) * scale}));
+  }
+}
+
+TEST_CASE("a hand-checked triangle on pixel centres follows the top-left rule") {
+  // (0,0), (4,0), (0,4): the bottom edge is not top-left (centres on it are out), the left edge
+  // is (in), the hypotenuse is a right edge (out).
+  const Triangle t{{{0, 0}, {4, 0}, {0, 4}}};
+  const PixelSet expected{{0, 1}, {1, 1}, {2, 1}, {0, 2}, {1, 2}, {0, 3}};
+  CHECK(covered_by(tri::ch08::setup_triangle(t, 8, 8)) == expected);
+  CHECK(covered_by(tri::ch08::setup_triangle({{t[0], t[2], t[1]}}, 8, 8)) == expected);
+  // Shifted by 1/256 to the right: the left edge leaves the centres at x = 0.
+  const Triangle shifted{{{1.0 / 256, 0}, {4 + 1.0 / 256, 0}, {1.0 / 256, 4}}};
+  CHECK(covered_by(tri::ch08::setup_triangle(shifted, 8, 8)) ==
+        PixelSet{{1, 1}, {2, 1}, {3, 1}, {1, 2}, {2, 2}, {1, 3}});
+}
+
+TEST_CASE("edge steps are the vertex differences and values are whole-pixel edge functions") {
+  // Counter-clockwise (0,0), (4,0), (0,4) in 1/256 units; the origin is pixel (0, 0).
+  const auto setup = tri::ch08::setup_triangle({{{0, 0}, {4, 0}, {0, 4}}}, 8, 8);
+  REQUIRE(setup);
+  const auto& [e0, e1, e2] = setup->edges;
+  // Edge b -> c = (4,0) -> (0,4): E = (-1024)(py) - (1024)(px - 1024), at (0,0) E = 2^20 =
+  // 4096 * 256; a right edge, so its exact zeros must fail: value 4096 - 1.
+  CHECK(e0.step_x == -1024);
+  CHECK(e0.step_y == -1024);
+  CHECK(e0.value == 4095);
+  // Edge c -> a = (0,4) -> (0,0), a left edge through the origin: E = 0 and no bias.
+  CHECK(e1.step_x == 1024);
+  CHECK(e1.step_y == 0);
+  CHECK(e1.value == 0);
+  // Edge a -> b = (0,0) -> (4,0), a bottom edge through the origin: E = 0, bias -1.
+  CHECK(e2.step_x == 0);
+  CHECK(e2.step_y == 1024);
+  CHECK(e2.value == -1);
+}
+
+TEST_CASE("direct evaluation of the setup equals the oracle for every shape of triangle") {
+  tri::testing::Random random(808);
+  for (int i = 0; i < 4000; ++i) {
+    const Triangle t =
+        tri::ch08::testing::random_triangle(random, tri::ch08::testing::shape_number(i), 40);
+    INFO(i << ": " << t[0].x << "," << t[0].y << " " << t[1].x << "," << t[1].y << " " << t[2].x
+           << "," << t[2].y);
+    REQUIRE(covered_by(tri::ch08::setup_triangle(t, 40, 33)) == oracle_pixels(t, 40, 33));
+  }
+}
+
+TEST_CASE("a triangle around the whole canvas has clamped edges that pass everywhere") {
+  const double far = 1073741824.0;
+  const auto setup = tri::ch08::setup_triangle({{{-far, -far}, {far, -far}, {0, far}}}, 20, 10);
+  REQUIRE(setup);
+  for (const auto& edge : setup->edges) {
+    CHECK(edge.value == tri::ch08::edge_value_limit);
+    CHECK(edge.step_x == 0);
+    CHECK(edge.step_y == 0);
+  }
+  CHECK(covered_by(setup).size() == 200);
+}
+
+TEST_CASE("zero area, a miss of the canvas and an edge far beyond it give no setup") {
+  CHECK_FALSE(tri::ch08::setup_triangle({{{0, 0}, {0, 0}, {0, 0}}}, 8, 8));
+  CHECK_FALSE(tri::ch08::setup_triangle({{{1, 1}, {9, 9}, {5, 5}}}, 8, 8));
+  CHECK_FALSE(tri::ch08::setup_triangle({{{20, 20}, {30, 20}, {20, 30}}}, 8, 8));
+  // Candidate pixels cover the canvas, but the canvas lies 2^23 pixels outside one edge, whose
+  // value at the origin is beyond edge_value_limit.
+  const double far = 1073741824.0;
+  const Triangle below{{{-far, -far}, {far, -far}, {far, far - 16777216.0}}};
+  CHECK(oracle_pixels(below, 8, 8).empty());
+  CHECK_FALSE(tri::ch08::setup_triangle(below, 8, 8));
+}
+
+TEST_CASE("clipping a setup keeps exactly its pixels inside the clip") {
+  tri::testing::Random random(5);
+  for (int i = 0; i < 500; ++i) {
+    const Triangle t =
+        tri::ch08::testing::random_triangle(random, tri::ch08::testing::shape_number(i), 32);
+    const auto setup = tri::ch08::setup_triangle(t, 32, 32);
+    if (!setup) continue;
+    const int x0 = random.integer(0, 31), y0 = random.integer(0, 31);
+    const tri::ch07::PixelRange clip{x0, random.integer(x0, 31), y0, random.integer(y0, 31)};
+    PixelSet expected;
+    for (const auto& p : covered_by(setup)) {
+      if (p.first >= clip.first_x && p.first <= clip.last_x && p.second >= clip.first_y &&
+          p.second <= clip.last_y) {
+        expected.insert(p);
+      }
+    }
+    const auto clipped = tri::ch08::clip_setup(*setup, clip);
+    REQUIRE(covered_by(clipped) == expected);
+    if (clipped) {
+      CHECK(clipped->range.first_x >= clip.first_x);
+      CHECK(clipped->range.last_y <= clip.last_y);
+    }
+  }
+}
