@@ -10,31 +10,28 @@ using tri::Triangle;
 
 TEST_CASE("the incremental walk visits every candidate pixel once with the direct edge values") {
   tri::testing::Random random(11);
-  for (int i = 0; i < 600; ++i) {
-    const Triangle t =
-        tri::ch08::testing::random_triangle(random, tri::ch08::testing::shape_number(i), 24);
-    const auto setup = tri::ch08::setup_triangle(t, 24, 19);
-    if (!setup) continue;
-    const auto& r = setup->range;
-    int expected_x = r.first_x, expected_y = r.first_y;
-    long visits = 0;
-    tri::ch08::walk_incremental(
-        *setup, [&](int x, int y, std::int64_t w0, std::int64_t w1, std::int64_t w2) {
-          // Row by row from the bottom, left to right.
-          REQUIRE(x == expected_x);
-          REQUIRE(y == expected_y);
-          const std::int64_t dx = x - r.first_x, dy = y - r.first_y;
-          REQUIRE(w0 == setup->edges[0].at(dx, dy));
-          REQUIRE(w1 == setup->edges[1].at(dx, dy));
-          REQUIRE(w2 == setup->edges[2].at(dx, dy));
-          ++visits;
-          if (++expected_x > r.last_x) {
-            expected_x = r.first_x;
-            ++expected_y;
-          }
-        });
-    CHECK(visits == static_cast<long>(r.last_x - r.first_x + 1) * (r.last_y - r.first_y + 1));
-  }
+  tri::ch08::testing::for_each_random_setup(
+      random, 600, 24, 19, [&](int, const tri::ch08::TriangleSetup& setup) {
+        const auto& r = setup.range;
+        int expected_x = r.first_x, expected_y = r.first_y;
+        long visits = 0;
+        tri::ch08::walk_incremental(
+            setup, [&](int x, int y, std::int64_t w0, std::int64_t w1, std::int64_t w2) {
+              // Row by row from the bottom, left to right.
+              REQUIRE(x == expected_x);
+              REQUIRE(y == expected_y);
+              const std::int64_t dx = x - r.first_x, dy = y - r.first_y;
+              REQUIRE(w0 == setup.edges[0].at(dx, dy));
+              REQUIRE(w1 == setup.edges[1].at(dx, dy));
+              REQUIRE(w2 == setup.edges[2].at(dx, dy));
+              ++visits;
+              if (++expected_x > r.last_x) {
+                expected_x = r.first_x;
+                ++expected_y;
+              }
+            });
+        CHECK(visits == static_cast<long>(r.last_x - r.first_x + 1) * (r.last_y - r.first_y + 1));
+      });
 }
 
 TEST_CASE("the OR of three values is non-negative exactly when all three are") {

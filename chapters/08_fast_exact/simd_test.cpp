@@ -13,29 +13,27 @@ using tri::ch08::LaneWidth;
 TEST_CASE("every lane of the lane test agrees with direct evaluation, in 32 and 64 bits") {
   tri::testing::Random random(55);
   int tested32 = 0;
-  for (int i = 0; i < 3000; ++i) {
-    const Triangle t =
-        tri::ch08::testing::random_triangle(random, tri::ch08::testing::shape_number(i), 40);
-    const auto setup = tri::ch08::setup_triangle(t, 40, 40);
-    if (!setup) continue;
-    const auto& r = setup->range;
-    for (int k = 0; k < 8; ++k) {
-      const int x = random.integer(r.first_x, r.last_x), y = random.integer(r.first_y, r.last_y);
-      for (const int lanes : {4, 8}) {
-        for (const LaneWidth width : {LaneWidth::bits32, LaneWidth::bits64}) {
-          if (width == LaneWidth::bits32 && !tri::ch08::fits_32_bit_lanes(*setup)) continue;
-          tested32 += width == LaneWidth::bits32;
-          const auto result = tri::ch08::lane_test(*setup, x, y, width, lanes);
-          for (int lane = 0; lane < 8; ++lane) {
-            INFO("triangle " << i << " pixel " << x + lane << "," << y << " of " << lanes);
-            const bool expected =
-                lane < lanes && x + lane <= r.last_x && setup->covers(x + lane, y);
-            REQUIRE(result[lane] == expected);
+  tri::ch08::testing::for_each_random_setup(
+      random, 3000, 40, 40, [&](int i, const tri::ch08::TriangleSetup& setup) {
+        const auto& r = setup.range;
+        for (int k = 0; k < 8; ++k) {
+          const int x = random.integer(r.first_x, r.last_x),
+                    y = random.integer(r.first_y, r.last_y);
+          for (const int lanes : {4, 8}) {
+            for (const LaneWidth width : {LaneWidth::bits32, LaneWidth::bits64}) {
+              if (width == LaneWidth::bits32 && !tri::ch08::fits_32_bit_lanes(setup)) continue;
+              tested32 += width == LaneWidth::bits32;
+              const auto result = tri::ch08::lane_test(setup, x, y, width, lanes);
+              for (int lane = 0; lane < 8; ++lane) {
+                INFO("triangle " << i << " pixel " << x + lane << "," << y << " of " << lanes);
+                const bool expected =
+                    lane < lanes && x + lane <= r.last_x && setup.covers(x + lane, y);
+                REQUIRE(result[lane] == expected);
+              }
+            }
           }
         }
-      }
-    }
-  }
+      });
   CHECK(tested32 > 10000);
 }
 

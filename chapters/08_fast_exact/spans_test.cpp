@@ -27,24 +27,21 @@ TEST_CASE("floor_div rounds toward minus infinity for every sign") {
 
 TEST_CASE("a row's span ends are exact: covered inside, uncovered just beyond, nothing else") {
   tri::testing::Random random(21);
-  for (int i = 0; i < 3000; ++i) {
-    const Triangle t =
-        tri::ch08::testing::random_triangle(random, tri::ch08::testing::shape_number(i), 40);
-    const auto setup = tri::ch08::setup_triangle(t, 40, 37);
-    if (!setup) continue;
-    const auto& r = setup->range;
-    for (int y = r.first_y; y <= r.last_y; ++y) {
-      const RowSpan span = tri::ch08::row_span(*setup, y);
-      for (int x = r.first_x; x <= r.last_x; ++x) {
-        INFO("triangle " << i << " pixel " << x << "," << y);
-        REQUIRE(setup->covers(x, y) == (x >= span.first && x <= span.last));
-      }
-      if (!span.empty()) {
-        CHECK(span.first >= r.first_x);
-        CHECK(span.last <= r.last_x);
-      }
-    }
-  }
+  tri::ch08::testing::for_each_random_setup(
+      random, 3000, 40, 37, [&](int i, const tri::ch08::TriangleSetup& setup) {
+        const auto& r = setup.range;
+        for (int y = r.first_y; y <= r.last_y; ++y) {
+          const RowSpan span = tri::ch08::row_span(setup, y);
+          for (int x = r.first_x; x <= r.last_x; ++x) {
+            INFO("triangle " << i << " pixel " << x << "," << y);
+            REQUIRE(setup.covers(x, y) == (x >= span.first && x <= span.last));
+          }
+          if (!span.empty()) {
+            CHECK(span.first >= r.first_x);
+            CHECK(span.last <= r.last_x);
+          }
+        }
+      });
 }
 
 TEST_CASE("a horizontal edge limits the rows the walker visits") {
@@ -65,27 +62,24 @@ TEST_CASE("a horizontal edge limits the rows the walker visits") {
 
 TEST_CASE("the division-free walker gives the direct span on every row") {
   tri::testing::Random random(22);
-  for (int i = 0; i < 3000; ++i) {
-    const Triangle t =
-        tri::ch08::testing::random_triangle(random, tri::ch08::testing::shape_number(i), 64);
-    const auto setup = tri::ch08::setup_triangle(t, 64, 61);
-    if (!setup) continue;
-    tri::ch08::SpanWalker walker(*setup);
-    // Rows a horizontal edge excludes are skipped: their direct spans are empty.
-    for (int y = setup->range.first_y; y <= setup->range.last_y; ++y) {
-      if (y < walker.first_row() || y > walker.last_row()) {
-        INFO("triangle " << i << " row " << y << " skipped");
-        REQUIRE(tri::ch08::row_span(*setup, y).empty());
-      }
-    }
-    for (int y = walker.first_row(); y <= walker.last_row(); ++y, walker.next_row()) {
-      const RowSpan direct = tri::ch08::row_span(*setup, y);
-      const RowSpan walked = walker.span();
-      INFO("triangle " << i << " row " << y);
-      REQUIRE(walked.empty() == direct.empty());
-      if (!direct.empty()) REQUIRE(walked == direct);
-    }
-  }
+  tri::ch08::testing::for_each_random_setup(
+      random, 3000, 64, 61, [&](int i, const tri::ch08::TriangleSetup& setup) {
+        tri::ch08::SpanWalker walker(setup);
+        // Rows a horizontal edge excludes are skipped: their direct spans are empty.
+        for (int y = setup.range.first_y; y <= setup.range.last_y; ++y) {
+          if (y < walker.first_row() || y > walker.last_row()) {
+            INFO("triangle " << i << " row " << y << " skipped");
+            REQUIRE(tri::ch08::row_span(setup, y).empty());
+          }
+        }
+        for (int y = walker.first_row(); y <= walker.last_row(); ++y, walker.next_row()) {
+          const RowSpan direct = tri::ch08::row_span(setup, y);
+          const RowSpan walked = walker.span();
+          INFO("triangle " << i << " row " << y);
+          REQUIRE(walked.empty() == direct.empty());
+          if (!direct.empty()) REQUIRE(walked == direct);
+        }
+      });
 }
 
 TEST_CASE("a sliver costs its rows: one short span per row instead of its bounding box") {

@@ -7,6 +7,7 @@
 
 #include "pixels.hpp"
 #include "triangle_algorithm.hpp"
+#include "triangle_setup.hpp"
 
 namespace tri::ch08::testing {
 
@@ -85,6 +86,18 @@ inline Triangle random_triangle(tri::testing::Random& random, Shape shape, int s
 /// The i-th shape of the cycle.
 inline Shape shape_number(int i) {
   return static_cast<Shape>(i % static_cast<int>(Shape::count));
+}
+
+/// Calls visit(i, setup) for the first `count` triangles of the shape cycle that have candidate
+/// pixels on a width x height canvas (the i-th triangle has shape_number(i)).
+template <class Visit>
+void for_each_random_setup(tri::testing::Random& random, int count, int width, int height,
+                           Visit&& visit) {
+  for (int i = 0; i < count; ++i) {
+    const auto setup =
+        setup_triangle(random_triangle(random, shape_number(i), width), width, height);
+    if (setup) visit(i, *setup);
+  }
 }
 
 }  // namespace tri::ch08::testing

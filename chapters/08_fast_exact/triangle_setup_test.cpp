@@ -138,25 +138,22 @@ TEST_CASE("zero area, a miss of the canvas and an edge far beyond it give no set
 
 TEST_CASE("clipping a setup keeps exactly its pixels inside the clip") {
   tri::testing::Random random(5);
-  for (int i = 0; i < 500; ++i) {
-    const Triangle t =
-        tri::ch08::testing::random_triangle(random, tri::ch08::testing::shape_number(i), 32);
-    const auto setup = tri::ch08::setup_triangle(t, 32, 32);
-    if (!setup) continue;
-    const int x0 = random.integer(0, 31), y0 = random.integer(0, 31);
-    const tri::ch07::PixelRange clip{x0, random.integer(x0, 31), y0, random.integer(y0, 31)};
-    PixelSet expected;
-    for (const auto& p : covered_by(setup)) {
-      if (p.first >= clip.first_x && p.first <= clip.last_x && p.second >= clip.first_y &&
-          p.second <= clip.last_y) {
-        expected.insert(p);
-      }
-    }
-    const auto clipped = tri::ch08::clip_setup(*setup, clip);
-    REQUIRE(covered_by(clipped) == expected);
-    if (clipped) {
-      CHECK(clipped->range.first_x >= clip.first_x);
-      CHECK(clipped->range.last_y <= clip.last_y);
-    }
-  }
+  tri::ch08::testing::for_each_random_setup(
+      random, 500, 32, 32, [&](int, const tri::ch08::TriangleSetup& setup) {
+        const int x0 = random.integer(0, 31), y0 = random.integer(0, 31);
+        const tri::ch07::PixelRange clip{x0, random.integer(x0, 31), y0, random.integer(y0, 31)};
+        PixelSet expected;
+        for (const auto& p : covered_by(setup)) {
+          if (p.first >= clip.first_x && p.first <= clip.last_x && p.second >= clip.first_y &&
+              p.second <= clip.last_y) {
+            expected.insert(p);
+          }
+        }
+        const auto clipped = tri::ch08::clip_setup(setup, clip);
+        REQUIRE(covered_by(clipped) == expected);
+        if (clipped) {
+          CHECK(clipped->range.first_x >= clip.first_x);
+          CHECK(clipped->range.last_y <= clip.last_y);
+        }
+      });
 }
