@@ -12,6 +12,8 @@ using tri::Canvas;
 using tri::ch06::fill_triangle_barycentric;
 using tri::ch06::fill_triangle_barycentric_unguarded;
 using tri::ch06::PixelTriangle;
+using tri::ch06::testing::filled;
+using tri::ch06::testing::filled_pixels;
 using tri::ch06::testing::random_point;
 using tri::testing::inclusive_pixels;
 using tri::testing::PixelSet;
@@ -19,19 +21,6 @@ using tri::testing::Random;
 using tri::testing::written_pixels;
 
 namespace {
-
-template <typename Scalar>
-Canvas filled(const PixelTriangle& t, int width, int height) {
-  Canvas canvas(width, height);
-  canvas.enable_write_counts();
-  fill_triangle_barycentric<Scalar>(canvas, t[0], t[1], t[2], tri::colors::white);
-  return canvas;
-}
-
-template <typename Scalar>
-PixelSet filled_pixels(const PixelTriangle& t, int width, int height) {
-  return written_pixels(filled<Scalar>(t, width, height));
-}
 
 PixelSet unguarded_pixels(const PixelTriangle& t, int width, int height) {
   Canvas canvas(width, height);

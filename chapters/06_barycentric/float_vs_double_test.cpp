@@ -14,6 +14,8 @@
 using tri::Canvas;
 using tri::ch06::fill_triangle_barycentric;
 using tri::ch06::PixelTriangle;
+using tri::ch06::testing::filled;
+using tri::ch06::testing::filled_pixels;
 using tri::ch06::testing::triangle_with_edge_through_canvas;
 using tri::testing::inclusive_pixels;
 using tri::testing::PixelSet;
@@ -21,19 +23,6 @@ using tri::testing::Random;
 using tri::testing::written_pixels;
 
 namespace {
-
-template <typename Scalar>
-Canvas filled(const PixelTriangle& t, int size) {
-  Canvas canvas(size, size);
-  canvas.enable_write_counts();
-  fill_triangle_barycentric<Scalar>(canvas, t[0], t[1], t[2], tri::colors::white);
-  return canvas;
-}
-
-template <typename Scalar>
-PixelSet filled_pixels(const PixelTriangle& t, int size) {
-  return written_pixels(filled<Scalar>(t, size));
-}
 
 struct SearchResult {
   int attempt;
@@ -45,7 +34,7 @@ std::optional<SearchResult> first_float_double_disagreement() {
   Random random(606);
   for (int attempt = 0; attempt < 100000; ++attempt) {
     const PixelTriangle t = triangle_with_edge_through_canvas(random, 10000, 16);
-    if (filled_pixels<float>(t, 16) != filled_pixels<double>(t, 16)) {
+    if (filled_pixels<float>(t, 16, 16) != filled_pixels<double>(t, 16, 16)) {
       return SearchResult{attempt, t};
     }
   }
@@ -66,8 +55,8 @@ TEST_CASE("On the kept triangle double fills the exact set and float misses one 
           "[06][precision]") {
   const auto [a, b, c] = tri::ch06::float_double_disagreement;
   const PixelSet exact = inclusive_pixels(a, b, c, 16, 16);
-  const PixelSet with_double = filled_pixels<double>({a, b, c}, 16);
-  const PixelSet with_float = filled_pixels<float>({a, b, c}, 16);
+  const PixelSet with_double = filled_pixels<double>({a, b, c}, 16, 16);
+  const PixelSet with_float = filled_pixels<float>({a, b, c}, 16, 16);
   CHECK(with_double == exact);
   CHECK(with_double.size() == 67);
   CHECK(with_float.size() == 66);
@@ -93,8 +82,8 @@ TEST_CASE("Float sees an area of 2^21 in a zero-area triangle 10^7 away and draw
   // float rounds the differences (beyond 2^24) and the products: the "area" is 2^21 = 2097152,
   // far above any epsilon a guard could use.
   CHECK(tri::ch06::cross_of_rows<float>(a, b, c, {0, 0}).z == 2097152.0f);
-  CHECK(filled_pixels<double>({a, b, c}, 32).empty());
-  const Canvas canvas = filled<float>({a, b, c}, 32);
+  CHECK(filled_pixels<double>({a, b, c}, 32, 32).empty());
+  const Canvas canvas = filled<float>({a, b, c}, 32, 32);
   CHECK(written_pixels(canvas) ==
         PixelSet{{14, 2}, {15, 8}, {15, 9}, {16, 16}, {17, 22}, {17, 23}, {18, 30}});
   CHECK(canvas.outside_writes() == 0);
@@ -114,7 +103,7 @@ TEST_CASE("At 10^7 and 2^30 float weights stay finite and the fill stays on the 
         }
       }
       CHECK(non_finite == 0);
-      const Canvas canvas = filled<float>(t, 32);
+      const Canvas canvas = filled<float>(t, 32, 32);
       CHECK(canvas.outside_writes() == 0);
       CHECK(tri::testing::overdrawn_pixels(canvas).empty());
     }

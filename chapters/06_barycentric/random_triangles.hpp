@@ -1,8 +1,9 @@
 /// @file
-/// Seeded random triangles for chapter 06's tests (tests only).
+/// Seeded random triangles for chapter 06's tests, and the fill they test (tests only).
 #pragma once
 
 #include "examples.hpp"
+#include "fill.hpp"
 #include "pixels.hpp"
 
 namespace tri::ch06::testing {
@@ -31,6 +32,21 @@ inline PixelTriangle triangle_with_edge_through_canvas(tri::testing::Random& ran
   const glm::ivec2 b = random_point(random, -reach, reach);
   const glm::ivec2 m = random_point(random, 0, size - 1);
   return {a, b, 2 * m - b};
+}
+
+/// A width x height canvas with write counts, after the guarded barycentric fill of t.
+template <typename Scalar>
+Canvas filled(const PixelTriangle& t, int width, int height) {
+  Canvas canvas(width, height);
+  canvas.enable_write_counts();
+  fill_triangle_barycentric<Scalar>(canvas, t[0], t[1], t[2], tri::colors::white);
+  return canvas;
+}
+
+/// The pixels the guarded barycentric fill of t writes on a width x height canvas.
+template <typename Scalar>
+tri::testing::PixelSet filled_pixels(const PixelTriangle& t, int width, int height) {
+  return tri::testing::written_pixels(filled<Scalar>(t, width, height));
 }
 
 }  // namespace tri::ch06::testing
