@@ -76,4 +76,15 @@ std::size_t draw_triangles(const TriangleAlgorithm& algorithm, Canvas& canvas,
 /// algorithms receive. Precondition: p is finite and within ±2^30.
 glm::ivec2 nearest_pixel(glm::dvec2 p) noexcept;
 
+/// A fill as the articles write it: three whole-pixel vertices and a colour.
+using PixelTriangleFill = void (*)(Canvas&, glm::ivec2, glm::ivec2, glm::ivec2, Color);
+
+/// The registry's entry point for an article's fill: each vertex is rounded to its nearest pixel
+/// centre (nearest_pixel), since the articles' fills take whole pixels.
+template <PixelTriangleFill fill>
+void draw_at_nearest_pixels(Canvas& canvas, const Triangle& triangle, Color color) {
+  fill(canvas, nearest_pixel(triangle[0]), nearest_pixel(triangle[1]), nearest_pixel(triangle[2]),
+       color);
+}
+
 }  // namespace tri

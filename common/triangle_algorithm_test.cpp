@@ -193,6 +193,20 @@ TEST_CASE("nearest_pixel rounds to the nearest pixel centre, halves up", "[algor
   CHECK(xy(nearest_pixel({3.5, -7.5})) == std::pair(4, -7));
 }
 
+// An article-style fill that marks its three vertices only, to see what it was handed.
+void mark_vertices(Canvas& canvas, glm::ivec2 a, glm::ivec2 b, glm::ivec2 c, Color color) {
+  for (const glm::ivec2 p : {a, b, c}) canvas.put_pixel(p, color);
+}
+
+TEST_CASE("draw_at_nearest_pixels hands the fill each vertex rounded to its nearest centre",
+          "[algorithm][round]") {
+  Canvas canvas(16, 16);
+  canvas.enable_write_counts();
+  draw_at_nearest_pixels<mark_vertices>(canvas, {{{2.5, 3.49}, {10.2, 0.5}, {-0.5, 14.51}}},
+                                        colors::white);
+  CHECK(testing::written_pixels(canvas) == PixelSet{{3, 3}, {10, 1}, {0, 15}});
+}
+
 TEST_CASE("nearest_pixel is never more than half a pixel away, on random points",
           "[algorithm][round]") {
   testing::Random random(7);

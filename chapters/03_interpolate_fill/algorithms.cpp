@@ -7,18 +7,12 @@
 namespace tri::ch03 {
 namespace {
 
-// The registry's entry point: the book works on whole pixels, so round to pixel centres first.
-void draw_gambetta_interpolate_fill(Canvas& canvas, const Triangle& triangle, Color color) {
-  draw_filled_triangle(canvas, nearest_pixel(triangle[0]), nearest_pixel(triangle[1]),
-                       nearest_pixel(triangle[2]), color);
-}
-
 // Approximate, not inclusive: span ends round to the nearest column, so centres up to half a
 // pixel outside an edge are drawn too (see the chapter's README for the measured count).
 constexpr std::array<TriangleAlgorithm, 1> algorithms{{
     {"gambetta_interpolate_fill", "03_interpolate_fill", CoverageRule::approximate,
      "Gambetta's Listing 7-1: x = f(y) per edge by Interpolate, spans rounded to nearest",
-     draw_gambetta_interpolate_fill},
+     draw_at_nearest_pixels<draw_filled_triangle>},
 }};
 
 }  // namespace

@@ -12,8 +12,4 @@ namespace tri::ch05 {
 /// `edge_function` (the published-bug variant is never registered).
 std::span<const TriangleAlgorithm> triangle_algorithms();
 
-/// The registered entry of `edge_function`: rounds each vertex with nearest_pixel(), then
-/// fill_triangle_edge_function().
-void draw_edge_function(Canvas& canvas, const Triangle& triangle, Color color);
-
 }  // namespace tri::ch05

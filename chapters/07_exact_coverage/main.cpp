@@ -65,15 +65,11 @@ Canvas counts_picture(const Canvas& counted) {
 
 using DrawFunction = void (*)(Canvas&, const Triangle&, Color);
 
-void draw_barycentric(Canvas& canvas, const Triangle& t, Color color) {
-  tri::ch06::fill_triangle_barycentric<double>(
-      canvas, tri::nearest_pixel(t[0]), tri::nearest_pixel(t[1]), tri::nearest_pixel(t[2]), color);
-}
-
-void draw_edge_function(Canvas& canvas, const Triangle& t, Color color) {
-  tri::ch05::fill_triangle_edge_function(canvas, tri::nearest_pixel(t[0]), tri::nearest_pixel(t[1]),
-                                         tri::nearest_pixel(t[2]), color);
-}
+// The earlier chapters' fills as their registry entries draw them (vertices rounded first).
+constexpr DrawFunction draw_barycentric =
+    tri::draw_at_nearest_pixels<tri::ch06::fill_triangle_barycentric<double>>;
+constexpr DrawFunction draw_edge_function =
+    tri::draw_at_nearest_pixels<tri::ch05::fill_triangle_edge_function>;
 
 Canvas mesh_counts(DrawFunction draw) {
   Canvas canvas(mesh_size, mesh_size);
