@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <array>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "canvas.hpp"
@@ -10,22 +12,13 @@
 namespace tri {
 namespace {
 
-using DrawFunction = void (*)(Canvas&, const Triangle&, Color);
-
 // The six orders of three vertices; the first is the scene's own.
 constexpr std::array<std::array<int, 3>, 6> vertex_orders{
     {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}, {0, 2, 1}, {2, 1, 0}, {1, 0, 2}}};
 
-struct Drawn {
-  std::vector<std::uint32_t> counts;
-  std::uint64_t outside_writes = 0;
-  std::uint64_t rejected = 0;
-};
-
-Drawn draw_counts(const TriangleAlgorithm& algorithm, const Scene& scene,
-                  const std::array<int, 3>& order) {
-  Canvas canvas(scene.width, scene.height);
-  canvas.enable_write_counts();
+// The scene's triangles with their vertices taken in the given order.
+std::vector<SceneTriangle> reordered_triangles(const Scene& scene,
+                                               const std::array<int, 3>& order) {
   std::vector<SceneTriangle> triangles;
   for (const auto& primitive : scene.primitives) {
     const auto* t = std::get_if<SceneTriangle>(&primitive);
@@ -33,10 +26,19 @@ Drawn draw_counts(const TriangleAlgorithm& algorithm, const Scene& scene,
     triangles.push_back(
         {{t->vertices[order[0]], t->vertices[order[1]], t->vertices[order[2]]}, t->color});
   }
-  Drawn drawn;
-  drawn.rejected = draw_triangles(algorithm, canvas, triangles);
-  drawn.counts.assign(canvas.write_counts().begin(), canvas.write_counts().end());
-  drawn.outside_writes = canvas.outside_writes();
+  return triangles;
+}
+
+WriteCounts draw_counts(const CountingDraw& draw, const Scene& scene,
+                        const std::array<int, 3>& order) {
+  const std::vector<SceneTriangle> triangles = reordered_triangles(scene, order);
+  WriteCounts drawn = draw(scene.width, scene.height, triangles);
+  const auto pixels =
+      static_cast<std::size_t>(scene.width) * static_cast<std::size_t>(scene.height);
+  if (drawn.counts.size() != pixels) {
+    throw std::logic_error("a counting draw returned " + std::to_string(drawn.counts.size()) +
+                           " counts for " + std::to_string(pixels) + " pixels");
+  }
   return drawn;
 }
 
@@ -48,11 +50,31 @@ double ErrorReport::error_rate() const noexcept {
   return wrong / static_cast<double>(covered);
 }
 
+WriteCounts draw_write_counts(const TriangleAlgorithm& algorithm, int width, int height,
+                              std::span<const SceneTriangle> triangles) {
+  Canvas canvas(width, height);
+  canvas.enable_write_counts();
+  WriteCounts drawn;
+  drawn.rejected = draw_triangles(algorithm, canvas, triangles);
+  drawn.counts.assign(canvas.write_counts().begin(), canvas.write_counts().end());
+  drawn.outside_writes = canvas.outside_writes();
+  return drawn;
+}
+
 ErrorReport measure_error(const TriangleAlgorithm& algorithm, const Scene& scene) {
+  return measure_error(
+      [&algorithm](int width, int height, std::span<const SceneTriangle> triangles) {
+        return draw_write_counts(algorithm, width, height, triangles);
+      },
+      scene);
+}
+
+ErrorReport measure_error(const CountingDraw& draw, const Scene& scene) {
   static constexpr TriangleAlgorithm oracle{"exact_oracle", "07_exact_coverage",
                                             CoverageRule::top_left, "", ch07::draw_triangle_oracle};
-  const Drawn truth = draw_counts(oracle, scene, vertex_orders[0]);
-  const Drawn drawn = draw_counts(algorithm, scene, vertex_orders[0]);
+  const std::vector<SceneTriangle> own_order = reordered_triangles(scene, vertex_orders[0]);
+  const WriteCounts truth = draw_write_counts(oracle, scene.width, scene.height, own_order);
+  const WriteCounts drawn = draw_counts(draw, scene, vertex_orders[0]);
   ErrorReport report;
   report.outside_writes = drawn.outside_writes;
   report.rejected = drawn.rejected;
@@ -66,7 +88,7 @@ ErrorReport measure_error(const TriangleAlgorithm& algorithm, const Scene& scene
   }
   std::vector<bool> changed(drawn.counts.size(), false);
   for (std::size_t k = 1; k < vertex_orders.size(); ++k) {
-    const Drawn other = draw_counts(algorithm, scene, vertex_orders[k]);
+    const WriteCounts other = draw_counts(draw, scene, vertex_orders[k]);
     report.outside_writes = std::max(report.outside_writes, other.outside_writes);
     for (std::size_t i = 0; i < changed.size(); ++i) {
       if (other.counts[i] != drawn.counts[i]) changed[i] = true;

@@ -3,6 +3,9 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
+#include <span>
+#include <vector>
 
 #include "scene.hpp"
 #include "triangle_algorithm.hpp"
@@ -30,9 +33,30 @@ struct ErrorReport {
   }
 };
 
+/// What one drawing of a scene's triangles left behind: how often each pixel was written (row by
+/// row from the bottom, as Canvas::write_counts) and what could not be drawn.
+struct WriteCounts {
+  std::vector<std::uint32_t> counts;
+  std::uint64_t outside_writes = 0;  ///< writes attempted outside the canvas
+  std::uint64_t rejected = 0;        ///< triangles refused
+};
+
+/// Draws triangles on a fresh width x height canvas and returns its write counts: the one thing
+/// measure_error needs from a rasterizer, so one outside the registry (e.g. Mesa's) can be
+/// measured.
+using CountingDraw =
+    std::function<WriteCounts(int width, int height, std::span<const SceneTriangle> triangles)>;
+
 /// Draws the scene's triangles with the algorithm and with the oracle (chapter 07) and compares
 /// the write counts; then draws it in the five other vertex orders to find order dependence.
 /// Lines are ignored.
 ErrorReport measure_error(const TriangleAlgorithm& algorithm, const Scene& scene);
+
+/// The same measurement for any rasterizer that can report write counts.
+ErrorReport measure_error(const CountingDraw& draw, const Scene& scene);
+
+/// The write counts of the algorithm drawing the triangles (draw_triangles on a counting canvas).
+WriteCounts draw_write_counts(const TriangleAlgorithm& algorithm, int width, int height,
+                              std::span<const SceneTriangle> triangles);
 
 }  // namespace tri
