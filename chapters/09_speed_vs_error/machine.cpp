@@ -3,6 +3,8 @@
 #include <fstream>
 #include <thread>
 
+#include "external_peers.hpp"
+
 namespace tri::ch09 {
 namespace {
 
@@ -36,7 +38,7 @@ std::string cpu_model_from(std::istream& cpuinfo) {
   return "unknown";
 }
 
-Machine describe_machine() {
+Machine describe_machine(std::span<const ExternalPeer> measured_peers) {
   Machine machine;
   machine.threads = std::thread::hardware_concurrency();
   std::ifstream cpuinfo("/proc/cpuinfo");
@@ -44,7 +46,7 @@ Machine describe_machine() {
   machine.compiler = compiler_name();
   machine.build_type = TUTORIAL_BUILD_TYPE;
   if (machine.build_type.empty()) machine.build_type = "none given (CMAKE_BUILD_TYPE empty)";
-  machine.osmesa_peer = TUTORIAL_OSMESA_STATUS;
+  machine.osmesa_peer = external_peer_status(measured_peers);
   return machine;
 }
 

@@ -3,9 +3,12 @@
 #pragma once
 
 #include <istream>
+#include <span>
 #include <string>
 
 namespace tri::ch09 {
+
+struct ExternalPeer;
 
 /// The machine and build a report was measured with.
 struct Machine {
@@ -19,7 +22,7 @@ struct Machine {
 /// The value of the first "model name" line of a /proc/cpuinfo text, or "unknown".
 std::string cpu_model_from(std::istream& cpuinfo);
 
-/// Describes this machine and this build.
-Machine describe_machine();
+/// Describes this machine and this build, and the external peers a run measures.
+Machine describe_machine(std::span<const ExternalPeer> measured_peers);
 
 }  // namespace tri::ch09

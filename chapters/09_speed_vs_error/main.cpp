@@ -1,11 +1,13 @@
 // Chapter 09's report: every registered algorithm on the same scene suites, timed and compared
 // with the exact oracle; writes 09_report.csv, 09_report.md and 09_speed_vs_error.svg.
+#include <algorithm>
 #include <iostream>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "cli.hpp"
+#include "external_peers.hpp"
 #include "figures.hpp"
 #include "measure.hpp"
 #include "registry.hpp"
@@ -14,19 +16,35 @@
 
 namespace {
 
-// The registered algorithms named in a comma-separated list (all of them for an empty list).
-std::vector<tri::TriangleAlgorithm> selected_algorithms(const std::string& names) {
-  const std::vector<tri::TriangleAlgorithm> all = tri::registered_algorithms();
+// What a run measures: registered algorithms and the external peers this build has.
+struct Selection {
+  std::vector<tri::TriangleAlgorithm> algorithms;
+  std::vector<tri::ch09::ExternalPeer> peers;
+};
+
+// The algorithms and peers named in a comma-separated list (all of them for an empty list).
+Selection selected(const std::string& names) {
+  Selection all{tri::registered_algorithms(), tri::ch09::external_peers()};
   if (names.empty()) return all;
-  std::vector<tri::TriangleAlgorithm> chosen;
+  Selection chosen;
   std::istringstream list(names);
   std::string name;
   while (std::getline(list, name, ',')) {
-    const tri::TriangleAlgorithm* algorithm = tri::find_algorithm(all, name);
-    if (algorithm == nullptr) {
-      throw tri::UsageError("no registered algorithm is named '" + name + "' (see raster --list)");
+    if (const tri::TriangleAlgorithm* algorithm = tri::find_algorithm(all.algorithms, name)) {
+      chosen.algorithms.push_back(*algorithm);
+      continue;
     }
-    chosen.push_back(*algorithm);
+    const auto peer =
+        std::find_if(all.peers.begin(), all.peers.end(),
+                     [&](const tri::ch09::ExternalPeer& p) { return p.name == name; });
+    if (peer == all.peers.end()) {
+      std::string peers;
+      for (const auto& p : all.peers) peers += (peers.empty() ? "" : ", ") + p.name;
+      throw tri::UsageError("no registered algorithm is named '" + name +
+                            "' (see raster --list); external peers: " +
+                            (peers.empty() ? tri::ch09::external_peer_status({}) : peers));
+    }
+    chosen.peers.push_back(*peer);
   }
   return chosen;
 }
@@ -43,18 +61,20 @@ int main(int argc, char** argv) {
       "(the plot). Quick by default (about a minute on two cores); --full for the complete sweep.",
       {{"out", "DIR", "folder for the report (default: out)"},
        {"full", "", "complete sweep: 512x512 canvas, 100,000-triangle mesh, longer samples"},
-       {"only", "NAMES", "measure only these algorithms (comma-separated registry names)"}});
+       {"only", "NAMES",
+        "measure only these (comma-separated registry names, or an external peer's name)"}});
   return tri::run_command_line(
       command_line, argc, argv, std::cout, std::cerr, [](const tri::CliArguments& args) {
         const auto size =
             args.has("full") ? tri::ch09::SuiteSize::full : tri::ch09::SuiteSize::quick;
-        const auto algorithms = selected_algorithms(args.value_or("only", ""));
+        const Selection selection = selected(args.value_or("only", ""));
         const tri::ch09::BenchSettings settings = tri::ch09::bench_settings(size);
-        std::cout << "09_speed_vs_error: " << algorithms.size() << " algorithms x "
-                  << settings.scenes.size() << " scenes, " << tri::ch09::size_name(size)
-                  << " setting\n";
-        const tri::ch09::BenchReport report = tri::ch09::run_benchmark(
-            algorithms, settings, tri::ch09::describe_machine(), std::cout);
+        std::cout << "09_speed_vs_error: " << selection.algorithms.size() << " algorithms and "
+                  << selection.peers.size() << " external peers x " << settings.scenes.size()
+                  << " scenes, " << tri::ch09::size_name(size) << " setting\n";
+        const tri::ch09::BenchReport report =
+            tri::ch09::run_benchmark(selection.algorithms, selection.peers, settings,
+                                     tri::ch09::describe_machine(selection.peers), std::cout);
         tri::FigureWriter figures(args.value_or("out", "out"), std::cout);
         tri::ch09::save_report(figures, report);
         return 0;

@@ -52,36 +52,54 @@ double Measurement::ratio_to_ceiling() const noexcept {
 
 std::uint64_t count_written_pixels(const TriangleAlgorithm& algorithm, const Scene& scene,
                                    std::span<const SceneTriangle> triangles) {
-  Canvas canvas(scene.width, scene.height);
-  canvas.enable_write_counts();
-  draw_triangles(algorithm, canvas, triangles);
-  const auto counts = canvas.write_counts();
-  return std::accumulate(counts.begin(), counts.end(), std::uint64_t{0});
+  const WriteCounts drawn = draw_write_counts(algorithm, scene.width, scene.height, triangles);
+  return std::accumulate(drawn.counts.begin(), drawn.counts.end(), std::uint64_t{0});
 }
 
-Measurement measure(const TriangleAlgorithm& algorithm, const PreparedScene& prepared,
-                    const TimingPlan& plan, const FillCeilings& ceilings) {
+namespace {
+
+// A row with what the scene and the drawer say about themselves, before anything is measured.
+Measurement row_for(std::string_view name, std::string_view chapter, std::string_view rule,
+                    bool threaded, const PreparedScene& prepared, const FillCeilings& ceilings) {
   Measurement m;
-  m.algorithm = algorithm.name;
-  m.chapter = algorithm.chapter;
-  m.rule = rule_name(algorithm.rule);
-  m.threaded = algorithm.threaded;
+  m.algorithm = name;
+  m.chapter = chapter;
+  m.rule = rule;
+  m.threaded = threaded;
   m.scene = prepared.suite.name;
   m.grid = prepared.suite.grid;
   m.mesh = prepared.suite.mesh;
   m.width = prepared.scene.width;
   m.height = prepared.scene.height;
   m.triangles = prepared.triangles.size();
+  m.fill_ceiling_mpix_per_s =
+      threaded ? ceilings.threaded_mpix_per_s() : ceilings.single_thread_mpix_per_s;
+  m.error_triangles = count_triangles(prepared.error_scene);
+  return m;
+}
+
+}  // namespace
+
+Measurement measure(const TriangleAlgorithm& algorithm, const PreparedScene& prepared,
+                    const TimingPlan& plan, const FillCeilings& ceilings) {
+  Measurement m = row_for(algorithm.name, algorithm.chapter, rule_name(algorithm.rule),
+                          algorithm.threaded, prepared, ceilings);
   m.written_pixels = count_written_pixels(algorithm, prepared.scene, prepared.triangles);
 
   Canvas canvas = make_canvas(prepared.scene);  // no write counts: they would be timed too
   const std::span<const SceneTriangle> triangles(prepared.triangles);
   m.timing = time_runs([&] { draw_triangles(algorithm, canvas, triangles); }, plan);
-  m.fill_ceiling_mpix_per_s =
-      algorithm.threaded ? ceilings.threaded_mpix_per_s() : ceilings.single_thread_mpix_per_s;
-
-  m.error_triangles = count_triangles(prepared.error_scene);
   m.error = measure_error(algorithm, prepared.error_scene);
+  return m;
+}
+
+Measurement measure(const ExternalPeer& peer, const PreparedScene& prepared, const TimingPlan& plan,
+                    const FillCeilings& ceilings) {
+  Measurement m = row_for(peer.name, peer.chapter, peer.rule, peer.threaded, prepared, ceilings);
+  const PeerResult result = peer.measure(prepared, plan);
+  m.timing = result.timing;
+  m.written_pixels = result.written_pixels;
+  m.error = result.error;
   return m;
 }
 
@@ -103,14 +121,14 @@ std::string progress_line(std::size_t done, std::size_t total, const Measurement
 }  // namespace
 
 BenchReport run_benchmark(std::span<const TriangleAlgorithm> algorithms,
-                          const BenchSettings& settings, const Machine& machine,
-                          std::ostream& progress) {
+                          std::span<const ExternalPeer> peers, const BenchSettings& settings,
+                          const Machine& machine, std::ostream& progress) {
   BenchReport report;
   report.machine = machine;
   report.size = settings.size;
   report.error_triangle_limit = settings.error_triangle_limit;
   const auto start = std::chrono::steady_clock::now();
-  const std::size_t total = settings.scenes.size() * algorithms.size();
+  const std::size_t total = settings.scenes.size() * (algorithms.size() + peers.size());
   std::vector<double> single_ceilings, threaded_ceilings;
   for (const SuiteScene& suite : settings.scenes) {
     const PreparedScene prepared = prepare_scene(suite, settings.error_triangle_limit);
@@ -122,13 +140,18 @@ BenchReport run_benchmark(std::span<const TriangleAlgorithm> algorithms,
     single_ceilings.push_back(ceilings.single_thread_mpix_per_s);
     threaded_ceilings.push_back(ceilings.threads_mpix_per_s);
     report.ceilings.threads = ceilings.threads;
-    for (const TriangleAlgorithm& algorithm : algorithms) {
-      report.rows.push_back(measure(algorithm, prepared, settings.timing, ceilings));
+    const auto record = [&](Measurement row) {
+      report.rows.push_back(std::move(row));
       const double elapsed =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       progress << progress_line(report.rows.size(), total, report.rows.back(), elapsed)
                << std::endl;  // flushed: the line is the progress
+    };
+    for (const TriangleAlgorithm& algorithm : algorithms) {
+      record(measure(algorithm, prepared, settings.timing, ceilings));
     }
+    for (const ExternalPeer& peer : peers)
+      record(measure(peer, prepared, settings.timing, ceilings));
   }
   report.ceilings.single_thread_mpix_per_s = median_of(single_ceilings);
   report.ceilings.threads_mpix_per_s = median_of(threaded_ceilings);

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <functional>
 #include <ostream>
 #include <span>
 #include <string>
@@ -83,6 +84,28 @@ std::uint64_t count_written_pixels(const TriangleAlgorithm& algorithm, const Sce
 Measurement measure(const TriangleAlgorithm& algorithm, const PreparedScene& prepared,
                     const TimingPlan& plan, const FillCeilings& ceilings);
 
+/// What an external rasterizer measured on one prepared scene: plain numbers, so they can come
+/// back from a child process.
+struct PeerResult {
+  Timing timing;                     ///< seconds per draw of the whole scene
+  std::uint64_t written_pixels = 0;  ///< pixel writes of one draw of the scene
+  ErrorReport error;                 ///< against the oracle, on the error scene
+};
+
+/// A rasterizer that is not one of the book's (Mesa's llvmpipe), measured beside them.
+struct ExternalPeer {
+  std::string name;     ///< its row in the report, e.g. "mesa_llvmpipe_1_thread"
+  std::string chapter;  ///< where the report files it: "external"
+  std::string rule;     ///< what it is expected to follow
+  bool threaded = false;
+  /// Times it on the prepared scene (as measure does an algorithm) and measures its error.
+  std::function<PeerResult(const PreparedScene&, const TimingPlan&)> measure;
+};
+
+/// One external peer on one prepared scene, as a row like any algorithm's.
+Measurement measure(const ExternalPeer& peer, const PreparedScene& prepared, const TimingPlan& plan,
+                    const FillCeilings& ceilings);
+
 /// Everything one run measured.
 struct BenchReport {
   Machine machine;
@@ -94,10 +117,10 @@ struct BenchReport {
   std::vector<Measurement> rows;  ///< scene by scene, every algorithm on each
 };
 
-/// Runs every algorithm on every scene of the settings, printing one progress line per
-/// (algorithm, scene) to progress.
+/// Runs every algorithm, then every external peer, on every scene of the settings, printing one
+/// progress line per (algorithm or peer, scene) to progress.
 BenchReport run_benchmark(std::span<const TriangleAlgorithm> algorithms,
-                          const BenchSettings& settings, const Machine& machine,
-                          std::ostream& progress);
+                          std::span<const ExternalPeer> peers, const BenchSettings& settings,
+                          const Machine& machine, std::ostream& progress);
 
 }  // namespace tri::ch09

@@ -1,0 +1,54 @@
+/// @file
+/// Mesa's software rasterizer, llvmpipe, drawing into memory through OSMesa: the external peer
+/// the report measures beside the book's algorithms. Built only when OSMesa is installed.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "error_metrics.hpp"
+#include "scene.hpp"
+
+namespace tri::ch09 {
+
+/// An OSMesa context current on this thread while the object lives, drawing into a width x height
+/// buffer it owns with the canvas's coordinates (y up, pixel (i, j) sampled at (i, j)).
+class LlvmpipeCanvas {
+ public:
+  /// What the buffer holds: the picture (RGBA8, as our canvas) or write counts (a float per
+  /// channel, every triangle adds 1 to red by additive blending, so counts are exact).
+  enum class Pixels { rgba8, write_counts };
+
+  /// Throws std::runtime_error when OSMesa cannot create or bind the context.
+  LlvmpipeCanvas(int width, int height, Pixels pixels);
+  ~LlvmpipeCanvas();
+  LlvmpipeCanvas(const LlvmpipeCanvas&) = delete;
+  LlvmpipeCanvas& operator=(const LlvmpipeCanvas&) = delete;
+
+  /// GL_RENDERER, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)".
+  std::string renderer() const;
+
+  /// Copies the triangles into a GL vertex buffer, once, so draw() only draws.
+  void upload(std::span<const SceneTriangle> triangles);
+
+  /// Draws the uploaded triangles and waits until they are in the buffer (glFinish).
+  void draw();
+
+  /// Clears, draws the triangles once and returns the counts (Pixels::write_counts only).
+  WriteCounts write_counts(std::span<const SceneTriangle> triangles);
+
+  /// The colour of pixel (x, y) (Pixels::rgba8 only).
+  Color pixel(int x, int y) const;
+
+ private:
+  struct Context;
+  std::unique_ptr<Context> context_;
+};
+
+/// A CountingDraw for measure_error: llvmpipe's write counts on a fresh width x height buffer.
+WriteCounts llvmpipe_write_counts(int width, int height, std::span<const SceneTriangle> triangles);
+
+}  // namespace tri::ch09

@@ -1,0 +1,59 @@
+#include "llvmpipe_peer.hpp"
+
+#include <cstdlib>
+#include <numeric>
+#include <optional>
+#include <string>
+
+#include "child_process.hpp"
+#include "llvmpipe_canvas.hpp"
+
+namespace tri::ch09 {
+
+PeerResult measure_llvmpipe_here(const PreparedScene& prepared, const TimingPlan& plan) {
+  const int width = prepared.scene.width, height = prepared.scene.height;
+  PeerResult result;
+  {
+    // As for the book's algorithms: the buffer and the triangles are ready before the clock.
+    LlvmpipeCanvas canvas(width, height, LlvmpipeCanvas::Pixels::rgba8);
+    canvas.upload(prepared.triangles);
+    result.timing = time_runs([&canvas] { canvas.draw(); }, plan);
+  }
+  LlvmpipeCanvas counter(width, height, LlvmpipeCanvas::Pixels::write_counts);
+  const WriteCounts drawn = counter.write_counts(prepared.triangles);
+  result.written_pixels =
+      std::accumulate(drawn.counts.begin(), drawn.counts.end(), std::uint64_t{0});
+  result.error = measure_error(
+      [&counter, width, height](int w, int h, std::span<const SceneTriangle> triangles) {
+        if (w != width || h != height) return llvmpipe_write_counts(w, h, triangles);
+        return counter.write_counts(triangles);  // one context for all six vertex orders
+      },
+      prepared.error_scene);
+  return result;
+}
+
+namespace {
+
+// A peer whose measurement runs in a child with LP_NUM_THREADS set (or removed, for nothing).
+ExternalPeer llvmpipe_peer(std::string name, bool threaded, std::optional<std::string> threads) {
+  return {std::move(name), "external", "bottom-left", threaded,
+          [threads](const PreparedScene& prepared, const TimingPlan& plan) {
+            return run_in_child<PeerResult>([&] {
+              if (threads) {
+                ::setenv("LP_NUM_THREADS", threads->c_str(), 1);
+              } else {
+                ::unsetenv("LP_NUM_THREADS");
+              }
+              return measure_llvmpipe_here(prepared, plan);
+            });
+          }};
+}
+
+}  // namespace
+
+std::vector<ExternalPeer> llvmpipe_peers() {
+  return {llvmpipe_peer("mesa_llvmpipe_1_thread", false, "0"),
+          llvmpipe_peer("mesa_llvmpipe_default", true, std::nullopt)};
+}
+
+}  // namespace tri::ch09

@@ -1,0 +1,165 @@
+#include <algorithm>
+#include <catch2/catch.hpp>
+#include <cstring>
+#include <numeric>
+#include <vector>
+
+#include "child_process.hpp"
+#include "error_metrics.hpp"
+#include "llvmpipe_canvas.hpp"
+#include "llvmpipe_peer.hpp"
+#include "registry.hpp"
+#include "render_scene.hpp"
+#include "scene_generators.hpp"
+
+using tri::ch09::LlvmpipeCanvas;
+
+// Mesa is only ever touched in child processes here, as in the benchmark: a process that has
+// started llvmpipe's threads cannot fork a child that uses Mesa again (its locks are copied held).
+namespace {
+
+// llvmpipe's write counts of the triangles, drawn in a child process.
+std::vector<std::uint32_t> llvmpipe_counts_in_child(int width, int height,
+                                                    std::span<const tri::SceneTriangle> triangles) {
+  const std::string bytes = tri::ch09::run_in_child_process([&] {
+    const auto counts = tri::ch09::llvmpipe_write_counts(width, height, triangles).counts;
+    return std::string(reinterpret_cast<const char*>(counts.data()),
+                       counts.size() * sizeof(std::uint32_t));
+  });
+  std::vector<std::uint32_t> counts(bytes.size() / sizeof(std::uint32_t));
+  std::memcpy(counts.data(), bytes.data(), counts.size() * sizeof(std::uint32_t));
+  return counts;
+}
+
+tri::WriteCounts oracle_counts(int width, int height,
+                               std::span<const tri::SceneTriangle> triangles) {
+  const auto all = tri::registered_algorithms();
+  return tri::draw_write_counts(*tri::find_algorithm(all, "exact_oracle"), width, height,
+                                triangles);
+}
+
+// The scene turned upside down: pixel row j becomes row height - 1 - j.
+std::vector<tri::SceneTriangle> mirrored(std::span<const tri::SceneTriangle> triangles,
+                                         int height) {
+  std::vector<tri::SceneTriangle> out(triangles.begin(), triangles.end());
+  for (auto& t : out) {
+    for (auto& v : t.vertices) v.y = (height - 1) - v.y;
+  }
+  return out;
+}
+
+std::vector<std::uint32_t> rows_flipped(const std::vector<std::uint32_t>& counts, int width,
+                                        int height) {
+  std::vector<std::uint32_t> out(counts.size());
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) out[y * width + x] = counts[(height - 1 - y) * width + x];
+  }
+  return out;
+}
+
+tri::Scene scene_of(tri::SceneRecipe::Kind kind, int grid_bits, std::uint64_t seed) {
+  tri::SceneRecipe recipe;
+  recipe.kind = kind;
+  recipe.width = 64;
+  recipe.height = 48;
+  recipe.triangles = 300;
+  recipe.min_extent = 0.5;
+  recipe.max_extent = 12;
+  recipe.grid_bits = grid_bits;
+  recipe.seed = seed;
+  return tri::generate_scene(recipe);
+}
+
+}  // namespace
+
+TEST_CASE("llvmpipe draws through OSMesa with the canvas's coordinates", "[llvmpipe]") {
+  const std::string renderer = tri::ch09::run_in_child_process(
+      [] { return LlvmpipeCanvas(8, 8, LlvmpipeCanvas::Pixels::write_counts).renderer(); });
+  CHECK(renderer.starts_with("llvmpipe"));
+  // A square from (1, 1) to (6, 6) in two triangles: 5x5 pixels whatever the tie rule, and
+  // each pixel exactly once where the two halves meet.
+  const std::vector<tri::SceneTriangle> square{{{{{1, 1}, {6, 1}, {1, 6}}}, tri::colors::white},
+                                               {{{{6, 1}, {6, 6}, {1, 6}}}, tri::colors::white}};
+  const auto counts = llvmpipe_counts_in_child(8, 8, square);
+  REQUIRE(counts.size() == 64);
+  CHECK(std::accumulate(counts.begin(), counts.end(), 0u) == 25);
+  CHECK(std::count(counts.begin(), counts.end(), 1u) == 25);
+  // llvmpipe keeps the left column and the bottom row; the oracle the left and the top.
+  CHECK(counts[1 * 8 + 1] == 1);
+  CHECK(counts[5 * 8 + 5] == 1);
+  CHECK(counts[6 * 8 + 1] == 0);
+  CHECK(counts[1 * 8 + 6] == 0);
+  CHECK(oracle_counts(8, 8, square).counts[6 * 8 + 1] == 1);
+}
+
+TEST_CASE("llvmpipe's picture has each triangle's colour where it is the only one", "[llvmpipe]") {
+  struct Tally {
+    std::size_t disagreements = 0, red = 0, blue = 0;
+  };
+  const Tally tally = tri::ch09::run_in_child<Tally>([] {
+    const tri::Color red{255, 0, 0, 255}, blue{0, 0, 255, 255};
+    const std::vector<tri::SceneTriangle> two{{{{{2, 2}, {30, 2}, {2, 20}}}, red},
+                                              {{{{40, 10}, {60, 10}, {50, 40}}}, blue}};
+    LlvmpipeCanvas canvas(64, 48, LlvmpipeCanvas::Pixels::rgba8);
+    canvas.upload(two);
+    canvas.draw();
+    const auto counts = tri::ch09::llvmpipe_write_counts(64, 48, two).counts;
+    Tally t;
+    for (int y = 0; y < 48; ++y) {
+      for (int x = 0; x < 64; ++x) {
+        const tri::Color c = canvas.pixel(x, y);
+        t.disagreements += (c == red || c == blue) != (counts[y * 64 + x] > 0);
+        t.red += c == red;
+        t.blue += c == blue;
+      }
+    }
+    return t;
+  });
+  CHECK(tally.disagreements == 0);
+  CHECK(tally.red > 0);
+  CHECK(tally.blue > 0);
+}
+
+TEST_CASE("llvmpipe is exact with the tie rule mirrored: its pixels are the oracle's upside down",
+          "[llvmpipe]") {
+  using Kind = tri::SceneRecipe::Kind;
+  std::uint64_t seed = 70;
+  for (const Kind kind : {Kind::random, Kind::slivers, Kind::fan, Kind::jittered_grid}) {
+    for (const int grid_bits : {0, 4, 8}) {
+      const tri::Scene scene = scene_of(kind, grid_bits, ++seed);
+      const auto triangles = tri::scene_triangles(scene);
+      CAPTURE(static_cast<int>(kind), grid_bits);
+      const auto drawn = llvmpipe_counts_in_child(scene.width, scene.height, triangles);
+      const auto truth =
+          oracle_counts(scene.width, scene.height, mirrored(triangles, scene.height));
+      CHECK(drawn == rows_flipped(truth.counts, scene.width, scene.height));
+    }
+  }
+}
+
+TEST_CASE("The llvmpipe peer measures in a child what it measures here", "[llvmpipe]") {
+  tri::ch09::BenchSettings settings = tri::ch09::bench_settings(tri::ch09::SuiteSize::tiny);
+  const tri::ch09::PreparedScene prepared = tri::ch09::prepare_scene(settings.scenes.front(), 0);
+  const auto here = tri::ch09::run_in_child<tri::ch09::PeerResult>(
+      [&] { return tri::ch09::measure_llvmpipe_here(prepared, settings.timing); });
+  const auto counts =
+      llvmpipe_counts_in_child(prepared.scene.width, prepared.scene.height, prepared.triangles);
+  CHECK(here.written_pixels == std::accumulate(counts.begin(), counts.end(), std::uint64_t{0}));
+  const auto expected = tri::measure_error(
+      [](int w, int h, std::span<const tri::SceneTriangle> t) {
+        return tri::WriteCounts{llvmpipe_counts_in_child(w, h, t)};
+      },
+      prepared.error_scene);
+  CHECK(here.error.missed == expected.missed);
+  CHECK(here.error.extra == expected.extra);
+  CHECK(here.error.covered == expected.covered);
+  CHECK(here.timing.seconds.median > 0);
+  for (const tri::ch09::ExternalPeer& peer : tri::ch09::llvmpipe_peers()) {
+    CAPTURE(peer.name);
+    const tri::ch09::PeerResult there = peer.measure(prepared, settings.timing);
+    CHECK(there.written_pixels == here.written_pixels);
+    CHECK(there.error.missed == here.error.missed);
+    CHECK(there.error.extra == here.error.extra);
+    CHECK(there.error.order_dependent == here.error.order_dependent);
+  }
+}
