@@ -44,7 +44,7 @@ int power_of_two_at_most(int n) {
 
 }  // namespace
 
-LlvmpipeCanvas::LlvmpipeCanvas(int width, int height, Pixels pixels)
+LlvmpipeCanvas::LlvmpipeCanvas(int width, int height, Pixels pixels, Viewport viewport)
     : context_(std::make_unique<Context>()) {
   Context& c = *context_;
   c.width = width;
@@ -64,20 +64,24 @@ LlvmpipeCanvas::LlvmpipeCanvas(int width, int height, Pixels pixels)
     throw std::runtime_error("OSMesa could not bind a " + std::to_string(width) + "x" +
                              std::to_string(height) + " buffer");
   }
-  // The viewport is a power-of-two square reaching one canvas size beyond every side: the float
-  // transforms to NDC and back are then exact (dividing by 48 is not, and llvmpipe snaps what it
-  // gets to its sub-pixel grid), and llvmpipe clips, moving edges, only far outside the buffer.
-  const int side = power_of_two_at_least(std::max(width, height));
-  GLint max_viewport[2] = {0, 0};
-  glGetIntegerv(GL_MAX_VIEWPORT_DIMS, max_viewport);
-  const int span =
-      std::min(4 * side, power_of_two_at_most(std::min(max_viewport[0], max_viewport[1])));
-  const int origin = -(span - side) / 2;
-  glViewport(origin, origin, span, span);
+  // llvmpipe clips triangles that cross the viewport, and the new vertices move the edges a
+  // little: with a viewport of just the buffer, triangles crossing its border lost or gained
+  // pixels. So the viewport reaches one canvas size past every side (a guard band), and its
+  // side is a power of two, so the float transforms to NDC and back are exact, not just close.
+  int x0 = 0, y0 = 0, view_width = width, view_height = height;
+  if (viewport == Viewport::guard_band) {
+    const int side = power_of_two_at_least(std::max(width, height));
+    GLint max_viewport[2] = {0, 0};
+    glGetIntegerv(GL_MAX_VIEWPORT_DIMS, max_viewport);
+    view_width = view_height =
+        std::min(4 * side, power_of_two_at_most(std::min(max_viewport[0], max_viewport[1])));
+    x0 = y0 = -(view_width - side) / 2;
+  }
+  glViewport(x0, y0, view_width, view_height);
   // Window pixel (i, j) is sampled at (i + 0.5, j + 0.5); ours at (i, j): shift by half a pixel.
   glMatrixMode(GL_PROJECTION);
   glLoadIdentity();
-  glOrtho(origin - 0.5, origin + span - 0.5, origin - 0.5, origin + span - 0.5, -1.0, 1.0);
+  glOrtho(x0 - 0.5, x0 + view_width - 0.5, y0 - 0.5, y0 + view_height - 0.5, -1.0, 1.0);
   glMatrixMode(GL_MODELVIEW);
   glLoadIdentity();
   glDisable(GL_DEPTH_TEST);
@@ -152,8 +156,9 @@ Color LlvmpipeCanvas::pixel(int x, int y) const {
   return {c.rgba8[at], c.rgba8[at + 1], c.rgba8[at + 2], c.rgba8[at + 3]};
 }
 
-WriteCounts llvmpipe_write_counts(int width, int height, std::span<const SceneTriangle> triangles) {
-  LlvmpipeCanvas canvas(width, height, LlvmpipeCanvas::Pixels::write_counts);
+WriteCounts llvmpipe_write_counts(int width, int height, std::span<const SceneTriangle> triangles,
+                                  LlvmpipeCanvas::Viewport viewport) {
+  LlvmpipeCanvas canvas(width, height, LlvmpipeCanvas::Pixels::write_counts, viewport);
   return canvas.write_counts(triangles);
 }
 

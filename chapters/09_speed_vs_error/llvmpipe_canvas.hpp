@@ -22,8 +22,13 @@ class LlvmpipeCanvas {
   /// channel, every triangle adds 1 to red by additive blending, so counts are exact).
   enum class Pixels { rgba8, write_counts };
 
+  /// Where GL's viewport lies: far past the buffer, so llvmpipe never clips a triangle near it
+  /// (what the peer uses), or just the buffer, as a windowed program would set it (the
+  /// tests use it to show that clipping moves pixels).
+  enum class Viewport { guard_band, buffer_only };
+
   /// Throws std::runtime_error when OSMesa cannot create or bind the context.
-  LlvmpipeCanvas(int width, int height, Pixels pixels);
+  LlvmpipeCanvas(int width, int height, Pixels pixels, Viewport viewport = Viewport::guard_band);
   ~LlvmpipeCanvas();
   LlvmpipeCanvas(const LlvmpipeCanvas&) = delete;
   LlvmpipeCanvas& operator=(const LlvmpipeCanvas&) = delete;
@@ -49,6 +54,8 @@ class LlvmpipeCanvas {
 };
 
 /// A CountingDraw for measure_error: llvmpipe's write counts on a fresh width x height buffer.
-WriteCounts llvmpipe_write_counts(int width, int height, std::span<const SceneTriangle> triangles);
+WriteCounts llvmpipe_write_counts(
+    int width, int height, std::span<const SceneTriangle> triangles,
+    LlvmpipeCanvas::Viewport viewport = LlvmpipeCanvas::Viewport::guard_band);
 
 }  // namespace tri::ch09

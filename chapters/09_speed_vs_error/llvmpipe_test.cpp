@@ -1,6 +1,7 @@
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cstring>
+#include <iterator>
 #include <numeric>
 #include <vector>
 
@@ -19,10 +20,11 @@ using tri::ch09::LlvmpipeCanvas;
 namespace {
 
 // llvmpipe's write counts of the triangles, drawn in a child process.
-std::vector<std::uint32_t> llvmpipe_counts_in_child(int width, int height,
-                                                    std::span<const tri::SceneTriangle> triangles) {
+std::vector<std::uint32_t> llvmpipe_counts_in_child(
+    int width, int height, std::span<const tri::SceneTriangle> triangles,
+    LlvmpipeCanvas::Viewport viewport = LlvmpipeCanvas::Viewport::guard_band) {
   const std::string bytes = tri::ch09::run_in_child_process([&] {
-    const auto counts = tri::ch09::llvmpipe_write_counts(width, height, triangles).counts;
+    const auto counts = tri::ch09::llvmpipe_write_counts(width, height, triangles, viewport).counts;
     return std::string(reinterpret_cast<const char*>(counts.data()),
                        counts.size() * sizeof(std::uint32_t));
   });
@@ -135,6 +137,31 @@ TEST_CASE("llvmpipe is exact with the tie rule mirrored: its pixels are the orac
       CHECK(drawn == rows_flipped(truth.counts, scene.width, scene.height));
     }
   }
+}
+
+TEST_CASE("With a viewport of just the buffer, llvmpipe's clipping moves border triangles' pixels",
+          "[llvmpipe]") {
+  const tri::Scene scene = scene_of(tri::SceneRecipe::Kind::random, 0, 71);
+  const auto triangles = tri::scene_triangles(scene);
+  const auto inside_the_canvas = [&](const tri::SceneTriangle& t) {
+    return std::all_of(t.vertices.begin(), t.vertices.end(), [&](const auto& v) {
+      return v.x >= 0 && v.y >= 0 && v.x <= scene.width - 1 && v.y <= scene.height - 1;
+    });
+  };
+  std::vector<tri::SceneTriangle> inside;
+  std::copy_if(triangles.begin(), triangles.end(), std::back_inserter(inside), inside_the_canvas);
+  REQUIRE(inside.size() < triangles.size());  // the scene has triangles across the border
+  const auto buffer_only = LlvmpipeCanvas::Viewport::buffer_only;
+  const auto truth = [&](std::span<const tri::SceneTriangle> t) {
+    return rows_flipped(oracle_counts(scene.width, scene.height, mirrored(t, scene.height)).counts,
+                        scene.width, scene.height);
+  };
+  // Inside the viewport nothing is clipped and the mirrored oracle holds, viewport or not...
+  CHECK(llvmpipe_counts_in_child(scene.width, scene.height, inside, buffer_only) == truth(inside));
+  // ...but clipping the others at the buffer's border changes pixels; the guard band does not.
+  CHECK(llvmpipe_counts_in_child(scene.width, scene.height, triangles, buffer_only) !=
+        truth(triangles));
+  CHECK(llvmpipe_counts_in_child(scene.width, scene.height, triangles) == truth(triangles));
 }
 
 TEST_CASE("The llvmpipe peer measures in a child what it measures here", "[llvmpipe]") {
