@@ -29,9 +29,9 @@ std::vector<SceneTriangle> reordered_triangles(const Scene& scene,
   return triangles;
 }
 
+// The draw's counts of the triangles on the scene's canvas, checked to hold one per pixel.
 WriteCounts draw_counts(const CountingDraw& draw, const Scene& scene,
-                        const std::array<int, 3>& order) {
-  const std::vector<SceneTriangle> triangles = reordered_triangles(scene, order);
+                        std::span<const SceneTriangle> triangles) {
   WriteCounts drawn = draw(scene.width, scene.height, triangles);
   const auto pixels =
       static_cast<std::size_t>(scene.width) * static_cast<std::size_t>(scene.height);
@@ -74,7 +74,7 @@ ErrorReport measure_error(const CountingDraw& draw, const Scene& scene) {
                                             CoverageRule::top_left, "", ch07::draw_triangle_oracle};
   const std::vector<SceneTriangle> own_order = reordered_triangles(scene, vertex_orders[0]);
   const WriteCounts truth = draw_write_counts(oracle, scene.width, scene.height, own_order);
-  const WriteCounts drawn = draw_counts(draw, scene, vertex_orders[0]);
+  const WriteCounts drawn = draw_counts(draw, scene, own_order);
   ErrorReport report;
   report.outside_writes = drawn.outside_writes;
   report.rejected = drawn.rejected;
@@ -88,7 +88,8 @@ ErrorReport measure_error(const CountingDraw& draw, const Scene& scene) {
   }
   std::vector<bool> changed(drawn.counts.size(), false);
   for (std::size_t k = 1; k < vertex_orders.size(); ++k) {
-    const WriteCounts other = draw_counts(draw, scene, vertex_orders[k]);
+    const WriteCounts other =
+        draw_counts(draw, scene, reordered_triangles(scene, vertex_orders[k]));
     report.outside_writes = std::max(report.outside_writes, other.outside_writes);
     for (std::size_t i = 0; i < changed.size(); ++i) {
       if (other.counts[i] != drawn.counts[i]) changed[i] = true;
