@@ -6,6 +6,7 @@
 #include <GL/osmesa.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <stdexcept>
 
@@ -29,18 +30,6 @@ struct Vertex {
   float x, y;
   std::uint8_t r, g, b, a;
 };
-
-int power_of_two_at_least(int n) {
-  int side = 1;
-  while (side < n) side *= 2;
-  return side;
-}
-
-int power_of_two_at_most(int n) {
-  int side = 1;
-  while (side * 2 <= n) side *= 2;
-  return side;
-}
 
 }  // namespace
 
@@ -70,11 +59,12 @@ LlvmpipeCanvas::LlvmpipeCanvas(int width, int height, Pixels pixels, Viewport vi
   // side is a power of two, so the float transforms to NDC and back are exact, not just close.
   int x0 = 0, y0 = 0, view_width = width, view_height = height;
   if (viewport == Viewport::guard_band) {
-    const int side = power_of_two_at_least(std::max(width, height));
+    const int side =
+        static_cast<int>(std::bit_ceil(static_cast<unsigned>(std::max(width, height))));
     GLint max_viewport[2] = {0, 0};
     glGetIntegerv(GL_MAX_VIEWPORT_DIMS, max_viewport);
-    view_width = view_height =
-        std::min(4 * side, power_of_two_at_most(std::min(max_viewport[0], max_viewport[1])));
+    const auto max_side = static_cast<unsigned>(std::min(max_viewport[0], max_viewport[1]));
+    view_width = view_height = std::min(4 * side, static_cast<int>(std::bit_floor(max_side)));
     x0 = y0 = -(view_width - side) / 2;
   }
   glViewport(x0, y0, view_width, view_height);
@@ -87,6 +77,12 @@ LlvmpipeCanvas::LlvmpipeCanvas(int width, int height, Pixels pixels, Viewport vi
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_DITHER);
   glShadeModel(GL_FLAT);  // one colour per triangle, as every algorithm of the book draws
+  if (pixels == Pixels::write_counts) {
+    glClearColor(0, 0, 0, 0);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_ONE, GL_ONE);        // every covered sample adds the incoming 1 to what is there
+    glColor4f(1.0f, 0.0f, 0.0f, 0.0f);  // no colour array in this mode: every vertex is this
+  }
   glGenBuffers(1, &c.vertex_buffer);
 }
 
@@ -135,11 +131,7 @@ WriteCounts LlvmpipeCanvas::write_counts(std::span<const SceneTriangle> triangle
     throw std::logic_error("write_counts needs a LlvmpipeCanvas made for write counts");
   }
   upload(triangles);
-  glClearColor(0, 0, 0, 0);
   glClear(GL_COLOR_BUFFER_BIT);
-  glEnable(GL_BLEND);
-  glBlendFunc(GL_ONE, GL_ONE);  // every covered sample adds the incoming 1 to what is there
-  glColor4f(1.0f, 0.0f, 0.0f, 0.0f);
   draw();
   WriteCounts drawn;
   drawn.counts.resize(static_cast<std::size_t>(c.width) * static_cast<std::size_t>(c.height));

@@ -23,10 +23,11 @@ PeerResult measure_llvmpipe_here(const PreparedScene& prepared, const TimingPlan
   const WriteCounts drawn = counter.write_counts(prepared.triangles);
   result.written_pixels =
       std::accumulate(drawn.counts.begin(), drawn.counts.end(), std::uint64_t{0});
+  // One context for all six vertex orders: the error scene has the scene's size, and
+  // measure_error refuses counts of any other size.
   result.error = measure_error(
-      [&counter, width, height](int w, int h, std::span<const SceneTriangle> triangles) {
-        if (w != width || h != height) return llvmpipe_write_counts(w, h, triangles);
-        return counter.write_counts(triangles);  // one context for all six vertex orders
+      [&counter](int, int, std::span<const SceneTriangle> triangles) {
+        return counter.write_counts(triangles);
       },
       prepared.error_scene);
   return result;
