@@ -30,6 +30,10 @@ void FigureWriter::save_text(std::string_view name, std::string_view text) {
   log_ << "wrote " << path.string() << "\n";
 }
 
+void FigureWriter::save_svg(std::string_view name, std::string_view svg) {
+  save_text(std::string(name) + ".svg", svg);
+}
+
 Canvas magnified(const Canvas& canvas, int factor) {
   if (factor < 1) throw std::invalid_argument("magnification factor must be at least 1");
   Canvas big(canvas.width() * factor, canvas.height() * factor);

@@ -1,0 +1,133 @@
+// The pixel diagram writer: where things land in the SVG, and that the output is stable.
+#include "pixel_diagram.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <string>
+
+namespace {
+
+using tri::PixelDiagram;
+namespace dc = tri::diagram_colors;
+
+std::size_t occurrences(const std::string& text, const std::string& what) {
+  std::size_t count = 0;
+  for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++count;
+  return count;
+}
+
+}  // namespace
+
+TEST_CASE("A pixel diagram puts pixel (i, j) in the cell of column i, counted from the top row",
+          "[pixel_diagram]") {
+  // Pixels 0..3 by 0..2 at 10 units per cell: the grid starts at (34, 34); y = 2 is the top row.
+  PixelDiagram diagram({0, 0}, {3, 2}, "t", 10);
+  diagram.fill({1, 2}, dc::orange);
+  diagram.fill({3, 0}, dc::blue);
+  const std::string svg = diagram.svg();
+  CHECK(svg.find("<rect x=\"44\" y=\"34\" width=\"10\" height=\"10\" fill=\"#e69f00\"/>") !=
+        std::string::npos);
+  CHECK(svg.find("<rect x=\"64\" y=\"54\" width=\"10\" height=\"10\" fill=\"#0072b2\"/>") !=
+        std::string::npos);
+}
+
+TEST_CASE("A pixel diagram merges a run of equal pixels along a row into one rectangle",
+          "[pixel_diagram]") {
+  PixelDiagram diagram({0, 0}, {9, 0}, "t", 10);
+  for (int x = 2; x <= 6; ++x) diagram.fill({x, 0}, dc::green);
+  const std::string svg = diagram.svg();
+  CHECK(occurrences(svg, "fill=\"#009e73\"") == 1);
+  CHECK(svg.find("width=\"50\" height=\"10\" fill=\"#009e73\"") != std::string::npos);
+}
+
+TEST_CASE("A pixel diagram draws the ideal geometry at exact pixel coordinates, y up",
+          "[pixel_diagram]") {
+  // The centre of pixel (0, 0) in a 2x2 grid of 20-unit cells is at (34 + 10, 34 + 20 + 10).
+  PixelDiagram diagram({0, 0}, {1, 1}, "t", 20);
+  diagram.line({0, 0}, {1, 0.5}, dc::black, 2);
+  const std::string svg = diagram.svg();
+  CHECK(svg.find("x1=\"44\" y1=\"64\" x2=\"64\" y2=\"54\"") != std::string::npos);
+}
+
+TEST_CASE("A pixel diagram labels a vertex with its exact coordinates", "[pixel_diagram]") {
+  PixelDiagram diagram({0, 0}, {4, 4}, "t");
+  diagram.vertex({2.5, -0.125}, "A");
+  diagram.vertex({1e7, 3}, "B");
+  const std::string svg = diagram.svg();
+  CHECK(svg.find(">A (2.5, -0.125)</text>") != std::string::npos);
+  CHECK(svg.find(">B (1e+07, 3)</text>") != std::string::npos);
+}
+
+TEST_CASE("A pixel diagram has its title, pixel numbers and every legend entry inside the image",
+          "[pixel_diagram]") {
+  PixelDiagram diagram({10, 20}, {12, 21}, "Ties & <edges>", 24);
+  diagram.legend_fill("covered", dc::covered);
+  diagram.legend_mark("centre on an edge", tri::PixelMark::ring);
+  diagram.legend_line("ideal edge", dc::blue, true);
+  diagram.legend_note("one note");
+  const std::string svg = diagram.svg();
+  CHECK(svg.find(">Ties &amp; &lt;edges&gt;</text>") != std::string::npos);
+  for (const char* tick : {">10</text>", ">11</text>", ">12</text>", ">20</text>", ">21</text>"}) {
+    CHECK(svg.find(tick) != std::string::npos);
+  }
+  for (const char* entry : {">covered</text>", ">centre on an edge</text>", ">ideal edge</text>",
+                            ">one note</text>"}) {
+    CHECK(svg.find(entry) != std::string::npos);
+  }
+  CHECK(svg.find("stroke-dasharray") != std::string::npos);
+}
+
+TEST_CASE("A pixel diagram shows pixel centres on zoomed grids and can hide them",
+          "[pixel_diagram]") {
+  PixelDiagram zoomed({0, 0}, {3, 3}, "t", 24);
+  CHECK(zoomed.svg().find("centres") != std::string::npos);
+  zoomed.show_centres(false);
+  CHECK(zoomed.svg().find("centres") == std::string::npos);
+  PixelDiagram dense({0, 0}, {3, 3}, "t", 3);
+  CHECK(dense.svg().find("centres") == std::string::npos);
+}
+
+TEST_CASE("A pixel diagram ignores pixels and marks outside its range", "[pixel_diagram]") {
+  PixelDiagram diagram({0, 0}, {1, 1}, "t", 10);
+  const std::string before = diagram.svg();
+  diagram.fill({2, 0}, dc::orange);
+  diagram.fill({0, -1}, dc::orange);
+  diagram.mark({5, 5}, tri::PixelMark::cross);
+  diagram.pixel_text({-1, 0}, "2");
+  CHECK(diagram.svg() == before);
+}
+
+TEST_CASE("A pixel diagram copies a canvas's colours except the skipped background",
+          "[pixel_diagram]") {
+  tri::Canvas canvas(3, 1, tri::colors::black);
+  canvas.put_pixel(1, 0, tri::colors::yellow);
+  PixelDiagram diagram({5, 5}, {7, 5}, "t", 10);
+  diagram.fill_from(canvas, tri::colors::black, {5, 5});
+  const std::string svg = diagram.svg();
+  CHECK(occurrences(svg, "fill=\"#ffff00\"") == 1);
+  CHECK(svg.find("<rect x=\"44\" y=\"34\" width=\"10\" height=\"10\" fill=\"#ffff00\"/>") !=
+        std::string::npos);
+  CHECK(occurrences(svg, "fill=\"#000000\"/>") == 0);
+}
+
+TEST_CASE("Side-by-side diagrams keep their patterns apart", "[pixel_diagram]") {
+  const std::vector<PixelDiagram> panels = {PixelDiagram({0, 0}, {2, 2}, "left"),
+                                            PixelDiagram({0, 0}, {2, 2}, "right")};
+  const std::string svg = tri::side_by_side(panels, "both");
+  CHECK(svg.find("id=\"p0-grid\"") != std::string::npos);
+  CHECK(svg.find("id=\"p1-grid\"") != std::string::npos);
+  CHECK(svg.find(">both</text>") != std::string::npos);
+}
+
+TEST_CASE("A pixel diagram is the same bytes every time and refuses an empty range",
+          "[pixel_diagram]") {
+  const auto draw = [] {
+    PixelDiagram diagram({-2, -2}, {2, 2}, "t");
+    diagram.triangle({-1.5, -1}, {1.25, 0}, {0, 1.75}, dc::blue);
+    diagram.mark({0, 0}, tri::PixelMark::hatch, dc::vermillion);
+    return diagram.svg();
+  };
+  CHECK(draw() == draw());
+  CHECK_THROWS_AS(PixelDiagram({1, 0}, {0, 0}, "t"), std::invalid_argument);
+  CHECK_THROWS_AS(PixelDiagram({0, 0}, {1, 1}, "t", 0.5), std::invalid_argument);
+}
