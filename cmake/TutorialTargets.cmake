@@ -21,15 +21,34 @@ endif()
 
 set(TUTORIAL_FIGURE_COMMANDS "" CACHE INTERNAL "")
 
-# tutorial_chapter_executable(<nn_name> <libraries>...)
-# Builds the chapter's executable <nn_name> from main.cpp and registers it with the 'figures'
-# target so that the run command renders its figures.
-function(tutorial_chapter_executable chapter)
-  add_executable(${chapter} main.cpp)
-  target_link_libraries(${chapter} PRIVATE ${ARGN} tutorial_options)
+set(TUTORIAL_GOLDEN_PROGRAMS "" CACHE INTERNAL "")
+
+# tutorial_figure_program(<target> [TIMED])
+# Registers a program that renders figures with --out DIR: the 'figures' target runs it, and,
+# unless its figures come from a timed run (TIMED), the golden-figure tests compare what it
+# renders with the copies committed in docs/figures.
+function(tutorial_figure_program target)
+  cmake_parse_arguments(ARG "TIMED" "" "" ${ARGN})
   set(TUTORIAL_FIGURE_COMMANDS ${TUTORIAL_FIGURE_COMMANDS}
-      COMMAND $<TARGET_FILE:${chapter}> --out "${TUTORIAL_FIGURES_DIR}"
+      COMMAND $<TARGET_FILE:${target}> --out "${TUTORIAL_FIGURES_DIR}"
       CACHE INTERNAL "")
+  if(NOT ARG_TIMED)
+    set(TUTORIAL_GOLDEN_PROGRAMS ${TUTORIAL_GOLDEN_PROGRAMS} ${target} CACHE INTERNAL "")
+  endif()
+endfunction()
+
+# tutorial_chapter_executable(<nn_name> [TIMED_FIGURES] <libraries>...)
+# Builds the chapter's executable <nn_name> from main.cpp and registers it as a figure program
+# (see tutorial_figure_program) so that the run command renders its figures.
+function(tutorial_chapter_executable chapter)
+  cmake_parse_arguments(ARG "TIMED_FIGURES" "" "" ${ARGN})
+  add_executable(${chapter} main.cpp)
+  target_link_libraries(${chapter} PRIVATE ${ARG_UNPARSED_ARGUMENTS} tutorial_options)
+  if(ARG_TIMED_FIGURES)
+    tutorial_figure_program(${chapter} TIMED)
+  else()
+    tutorial_figure_program(${chapter})
+  endif()
 endfunction()
 
 # tutorial_tests(<target> <test prefix> SOURCES... LIBRARIES... [LABELS...])
