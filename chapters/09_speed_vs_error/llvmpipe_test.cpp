@@ -9,11 +9,13 @@
 #include "error_metrics.hpp"
 #include "llvmpipe_canvas.hpp"
 #include "llvmpipe_peer.hpp"
+#include "peer_test_support.hpp"
 #include "registry.hpp"
 #include "render_scene.hpp"
 #include "scene_generators.hpp"
 
 using tri::ch09::LlvmpipeCanvas;
+using tri::ch09::test::oracle_counts;
 
 // Mesa is only ever touched in child processes here, as in the benchmark: a process that has
 // started llvmpipe's threads cannot fork a child that uses Mesa again (its locks are copied held).
@@ -33,13 +35,6 @@ std::vector<std::uint32_t> llvmpipe_counts_in_child(
   return counts;
 }
 
-tri::WriteCounts oracle_counts(int width, int height,
-                               std::span<const tri::SceneTriangle> triangles) {
-  const auto all = tri::registered_algorithms();
-  return tri::draw_write_counts(*tri::find_algorithm(all, "exact_oracle"), width, height,
-                                triangles);
-}
-
 // The scene turned upside down: pixel row j becomes row height - 1 - j.
 std::vector<tri::SceneTriangle> mirrored(std::span<const tri::SceneTriangle> triangles,
                                          int height) {
@@ -57,19 +52,6 @@ std::vector<std::uint32_t> rows_flipped(const std::vector<std::uint32_t>& counts
     for (int x = 0; x < width; ++x) out[y * width + x] = counts[(height - 1 - y) * width + x];
   }
   return out;
-}
-
-tri::Scene scene_of(tri::SceneRecipe::Kind kind, int grid_bits, std::uint64_t seed) {
-  tri::SceneRecipe recipe;
-  recipe.kind = kind;
-  recipe.width = 64;
-  recipe.height = 48;
-  recipe.triangles = 300;
-  recipe.min_extent = 0.5;
-  recipe.max_extent = 12;
-  recipe.grid_bits = grid_bits;
-  recipe.seed = seed;
-  return tri::generate_scene(recipe);
 }
 
 }  // namespace
@@ -128,7 +110,7 @@ TEST_CASE("llvmpipe is exact with the tie rule mirrored: its pixels are the orac
   std::uint64_t seed = 70;
   for (const Kind kind : {Kind::random, Kind::slivers, Kind::fan, Kind::jittered_grid}) {
     for (const int grid_bits : {0, 4, 8}) {
-      const tri::Scene scene = scene_of(kind, grid_bits, ++seed);
+      const tri::Scene scene = tri::ch09::test::small_scene(kind, grid_bits, ++seed);
       const auto triangles = tri::scene_triangles(scene);
       CAPTURE(static_cast<int>(kind), grid_bits);
       const auto drawn = llvmpipe_counts_in_child(scene.width, scene.height, triangles);
@@ -141,7 +123,7 @@ TEST_CASE("llvmpipe is exact with the tie rule mirrored: its pixels are the orac
 
 TEST_CASE("With a viewport of just the buffer, llvmpipe's clipping moves border triangles' pixels",
           "[llvmpipe]") {
-  const tri::Scene scene = scene_of(tri::SceneRecipe::Kind::random, 0, 71);
+  const tri::Scene scene = tri::ch09::test::small_scene(tri::SceneRecipe::Kind::random, 0, 71);
   const auto triangles = tri::scene_triangles(scene);
   const auto inside_the_canvas = [&](const tri::SceneTriangle& t) {
     return std::all_of(t.vertices.begin(), t.vertices.end(), [&](const auto& v) {

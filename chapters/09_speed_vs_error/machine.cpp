@@ -46,7 +46,7 @@ Machine describe_machine(std::span<const ExternalPeer> measured_peers) {
   machine.compiler = compiler_name();
   machine.build_type = TUTORIAL_BUILD_TYPE;
   if (machine.build_type.empty()) machine.build_type = "none given (CMAKE_BUILD_TYPE empty)";
-  machine.osmesa_peer = external_peer_status(measured_peers);
+  machine.external_peers = external_peer_status(measured_peers);
   return machine;
 }
 

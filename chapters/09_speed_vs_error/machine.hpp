@@ -12,11 +12,11 @@ struct ExternalPeer;
 
 /// The machine and build a report was measured with.
 struct Machine {
-  unsigned threads = 0;     ///< std::thread::hardware_concurrency (what nproc prints)
-  std::string cpu_model;    ///< "model name" of /proc/cpuinfo, or "unknown"
-  std::string compiler;     ///< compiler and version this report was built with
-  std::string build_type;   ///< CMake build type, e.g. "Release"
-  std::string osmesa_peer;  ///< one line on the optional OSMesa (llvmpipe) peer
+  unsigned threads = 0;        ///< std::thread::hardware_concurrency (what nproc prints)
+  std::string cpu_model;       ///< "model name" of /proc/cpuinfo, or "unknown"
+  std::string compiler;        ///< compiler and version this report was built with
+  std::string build_type;      ///< CMake build type, e.g. "Release"
+  std::string external_peers;  ///< one line on the optional peers: measured, or why not
 };
 
 /// The value of the first "model name" line of a /proc/cpuinfo text, or "unknown".

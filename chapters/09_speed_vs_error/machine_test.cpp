@@ -20,12 +20,12 @@ TEST_CASE("Without a model name line the CPU model is unknown", "[machine]") {
   CHECK(tri::ch09::cpu_model_from(empty) == "unknown");
 }
 
-TEST_CASE("The machine description names the compiler, the build type and the OSMesa peer",
+TEST_CASE("The machine description names the compiler, the build type and the external peers",
           "[machine]") {
   const auto peers = tri::ch09::external_peers();
   const tri::ch09::Machine machine = tri::ch09::describe_machine(peers);
   CHECK_FALSE(machine.cpu_model.empty());
   CHECK_FALSE(machine.compiler.empty());
   CHECK_FALSE(machine.build_type.empty());
-  CHECK(machine.osmesa_peer == tri::ch09::external_peer_status(peers));
+  CHECK(machine.external_peers == tri::ch09::external_peer_status(peers));
 }

@@ -65,7 +65,7 @@ std::string to_markdown(const BenchReport& report, std::span<const AlgorithmSumm
      << " Mpix/s |\n"
      << "| std::fill ceiling, " << report.ceilings.threads << " threads started per fill | "
      << format_mpix(report.ceilings.threads_mpix_per_s) << " Mpix/s |\n"
-     << "| OSMesa peer | " << machine.osmesa_peer << " |\n\n";
+     << "| External peers | " << machine.external_peers << " |\n\n";
   md << "## How it was measured\n\n"
      << "Each (algorithm, scene): one warm-up draw of the whole scene, repetitions per sample "
         "raised until a sample lasts at least the target, then timed samples with "

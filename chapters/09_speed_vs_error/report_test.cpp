@@ -223,7 +223,8 @@ TEST_CASE("The Markdown report has the machine and a table row per algorithm", "
   CHECK(md.find("| compiler | ") != std::string::npos);
   CHECK(md.find("| build type | ") != std::string::npos);
   CHECK(md.find("| std::fill ceiling, 1 thread | ") != std::string::npos);
-  CHECK(md.find("| OSMesa peer | " + run.report.machine.osmesa_peer + " |") != std::string::npos);
+  CHECK(md.find("| External peers | " + run.report.machine.external_peers + " |") !=
+        std::string::npos);
   const auto names = measured_names();
   const auto lines = lines_of(md);
   const auto header = std::find_if(lines.begin(), lines.end(), [](const std::string& l) {

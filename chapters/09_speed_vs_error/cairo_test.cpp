@@ -1,0 +1,54 @@
+// cairo, filling aliased triangle paths, as a peer: its pixels against the oracle, its limits.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <numeric>
+
+#include "cairo_peer.hpp"
+#include "peer_test_support.hpp"
+
+using namespace tri::ch09::test;
+using Kind = tri::SceneRecipe::Kind;
+
+TEST_CASE("cairo without anti-aliasing matches the oracle where no centre lies on an edge",
+          "[cairo]") {
+  // On the 1/256 grid no pixel centre falls on a shared edge of a fan or a mesh.
+  for (const auto kind : {Kind::fan, Kind::jittered_grid}) {
+    const auto triangles = tri::scene_triangles(small_scene(kind, 8, 11));
+    CAPTURE(static_cast<int>(kind));
+    CHECK(differing_pixels(tri::ch09::cairo_write_counts(64, 48, triangles).counts,
+                           oracle_counts(64, 48, triangles).counts) == 0);
+  }
+}
+
+TEST_CASE("cairo follows no exact tie rule: an integer-grid mesh gets centres twice or never",
+          "[cairo]") {
+  const auto triangles = tri::scene_triangles(small_scene(Kind::jittered_grid, 0, 11));
+  const auto counts = tri::ch09::cairo_write_counts(64, 48, triangles).counts;
+  const auto oracle = oracle_counts(64, 48, triangles).counts;
+  std::size_t twice = 0, never = 0;
+  for (std::size_t i = 0; i < counts.size(); ++i) {
+    twice += counts[i] >= 2 && oracle[i] == 1;
+    never += counts[i] == 0 && oracle[i] == 1;
+  }
+  CHECK(twice + never > 0);
+  CHECK(differing_pixels(counts, oracle) == twice + never);
+}
+
+TEST_CASE("cairo refuses a scene beyond its 24.8 fixed-point range, naming the limit", "[cairo]") {
+  const std::vector<tri::SceneTriangle> far{{{{{0, 0}, {1e7, 0}, {0, 5}}}, tri::colors::white}};
+  CHECK_THROWS_WITH(tri::ch09::cairo_write_counts(8, 8, far),
+                    Catch::Contains("cairo cannot draw this scene") && Catch::Contains("8000000"));
+}
+
+TEST_CASE("cairo's row in the report: timed, with its error measured", "[cairo]") {
+  const auto settings = tri::ch09::bench_settings(tri::ch09::SuiteSize::tiny);
+  const tri::ch09::ExternalPeer peer = tri::ch09::cairo_peer();
+  CHECK(peer.name == "cairo_no_antialias");
+  CHECK(peer.rule == "approximate");
+  const auto prepared = tri::ch09::prepare_scene(settings.scenes.front(), 0);
+  const tri::ch09::PeerResult result = peer.measure(prepared, settings.timing);
+  CHECK(result.timing.seconds.median > 0);
+  CHECK(result.written_pixels > 0);
+  CHECK(result.error.covered > 0);
+}

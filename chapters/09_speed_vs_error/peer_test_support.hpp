@@ -1,0 +1,49 @@
+// What the external peers' tests share: the oracle's counts and small seeded scenes.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "error_metrics.hpp"
+#include "registry.hpp"
+#include "render_scene.hpp"
+#include "scene_generators.hpp"
+
+namespace tri::ch09::test {
+
+/// The exact oracle's write counts of the triangles on a width x height canvas.
+inline WriteCounts oracle_counts(int width, int height, std::span<const SceneTriangle> triangles) {
+  const auto all = registered_algorithms();
+  return draw_write_counts(*find_algorithm(all, "exact_oracle"), width, height, triangles);
+}
+
+/// 300 seeded triangles of one kind on a 64x48 canvas, vertices on a 1/2^grid_bits grid.
+inline Scene small_scene(SceneRecipe::Kind kind, int grid_bits, std::uint64_t seed) {
+  SceneRecipe recipe;
+  recipe.kind = kind;
+  recipe.width = 64;
+  recipe.height = 48;
+  recipe.triangles = 300;
+  recipe.min_extent = 0.5;
+  recipe.max_extent = 12;
+  recipe.grid_bits = grid_bits;
+  recipe.seed = seed;
+  return generate_scene(recipe);
+}
+
+/// How many pixels two count lists disagree on.
+inline std::size_t differing_pixels(const std::vector<std::uint32_t>& a,
+                                    const std::vector<std::uint32_t>& b) {
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < a.size() && i < b.size(); ++i) n += a[i] != b[i];
+  return n + (a.size() > b.size() ? a.size() - b.size() : b.size() - a.size());
+}
+
+/// A square from (1, 1) to (6, 6) in two triangles on an 8x8 canvas: 5x5 pixel centres inside
+/// or on its border, each owned once by an exact rule.
+inline std::vector<SceneTriangle> split_square() {
+  return {{{{{1, 1}, {6, 1}, {1, 6}}}, colors::white}, {{{{6, 1}, {6, 6}, {1, 6}}}, colors::white}};
+}
+
+}  // namespace tri::ch09::test

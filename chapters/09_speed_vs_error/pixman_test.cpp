@@ -1,0 +1,63 @@
+// pixman's triangle rasterizer as a peer: its pixels against the oracle, its limits, its row.
+#include <catch2/catch.hpp>
+
+#include <numeric>
+#include <stdexcept>
+
+#include "peer_test_support.hpp"
+#include "pixman_peer.hpp"
+
+using namespace tri::ch09::test;
+using Kind = tri::SceneRecipe::Kind;
+
+TEST_CASE(
+    "pixman owns the centres on a shared edge once, like the oracle: the left column and "
+    "the top row",
+    "[pixman]") {
+  const auto square = split_square();
+  const auto counts = tri::ch09::pixman_write_counts(8, 8, square).counts;
+  REQUIRE(counts.size() == 64);
+  CHECK(std::accumulate(counts.begin(), counts.end(), 0u) == 25);
+  CHECK(std::count(counts.begin(), counts.end(), 1u) == 25);
+  CHECK(counts[6 * 8 + 1] == 1);  // (1, 6): on the left edge and the top edge
+  CHECK(counts[2 * 8 + 1] == 1);  // (1, 2): on the left edge
+  CHECK(counts[1 * 8 + 1] == 0);  // (1, 1): on the bottom edge
+  CHECK(counts[3 * 8 + 6] == 0);  // (6, 3): on the right edge
+  CHECK(counts == oracle_counts(8, 8, square).counts);
+}
+
+TEST_CASE(
+    "pixman's pixels equal the oracle's on integer, 1/4, 1/16 and 1/256-grid scenes, ties "
+    "included",
+    "[pixman]") {
+  for (const auto kind : {Kind::random, Kind::slivers, Kind::fan, Kind::jittered_grid}) {
+    for (const int bits : {0, 2, 4, 8}) {
+      const auto triangles = tri::scene_triangles(small_scene(kind, bits, 11));
+      CAPTURE(static_cast<int>(kind), bits);
+      CHECK(differing_pixels(tri::ch09::pixman_write_counts(64, 48, triangles).counts,
+                             oracle_counts(64, 48, triangles).counts) == 0);
+    }
+  }
+}
+
+TEST_CASE("pixman refuses a scene beyond its 16.16 fixed-point range, naming the limit",
+          "[pixman]") {
+  const std::vector<tri::SceneTriangle> far{{{{{0, 0}, {40000, 0}, {0, 5}}}, tri::colors::white}};
+  CHECK_THROWS_WITH(tri::ch09::pixman_write_counts(8, 8, far),
+                    Catch::Contains("pixman cannot draw this scene") && Catch::Contains("32767"));
+}
+
+TEST_CASE("pixman's row in the report: timed, and exact on the tiny suite", "[pixman]") {
+  const auto settings = tri::ch09::bench_settings(tri::ch09::SuiteSize::tiny);
+  const tri::ch09::ExternalPeer peer = tri::ch09::pixman_peer();
+  CHECK(peer.name == "pixman_a1");
+  CHECK(peer.rule == "top-left");
+  for (const auto& suite : settings.scenes) {
+    const auto prepared = tri::ch09::prepare_scene(suite, settings.error_triangle_limit);
+    const tri::ch09::PeerResult result = peer.measure(prepared, settings.timing);
+    CAPTURE(suite.name, suite.grid);
+    CHECK(result.timing.seconds.median > 0);
+    CHECK(result.written_pixels == result.error.covered);
+    CHECK(result.error.exact());
+  }
+}
