@@ -12,7 +12,7 @@
 
 namespace tri {
 
-/// Largest canvas side the tutorial accepts (DESIGN section 4).
+/// Largest canvas side the tutorial accepts (@ref design_canvas "docs/DESIGN.md section 3").
 inline constexpr int max_canvas_side = 16384;
 
 /// A grid of RGBA8 pixels. Pixel (x, y) is the sample at the point (x, y): integer coordinates are

@@ -1,6 +1,6 @@
 /// @file
 /// Scenes: a canvas size and an ordered list of coloured triangles and lines, read from a small
-/// text format (DESIGN section 4).
+/// text format (@ref design_scenes "docs/DESIGN.md section 4").
 #pragma once
 
 #include <array>

@@ -1,6 +1,6 @@
 /// @file
 /// The one entry point every triangle algorithm of the book is called through, and what the
-/// registry records about each (DESIGN section 5).
+/// registry records about each (@ref design_registry "docs/DESIGN.md section 5").
 #pragma once
 
 #include <array>

@@ -16,8 +16,9 @@ struct NamedSeed {
   std::vector<std::uint8_t> bytes;
 };
 
-/// Every seed of fuzz_rasterizers: the hard cases of DESIGN section 7 on small canvases, as raw
-/// doubles and as interesting values, including NaN, infinities and values beyond ±2^30.
+/// Every seed of fuzz_rasterizers: the hard cases of
+/// @ref design_hard_cases "docs/DESIGN.md section 7" on small canvases, as raw doubles and as
+/// interesting values, including NaN, infinities and values beyond ±2^30.
 std::vector<NamedSeed> rasterizer_seeds();
 
 }  // namespace tri::fuzz

@@ -28,7 +28,8 @@ struct ParseOutcome {
 /// and within ±2^30, so every triangle passes validate_triangle.
 Findings check_scene_contract(const Scene& scene);
 
-/// Feeds the text to parse_scene and checks its contract (DESIGN section 4):
+/// Feeds the text to parse_scene and checks its contract
+/// (@ref design_scenes "docs/DESIGN.md section 4"):
 ///  - it either returns a scene or throws SceneError, nothing else;
 ///  - a SceneError message is one line that starts with "fuzz.scene:";
 ///  - a returned scene passes check_scene_contract.

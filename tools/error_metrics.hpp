@@ -1,5 +1,6 @@
 /// @file
-/// How wrong an algorithm is on a scene, measured against the exact oracle (DESIGN section 6).
+/// How wrong an algorithm is on a scene, measured against the exact oracle
+/// (@ref design_error "docs/DESIGN.md section 6").
 #pragma once
 
 #include <cstdint>

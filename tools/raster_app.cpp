@@ -40,7 +40,8 @@ void print_list(const std::vector<TriangleAlgorithm>& algorithms, std::ostream& 
   }
 }
 
-// Draws the scene `frames` times after one warm-up frame and prints DESIGN section 9's line.
+// Draws the scene `frames` times after untimed frames and prints the line of docs/DESIGN.md
+// section 9.
 void benchmark(const Scene& scene, const TriangleAlgorithm* algorithm, long long frames,
                std::ostream& out) {
   // One counted frame tells how many pixels a frame writes; it doubles as the warm-up.

@@ -1,5 +1,6 @@
 /// @file
-/// The raster tool: renders any scene with any registered algorithm (DESIGN section 9).
+/// The raster tool: renders any scene with any registered algorithm
+/// (@ref design_command_line "docs/DESIGN.md section 9").
 #pragma once
 
 #include <ostream>

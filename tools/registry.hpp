@@ -1,5 +1,6 @@
 /// @file
-/// The registry: every triangle algorithm of the book, in chapter order (DESIGN section 5).
+/// The registry: every triangle algorithm of the book, in chapter order
+/// (@ref design_registry "docs/DESIGN.md section 5").
 #pragma once
 
 #include <string_view>

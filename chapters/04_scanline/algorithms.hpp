@@ -1,6 +1,6 @@
 /// @file
-/// The triangle algorithms chapter 04 registers (DESIGN section 5): the article's two-loop fill
-/// (step 5) and its single-loop fill (step 6, with the top row).
+/// The triangle algorithms chapter 04 registers (@ref design_registry "docs/DESIGN.md section 5"):
+/// the article's two-loop fill (step 5) and its single-loop fill (step 6, with the top row).
 #pragma once
 
 #include <span>

@@ -82,7 +82,7 @@ TEST_CASE("edge_function rounds each vertex to the nearest pixel centre first", 
 
 TEST_CASE("edge_function draws the pixel centres on a zero-area triangle's segment",
           "[registry][degenerate]") {
-  // The truth (DESIGN section 6) covers nothing here; the inclusive sign test covers the
+  // The truth (docs/DESIGN.md section 6) covers nothing here; the inclusive sign test covers the
   // pixel centres on the segment. Pinned as a documented deviation.
   PixelSet diagonal;
   for (int i = 0; i <= 20; ++i) diagonal.emplace(i, i);

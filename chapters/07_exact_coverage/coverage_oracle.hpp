@@ -1,7 +1,7 @@
 /// @file
-/// The truth every rasterizer of the book is measured against (DESIGN section 6): pixel (i, j)
-/// belongs to triangle abc exactly when the point (i, j) lies inside it, with the top-left rule
-/// deciding points exactly on an edge.
+/// The truth every rasterizer of the book is measured against
+/// (@ref design_error "docs/DESIGN.md section 6"): pixel (i, j) belongs to triangle abc exactly
+/// when the point (i, j) lies inside it, with the top-left rule deciding points exactly on an edge.
 #pragma once
 
 #include <glm/vec2.hpp>

@@ -122,7 +122,7 @@ TEST_CASE("on arbitrary doubles the only deviations are the ones snapping explai
     REQUIRE(fixed == pixels_of(tri::ch07::draw_triangle_oracle, snapped(t, 8)));
     differs_from_unsnapped += fixed != pixels_of(tri::ch07::draw_triangle_oracle, t);
   }
-  // Snapping moves vertices by up to 1/512 pixel, which changes a few triangles' pixels.
+  // Snapping moves vertices by up to 1/512 pixel per axis, which changes a few triangles' pixels.
   CHECK(differs_from_unsnapped > 0);
   CHECK(differs_from_unsnapped < 2000 / 10);
 }

@@ -1,5 +1,5 @@
 /// @file
-/// The triangle algorithms chapter 08 registers (DESIGN section 5).
+/// The triangle algorithms chapter 08 registers (@ref design_registry "docs/DESIGN.md section 5").
 #pragma once
 
 #include <span>

@@ -20,9 +20,9 @@ void write_text(const std::string& path, const std::string& text) {
 int main(int argc, char** argv) {
   const tri::CommandLine command_line(
       "hard_case_matrix",
-      "Runs every registered algorithm on every hard case (DESIGN section 7) against the exact\n"
-      "oracle and writes the matrix: --out DIR writes DIR/hard_cases.md for the docs site,\n"
-      "--csv FILE the numbers the tests pin (tests/hard_cases_expected.csv).",
+      "Runs every registered algorithm on every hard case (docs/DESIGN.md section 7) against\n"
+      "the exact oracle and writes the matrix: --out DIR writes DIR/hard_cases.md for the docs\n"
+      "site, --csv FILE the numbers the tests pin (tests/hard_cases_expected.csv).",
       {{"out", "DIR", "folder for hard_cases.md"}, {"csv", "FILE", "write the CSV to FILE"}});
   return tri::run_command_line(
       command_line, argc, argv, std::cout, std::cerr, [](const tri::CliArguments& args) {

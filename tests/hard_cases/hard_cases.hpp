@@ -1,6 +1,6 @@
 /// @file
-/// The shared hard cases of DESIGN section 7: small scenes, each with a name and the reason it is
-/// hard, that every registered algorithm is run against.
+/// The shared hard cases of docs/DESIGN.md section 7: small scenes, each with a name and the reason
+/// it is hard, that every registered algorithm is run against.
 #pragma once
 
 #include <string>
