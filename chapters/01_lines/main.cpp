@@ -3,7 +3,6 @@
 // ways.
 #include <algorithm>
 #include <array>
-#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -28,31 +27,6 @@ constexpr int star_spoke_count = 24;
 
 std::string point_text(glm::ivec2 p) {
   return "(" + std::to_string(p.x) + ", " + std::to_string(p.y) + ")";
-}
-
-// The part of segment a-b inside the pixels first..last (their outer edges), if any: ideal
-// segments are drawn only over the pixels a cropped diagram shows.
-std::optional<std::array<glm::dvec2, 2>> clipped(glm::dvec2 a, glm::dvec2 b, glm::ivec2 first,
-                                                 glm::ivec2 last) {
-  double t0 = 0, t1 = 1;
-  const glm::dvec2 d = b - a;
-  const std::array<std::pair<double, double>, 4> sides{{
-      {-d.x, a.x - (first.x - 0.5)},
-      {d.x, (last.x + 0.5) - a.x},
-      {-d.y, a.y - (first.y - 0.5)},
-      {d.y, (last.y + 0.5) - a.y},
-  }};
-  for (const auto& [p, q] : sides) {
-    if (p == 0) {
-      if (q < 0) return std::nullopt;
-      continue;
-    }
-    const double t = q / p;
-    if (p < 0) t0 = std::max(t0, t);
-    if (p > 0) t1 = std::min(t1, t);
-  }
-  if (t0 > t1) return std::nullopt;
-  return std::array<glm::dvec2, 2>{a + t0 * d, a + t1 * d};
 }
 
 // One tie step of the star: the two candidate pixels and which algorithms drew each.
@@ -158,12 +132,12 @@ std::string star_differences_figure(const std::vector<StarTie>& ties) {
     diagram.pixel_text(tie.other, tie.drew_other);
   }
   for (const Segment& spoke : tri::ch01::star_spokes(star_centre, star_radius, star_spoke_count)) {
-    if (const auto part = clipped(spoke[0], spoke[1], zoom_first, zoom_last)) {
+    if (const auto part = tri::ch01::clip_to_pixels(spoke[0], spoke[1], zoom_first, zoom_last)) {
       diagram.line((*part)[0], (*part)[1], dc::dark_gray, 1);
     }
   }
   for (const StarTie& tie : ties) {
-    const auto part = clipped(tie.spoke[0], tie.spoke[1], zoom_first, zoom_last);
+    const auto part = tri::ch01::clip_to_pixels(tie.spoke[0], tie.spoke[1], zoom_first, zoom_last);
     diagram.line((*part)[0], (*part)[1], dc::black, 2);
     const glm::dvec2 out = (*part)[1];
     const bool right = out.x > star_centre.x, top = out.y > star_centre.y;
