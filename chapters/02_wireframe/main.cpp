@@ -1,54 +1,192 @@
-// Chapter 02's figures: Gambetta's Figure 7-1, tinyrenderer's three test triangles as outlines,
-// and a close-up where the three lines meet.
+// Chapter 02's figures: Gambetta's Figure 7-1, tinyrenderer's three test triangles as outlines
+// with a zoom on the sharp top of the first, and a diagram of where the three lines meet.
+#include <algorithm>
 #include <array>
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "centered_view.hpp"
 #include "figures.hpp"
+#include "line_reference.hpp"
+#include "line_steps.hpp"
+#include "pixel_diagram.hpp"
 #include "wireframe.hpp"
 
 namespace {
 
 using tri::Canvas;
+using tri::LabelPlace;
+using tri::PixelDiagram;
+using tri::PixelMark;
+using Vertices = std::array<glm::ivec2, 3>;
+namespace dc = tri::diagram_colors;
+
+std::string point_text(glm::ivec2 p) {
+  return "(" + std::to_string(p.x) + ", " + std::to_string(p.y) + ")";
+}
+
+std::size_t drawn_count(const Canvas& canvas, tri::Color background) {
+  return static_cast<std::size_t>(std::count_if(canvas.pixels().begin(), canvas.pixels().end(),
+                                                [&](tri::Color c) { return c != background; }));
+}
+
+// A dashed rectangle around pixels first..last: the region a companion diagram zooms on.
+void outline_region(PixelDiagram& diagram, glm::ivec2 first, glm::ivec2 last, tri::Color color) {
+  const glm::dvec2 lo = glm::dvec2(first) - 0.5, hi = glm::dvec2(last) + 0.5;
+  diagram.line(lo, {hi.x, lo.y}, color, 1.5, true);
+  diagram.line({hi.x, lo.y}, hi, color, 1.5, true);
+  diagram.line(hi, {lo.x, hi.y}, color, 1.5, true);
+  diagram.line({lo.x, hi.y}, lo, color, 1.5, true);
+}
 
 // Figure 7-1: (-200,-250), (200,50), (20,250) in Gambetta's centred coordinates.
-Canvas gambetta_figure_7_1() {
+std::string gambetta_figure_7_1() {
   Canvas canvas(600, 600, tri::colors::white);
   tri::CenteredView view(canvas);
-  tri::ch02::draw_wireframe_triangle(canvas, view.to_canvas({-200, -250}),
-                                     view.to_canvas({200, 50}), view.to_canvas({20, 250}),
-                                     tri::colors::black);
-  return canvas;
-}
+  const std::array<glm::ivec2, 3> centred{{{-200, -250}, {200, 50}, {20, 250}}};
+  Vertices v{};
+  for (std::size_t i = 0; i < v.size(); ++i) v[i] = view.to_canvas(centred[i]);
+  tri::ch02::draw_wireframe_triangle(canvas, v[0], v[1], v[2], dc::black);
 
-// tinyrenderer lesson 2's test triangles on its 200x200 image, in its colours.
-Canvas tinyrenderer_triangles() {
-  Canvas canvas(200, 200);
-  const std::array<std::array<glm::ivec2, 3>, 3> triangles{{
-      {{{10, 70}, {50, 160}, {70, 80}}},
-      {{{180, 50}, {150, 1}, {70, 180}}},
-      {{{180, 150}, {120, 160}, {130, 180}}},
-  }};
-  const std::array<tri::Color, 3> colors{tri::colors::red, tri::colors::white, tri::colors::green};
-  for (std::size_t i = 0; i < triangles.size(); ++i) {
-    const auto& t = triangles[i];
-    tri::ch02::draw_wireframe_triangle(canvas, t[0], t[1], t[2], colors[i]);
+  PixelDiagram diagram({0, 0}, {599, 599},
+                       "Gambetta's Figure 7-1: three lines, " +
+                           std::to_string(drawn_count(canvas, tri::colors::white)) +
+                           " pixels, on a 600x600 canvas with its origin moved to the middle",
+                       1.25);  // 25 units between numbered ticks, room for "100"
+  diagram.fill_from(canvas, tri::colors::white);
+  const std::array<LabelPlace, 3> places{LabelPlace::right, LabelPlace::right, LabelPlace::left};
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    diagram.point(v[i], dc::vermillion, 4);
+    diagram.label(
+        v[i],
+        "P" + std::to_string(i) + " " + point_text(centred[i]) + " = canvas " + point_text(v[i]),
+        places[i]);
   }
-  return canvas;
+  diagram.point({300, 300}, dc::blue, 3);
+  diagram.label({300, 300}, "origin of the centred coordinates, canvas (300, 300)",
+                LabelPlace::below_right, dc::blue);
+  diagram.legend_fill("drawn by draw_wireframe_triangle", dc::black);
+  diagram.legend_note("Vertices (dots): Pi (Gambetta's centred coordinates) = canvas coordinates.");
+  return diagram.svg();
 }
 
-// A small triangle pixel by pixel: white where one edge drew, yellow where two edges met.
-Canvas joints_close_up() {
-  Canvas counted(9, 8);
-  counted.enable_write_counts();
-  tri::ch02::draw_wireframe_triangle(counted, {1, 1}, {7, 3}, {3, 6}, tri::colors::white);
-  Canvas canvas(counted.width(), counted.height(), tri::Color{40, 40, 40, 255});
-  for (int y = 0; y < canvas.height(); ++y) {
-    for (int x = 0; x < canvas.width(); ++x) {
-      const auto count = counted.write_count(x, y);
-      if (count > 0) canvas.put_pixel(x, y, count > 1 ? tri::colors::yellow : tri::colors::white);
+struct ColouredTriangle {
+  Vertices v;
+  tri::Color color;
+  std::string name;
+};
+
+// tinyrenderer lesson 2's test triangles on its 200x200 image.
+const std::array<ColouredTriangle, 3> tinyrenderer_triangles{{
+    {{{{10, 70}, {50, 160}, {70, 80}}}, dc::vermillion, "vermillion (red in tinyrenderer)"},
+    {{{{180, 50}, {150, 1}, {70, 180}}}, dc::black, "black (white in tinyrenderer)"},
+    {{{{180, 150}, {120, 160}, {130, 180}}}, dc::green, "green"},
+}};
+
+constexpr glm::ivec2 apex_first{40, 146}, apex_last{60, 163};
+
+std::string tinyrenderer_figure() {
+  PixelDiagram diagram({0, 0}, {199, 199},
+                       "tinyrenderer lesson 2's three test triangles as outlines, 200x200 image",
+                       3);
+  diagram.show_centres(false);
+  std::string sizes;
+  for (const auto& t : tinyrenderer_triangles) {
+    Canvas canvas(200, 200, tri::colors::white);
+    tri::ch02::draw_wireframe_triangle(canvas, t.v[0], t.v[1], t.v[2], t.color);
+    diagram.fill_from(canvas, tri::colors::white);
+    sizes += (sizes.empty() ? "" : ", ") + std::to_string(drawn_count(canvas, tri::colors::white));
+  }
+  const std::array<std::array<LabelPlace, 3>, 3> places{{
+      {LabelPlace::below_right, LabelPlace::above_left, LabelPlace::right},
+      {LabelPlace::right, LabelPlace::left, LabelPlace::above_left},
+      {LabelPlace::right, LabelPlace::below_left, LabelPlace::above_right},
+  }};
+  for (std::size_t t = 0; t < tinyrenderer_triangles.size(); ++t) {
+    for (std::size_t i = 0; i < 3; ++i) {
+      const glm::ivec2 p = tinyrenderer_triangles[t].v[i];
+      diagram.point(p, dc::dark_gray, 2.5);
+      diagram.label(p, point_text(p), places[t][i], dc::dark_gray);
     }
   }
-  return canvas;
+  outline_region(diagram, apex_first, apex_last, dc::blue);
+  for (const auto& t : tinyrenderer_triangles) diagram.legend_fill(t.name, t.color);
+  diagram.legend_line("the sharp top zoomed in 02_wireframe_tinyrenderer_apex", dc::blue, true);
+  diagram.legend_note("Outlines of " + sizes +
+                      " pixels; vertices labelled with their coordinates.");
+  return diagram.svg();
+}
+
+// Each edge's pixels in its own colour, the pixels two edges draw hatched, the ideal edges and
+// every tie step of an edge (its two candidates ringed), over pixels first..last.
+std::string edges_diagram(const Vertices& v, glm::ivec2 first, glm::ivec2 last,
+                          const std::string& title, const std::array<LabelPlace, 3>& places,
+                          double cell) {
+  PixelDiagram diagram(first, last, title, cell);
+  const std::array<tri::Color, 3> colors{dc::orange, dc::sky_blue, dc::green};
+  const std::array<std::string, 3> names{"P0-P1", "P1-P2", "P2-P0"};
+  const auto edges = tri::ch02::outline_edge_pixels(v[0], v[1], v[2]);
+  std::map<std::pair<int, int>, int> writes;
+  for (std::size_t i = 0; i < edges.size(); ++i) {
+    diagram.fill(edges[i], colors[i]);
+    for (const auto p : edges[i]) ++writes[{p.x, p.y}];
+  }
+  bool any_twice = false;
+  for (const auto& [p, count] : writes) {
+    if (count < 2) continue;
+    any_twice = true;
+    diagram.fill(glm::ivec2(p.first, p.second), dc::yellow);
+    diagram.mark(glm::ivec2(p.first, p.second), PixelMark::hatch, dc::dark_gray);
+  }
+  bool any_tie = false;
+  for (std::size_t i = 0; i < 3; ++i) {
+    const glm::ivec2 a = v[i], b = v[(i + 1) % 3];
+    const bool x_major = std::abs(b.x - a.x) >= std::abs(b.y - a.y);
+    for (const auto& exact : tri::ch01::exact_line_pixels(a, b)) {
+      if (!exact.tie) continue;
+      any_tie = true;
+      diagram.mark(exact.pixel, PixelMark::ring);
+      diagram.mark(exact.pixel - (x_major ? glm::ivec2(0, 1) : glm::ivec2(1, 0)), PixelMark::ring);
+    }
+    if (const auto part = tri::ch01::clip_to_pixels(a, b, first, last)) {
+      diagram.line((*part)[0], (*part)[1], dc::black, 2);
+    }
+  }
+  for (std::size_t i = 0; i < 3; ++i) {
+    if (v[i].x >= first.x && v[i].x <= last.x && v[i].y >= first.y && v[i].y <= last.y) {
+      diagram.vertex(v[i], "P" + std::to_string(i), places[i]);
+    }
+  }
+  for (std::size_t i = 0; i < 3; ++i) {
+    const bool shown = std::any_of(edges[i].begin(), edges[i].end(), [&](glm::ivec2 p) {
+      return p.x >= first.x && p.x <= last.x && p.y >= first.y && p.y <= last.y;
+    });
+    if (shown) diagram.legend_fill("drawn by edge " + names[i] + " only", colors[i]);
+  }
+  if (any_twice) {
+    diagram.legend_fill("drawn by two edges (written twice, hatched)", dc::yellow);
+  }
+  if (any_tie) {
+    diagram.legend_mark("tie: the edge passes exactly halfway between two ringed centres",
+                        PixelMark::ring);
+  }
+  diagram.legend_line("ideal edges", dc::black);
+  return diagram.svg();
+}
+
+std::string joints_figure() {
+  return edges_diagram({{{1, 1}, {7, 3}, {3, 6}}}, {0, 0}, {9, 7},
+                       "Where the lines meet: each vertex is written by both of its edges",
+                       {LabelPlace::below_right, LabelPlace::right, LabelPlace::above_right}, 40);
+}
+
+std::string tinyrenderer_apex_figure() {
+  const Vertices& v = tinyrenderer_triangles[0].v;
+  return edges_diagram(v, apex_first, apex_last,
+                       "tinyrenderer's red triangle, top (50, 160): both edges also draw (50, 159)",
+                       {LabelPlace::right, LabelPlace::above_right, LabelPlace::right}, 24);
 }
 
 }  // namespace
@@ -57,12 +195,14 @@ int main(int argc, char** argv) {
   return tri::run_chapter_program(
       argc, argv, "02_wireframe",
       "Chapter 02, wireframe triangles: Gambetta's Figure 7-1 on a centred 600x600 canvas\n"
-      "(02_wireframe_figure_7_1.png), tinyrenderer's three test triangles outlined on a 200x200\n"
-      "image, magnified 4x (02_wireframe_tinyrenderer.png), and a close-up of where the three\n"
-      "lines meet (02_wireframe_joints.png).",
+      "(02_wireframe_figure_7_1.svg), tinyrenderer's three test triangles outlined on a 200x200\n"
+      "image (02_wireframe_tinyrenderer.svg) with a zoom on the sharp top of the first\n"
+      "(02_wireframe_tinyrenderer_apex.svg), and a diagram of where the three lines meet\n"
+      "(02_wireframe_joints.svg).",
       [](tri::FigureWriter& figures) {
-        figures.save_png("02_wireframe_figure_7_1", gambetta_figure_7_1());
-        figures.save_png("02_wireframe_tinyrenderer", tri::magnified(tinyrenderer_triangles(), 4));
-        figures.save_png("02_wireframe_joints", tri::magnified(joints_close_up(), 32));
+        figures.save_svg("02_wireframe_figure_7_1", gambetta_figure_7_1());
+        figures.save_svg("02_wireframe_tinyrenderer", tinyrenderer_figure());
+        figures.save_svg("02_wireframe_tinyrenderer_apex", tinyrenderer_apex_figure());
+        figures.save_svg("02_wireframe_joints", joints_figure());
       });
 }

@@ -2,6 +2,9 @@
 /// Gambetta's DrawWireframeTriangle: a triangle's outline as three lines.
 #pragma once
 
+#include <array>
+#include <vector>
+
 #include <glm/vec2.hpp>
 
 #include "canvas.hpp"
@@ -16,5 +19,12 @@ namespace tri::ch02 {
 /// is visited, so vertices far outside the canvas cost time and count outside writes.
 void draw_wireframe_triangle(Canvas& canvas, glm::ivec2 p0, glm::ivec2 p1, glm::ivec2 p2,
                              Color color);
+
+/// The pixels that each edge of draw_wireframe_triangle's outline draws, so a figure can show
+/// which edge drew what and where two edges meet: [0] is edge p0-p1, [1] p1-p2, [2] p2-p0, each
+/// sorted by row, then column. Coordinates must be in 0..4095 (the edges are drawn where they
+/// lie); throws std::invalid_argument otherwise.
+std::array<std::vector<glm::ivec2>, 3> outline_edge_pixels(glm::ivec2 p0, glm::ivec2 p1,
+                                                           glm::ivec2 p2);
 
 }  // namespace tri::ch02

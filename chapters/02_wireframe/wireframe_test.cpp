@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <array>
 #include <iterator>
+#include <stdexcept>
 #include <vector>
 
 #include <catch2/catch.hpp>
@@ -182,4 +183,37 @@ TEST_CASE("tinyrenderer's three test triangles outline as closed curves", "[wire
   // The first triangle's top (50,160) is so sharp that both edges also draw (50,159) below it.
   CHECK(sizes ==
         std::vector<std::size_t>{91 + 81 + 61 - 3 - 1, 50 + 180 + 131 - 3, 61 + 21 + 51 - 3});
+}
+
+TEST_CASE("outline_edge_pixels gives each edge's pixels; only the joints are in two",
+          "[wireframe][figure]") {
+  const auto edges = tri::ch02::outline_edge_pixels({1, 1}, {7, 3}, {3, 6});
+  PixelSet all, twice;
+  for (std::size_t i = 0; i < edges.size(); ++i) {
+    const auto& pixels = edges[i];
+    const PixelSet set = [&] {
+      PixelSet s;
+      for (const auto p : pixels) s.insert({p.x, p.y});
+      return s;
+    }();
+    CHECK(set.size() == pixels.size());
+    for (const auto& p : set) {
+      if (!all.insert(p).second) twice.insert(p);
+    }
+  }
+  CHECK(edges[0].size() == 7);  // (1,1)-(7,3): one pixel per column 1..7
+  CHECK(edges[1].size() == 5);  // (7,3)-(3,6): x = 3..7
+  CHECK(edges[2].size() == 6);  // (3,6)-(1,1): steep, y = 1..6
+  CHECK(twice == PixelSet{{1, 1}, {7, 3}, {3, 6}});
+  CHECK(all == outline_pixels({{{1, 1}, {7, 3}, {3, 6}}}));
+  CHECK_THROWS_AS(tri::ch02::outline_edge_pixels({-1, 0}, {3, 3}, {0, 3}), std::invalid_argument);
+}
+
+TEST_CASE("tinyrenderer's red triangle: both edges at its top also draw (50,159)",
+          "[wireframe][figure]") {
+  const auto edges = tri::ch02::outline_edge_pixels({10, 70}, {50, 160}, {70, 80});
+  for (const std::size_t i : {0, 1}) {
+    CHECK(std::count(edges[i].begin(), edges[i].end(), glm::ivec2(50, 159)) == 1);
+  }
+  CHECK(std::count(edges[2].begin(), edges[2].end(), glm::ivec2(50, 159)) == 0);
 }
