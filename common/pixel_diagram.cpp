@@ -369,7 +369,9 @@ std::string PixelDiagram::grid_markup(const std::string& id_prefix) const {
 
 std::string PixelDiagram::axes_markup() const {
   std::string out;
-  const int step = tick_step(cell_, 20);
+  // Room for the widest x label (about 6.5 units per digit at size 10) plus a gap.
+  const auto digits = std::max(std::to_string(first_.x).size(), std::to_string(last_.x).size());
+  const int step = tick_step(cell_, 6.5 * static_cast<double>(digits) + 10);
   const double grid_h = (last_.y - first_.y + 1) * cell_;
   for (int x = first_.x; x <= last_.x; ++x) {
     if (x % step != 0) continue;
