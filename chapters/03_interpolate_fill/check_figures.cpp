@@ -97,7 +97,7 @@ PixelDiagram close_up_panel(int flip) {
   const glm::ivec2 first = close_up_first(flip);
   PixelDiagram panel(first, first + close_up_extent, flip_name(flip), 24);
   panel.fill_from(categories, dc::empty, to_centred);
-  panel.triangle(v[0], v[1], v[2], dc::black, 1.5);
+  clipped_line(panel, v[0], v[1], first, first + close_up_extent, dc::black);
   for (int x = first.x; x <= first.x + close_up_extent.x; ++x) {
     glm::ivec2 tie;
     if (halfway_tie(v[0], v[1], x, tie)) panel.mark(tie, PixelMark::ring);

@@ -30,4 +30,9 @@ PixelDiagram hand_diagram(std::string title, bool edges = true);
 /// than 20 units; this keeps only the x-axis numbers that are multiples of `every`.
 std::string without_crowded_x_ticks(std::string svg, int every);
 
+/// Draws the part of segment a b inside the pixels first..last (the writer does not clip, and a
+/// close-up shows only a stretch of an edge). Liang-Barsky clipping.
+void clipped_line(PixelDiagram& diagram, glm::dvec2 a, glm::dvec2 b, glm::ivec2 first,
+                  glm::ivec2 last, Color color, double width = 1.5);
+
 }  // namespace tri::ch03::figures
