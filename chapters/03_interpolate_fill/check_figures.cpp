@@ -74,20 +74,6 @@ std::string flip_name(int flip) {
   return flip > 0 ? "upright" : "flipped";
 }
 
-// For the edge a b drawn as y = f(x): the outline pixel of column x when the exact y there lies
-// exactly halfway between two centres (a tie, rounded up), or nothing.
-bool halfway_tie(glm::ivec2 a, glm::ivec2 b, int x, glm::ivec2& pixel) {
-  const std::int64_t dx = b.x - a.x, num = std::int64_t{x - a.x} * (b.y - a.y);
-  std::int64_t whole = num / dx, rest = num % dx;
-  if (rest < 0) {  // floor division: rest in [0, dx)
-    rest += dx;
-    --whole;
-  }
-  if (2 * rest != dx) return false;
-  pixel = {x, static_cast<int>(a.y + whole + 1)};
-  return true;
-}
-
 PixelDiagram close_up_panel(int flip) {
   const Vertices v = figure_7_3_vertices(flip);
   Canvas categories(figure_size, figure_size, dc::empty);

@@ -51,6 +51,19 @@ std::string without_crowded_x_ticks(std::string svg, int every) {
   return out;
 }
 
+bool halfway_tie(glm::ivec2 a, glm::ivec2 b, int x, glm::ivec2& pixel) noexcept {
+  if (b.x < a.x) std::swap(a, b);  // the same line, with a positive run
+  const std::int64_t dx = b.x - a.x, num = std::int64_t{x - a.x} * (b.y - a.y);
+  std::int64_t whole = num / dx, rest = num % dx;
+  if (rest < 0) {  // floor division: rest in [0, dx)
+    rest += dx;
+    --whole;
+  }
+  if (2 * rest != dx) return false;
+  pixel = {x, static_cast<int>(a.y + whole + 1)};
+  return true;
+}
+
 PixelDiagram hand_diagram(std::string title, bool edges) {
   PixelDiagram diagram({-1, -1}, {8, 6}, std::move(title), 48);
   const auto [p0, p1, p2] = hand_triangle;

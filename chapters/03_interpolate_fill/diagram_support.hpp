@@ -22,6 +22,11 @@ std::string short_number(double value);
 /// integers, either winding).
 bool centre_in_triangle(glm::ivec2 a, glm::ivec2 b, glm::ivec2 c, glm::ivec2 pixel) noexcept;
 
+/// For the edge a b (a.x != b.x) drawn as y = f(x): when the exact y at column x lies exactly
+/// halfway between two pixel centres (a tie), sets `pixel` to the one rounding halves up picks,
+/// (x, y + 1/2), and returns true; otherwise returns false.
+bool halfway_tie(glm::ivec2 a, glm::ivec2 b, int x, glm::ivec2& pixel) noexcept;
+
 /// A zoomed grid around the hand triangle with its ideal edges (unless `edges` is false) and
 /// its sorted vertices labelled P0, P1, P2 with their coordinates.
 PixelDiagram hand_diagram(std::string title, bool edges = true);
