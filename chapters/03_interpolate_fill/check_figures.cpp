@@ -188,6 +188,32 @@ std::string tinyrenderer_fill_outline() {
   return diagram.svg();
 }
 
+std::string tinyrenderer_fill_outline_close_up() {
+  // The green triangle, the one with the most outline pixels outside its fill.
+  const Vertices green{{{180, 150}, {120, 160}, {130, 180}}};
+  Canvas categories(200, 200, dc::empty);
+  const OutlineCount count = paint_fill_and_outline(categories, green);
+  PixelDiagram diagram({118, 148}, {182, 182},
+                       "tinyrenderer's green triangle zoomed: outline pixels outside the fill", 12);
+  diagram.fill_from(categories, dc::empty);
+  for (int y = 0; y < categories.height(); ++y) {
+    for (int x = 0; x < categories.width(); ++x) {
+      if (categories.pixel(x, y) == outline_outside) diagram.mark({x, y}, PixelMark::cross);
+    }
+  }
+  diagram.triangle(green[0], green[1], green[2], dc::black, 1.25);
+  diagram.vertex(green[0], "P0", LabelPlace::below_left);
+  diagram.vertex(green[1], "P1", LabelPlace::below_right);
+  diagram.vertex(green[2], "P2", LabelPlace::above_right);
+  legend_categories(diagram);
+  diagram.legend_mark("outline outside the fill", PixelMark::cross);
+  diagram.legend_line("ideal edges", dc::black);
+  diagram.legend_note(std::to_string(count.outside) + " of the outline's " +
+                      std::to_string(count.outline) +
+                      " pixels lie outside the fill, all on the two edges wider than tall.");
+  return diagram.svg();
+}
+
 std::string trap_one_short() {
   const auto [a, b, c] = hand_triangle;
   Canvas drawn(16, 16);

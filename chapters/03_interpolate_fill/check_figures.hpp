@@ -14,8 +14,12 @@ std::string figure_7_3(int flip);
 std::string figure_7_3_close_up();
 /// tinyrenderer's three triangles filled, their outlines on top, outline pixels outside marked.
 std::string tinyrenderer_fill_outline();
+/// The green one of those triangles zoomed, each outline pixel outside the fill crossed.
+std::string tinyrenderer_fill_outline_close_up();
 /// The hand triangle's fill with the pixels lost to `y < P2.y` and `x < x_right` marked.
 std::string trap_one_short();
+/// The green one of those triangles zoomed, each outline pixel outside the fill crossed.
+std::string tinyrenderer_fill_outline_close_up();
 /// The hand triangle's fill with and without removing P1's duplicate, the difference marked.
 std::string trap_no_pop_back();
 

@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include "diagram_support.hpp"
+#include "lines.hpp"
 #include "test_helpers.hpp"
 #include "wireframe.hpp"
 
@@ -89,4 +90,24 @@ TEST_CASE("without_crowded_x_ticks drops only the x numbers between multiples", 
   CHECK(occurrences(thinned, tick + "-40<") == 1);
   CHECK(occurrences(thinned, tick + "0<") == 1);
   CHECK(occurrences(thinned, "<text") == occurrences(all, "<text") - 6);  // ±20, ±60, ±100
+}
+
+TEST_CASE(
+    "tinyrenderer's green triangle: its 30 outline pixels outside the fill are on the wide "
+    "edges",
+    "[figures][outline]") {
+  const Vertices green{{{180, 150}, {120, 160}, {130, 180}}};
+  const PixelSet fill = fill_pixels(green, 200, 200);
+  const auto line = [](glm::ivec2 a, glm::ivec2 b) {
+    tri::Canvas canvas(200, 200);
+    canvas.enable_write_counts();
+    tri::ch01::draw_line_gambetta(canvas, a, b, tri::colors::black);
+    return tri::testing::written_pixels(canvas);
+  };
+  const PixelSet wide_a = line(green[0], green[1]), wide_b = line(green[0], green[2]);
+  PixelSet outside = minus(wide_a, fill);
+  for (const auto& p : minus(wide_b, fill)) outside.insert(p);
+  CHECK(outside.size() == 30);
+  // The steep edge P1-P2 is drawn as x = f(y), like the fill: none of its pixels is outside.
+  CHECK(minus(line(green[1], green[2]), fill).empty());
 }

@@ -12,8 +12,8 @@ int main(int argc, char** argv) {
       "triangle (03_step1_sorted.svg ... 03_step5_spans.svg), Figure 7-3 with the outline on\n"
       "top of the fill, upright and flipped (03_figure_7_3.svg, 03_figure_7_3_flipped.svg,\n"
       "03_figure_7_3_close_up.svg), tinyrenderer's triangles filled and outlined\n"
-      "(03_tinyrenderer_fill_outline.svg) and the port's traps (03_trap_one_short.svg,\n"
-      "03_trap_no_pop_back.svg).",
+      "(03_tinyrenderer_fill_outline.svg, 03_tinyrenderer_fill_outline_close_up.svg) and the\n"
+      "port's traps (03_trap_one_short.svg, 03_trap_no_pop_back.svg).",
       [](tri::FigureWriter& figures) {
         figures.save_svg("03_step1_sorted", step1_sorted());
         figures.save_svg("03_step2_edges", step2_edges());
@@ -24,6 +24,8 @@ int main(int argc, char** argv) {
         figures.save_svg("03_figure_7_3_flipped", figure_7_3(-1));
         figures.save_svg("03_figure_7_3_close_up", figure_7_3_close_up());
         figures.save_svg("03_tinyrenderer_fill_outline", tinyrenderer_fill_outline());
+        figures.save_svg("03_tinyrenderer_fill_outline_close_up",
+                         tinyrenderer_fill_outline_close_up());
         figures.save_svg("03_trap_one_short", trap_one_short());
         figures.save_svg("03_trap_no_pop_back", trap_no_pop_back());
       });
