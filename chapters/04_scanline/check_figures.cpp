@@ -94,9 +94,9 @@ PixelDiagram whole_triangle_panel(const ArticleTriangle& t, const char* name, gl
   panel.legend_fill("both", dc::covered);
   panel.legend_fill("only two loops", only_two_color);
   panel.legend_fill("only single loop", only_one_color);
-  panel.legend_fill("row t2.y", unreached_color);
+  panel.legend_fill("row t2.y, missing as published", unreached_color);
   panel.legend_note(std::to_string(counts[0]) + " only two loops, " + std::to_string(counts[1]) +
-                    " only single loop, " + std::to_string(counts[2]) + " row t2.y");
+                    " only single loop, " + std::to_string(counts[2]) + " on row t2.y");
   return panel;
 }
 
