@@ -1,0 +1,99 @@
+#include "diagram_support.hpp"
+
+#include <algorithm>
+#include <array>
+#include <charconv>
+#include <cstdint>
+#include <cstdio>
+#include <string_view>
+#include <utility>
+
+namespace tri::ch03::figures {
+
+std::string short_number(double value) {
+  std::array<char, 32> buffer{};
+  std::snprintf(buffer.data(), buffer.size(), "%.2f", value);
+  std::string text(buffer.data());
+  while (text.back() == '0') text.pop_back();
+  if (text.back() == '.') text.pop_back();
+  return text == "-0" ? "0" : text;
+}
+
+bool centre_in_triangle(glm::ivec2 a, glm::ivec2 b, glm::ivec2 c, glm::ivec2 pixel) noexcept {
+  // Twice the signed area of (p, q, pixel): which side of the edge p q the centre is on.
+  const auto side = [pixel](glm::ivec2 p, glm::ivec2 q) {
+    return (std::int64_t{q.x} - p.x) * (std::int64_t{pixel.y} - p.y) -
+           (std::int64_t{q.y} - p.y) * (std::int64_t{pixel.x} - p.x);
+  };
+  const std::int64_t ab = side(a, b), bc = side(b, c), ca = side(c, a);
+  return (ab >= 0 && bc >= 0 && ca >= 0) || (ab <= 0 && bc <= 0 && ca <= 0);
+}
+
+std::string without_crowded_x_ticks(std::string svg, int every) {
+  // The x-axis numbers are the only centred 10-unit grey texts the writer emits.
+  const std::string tick = R"(font-size="10" text-anchor="middle" fill="#5a5a5a">)";
+  std::string out;
+  std::size_t line_start = 0;
+  while (line_start < svg.size()) {
+    const std::size_t line_end = std::min(svg.find('\n', line_start), svg.size() - 1);
+    const std::string_view line(svg.data() + line_start, line_end - line_start + 1);
+    const std::size_t at = line.find(tick);
+    bool keep = true;
+    if (at != std::string_view::npos) {
+      const std::string_view rest = line.substr(at + tick.size());
+      int value = 0;
+      std::from_chars(rest.data(), rest.data() + rest.size(), value);
+      keep = value % every == 0;
+    }
+    if (keep) out += line;
+    line_start = line_end + 1;
+  }
+  return out;
+}
+
+bool halfway_tie(glm::ivec2 a, glm::ivec2 b, int x, glm::ivec2& pixel) noexcept {
+  if (b.x < a.x) std::swap(a, b);  // the same line, with a positive run
+  const std::int64_t dx = b.x - a.x, num = std::int64_t{x - a.x} * (b.y - a.y);
+  std::int64_t whole = num / dx, rest = num % dx;
+  if (rest < 0) {  // floor division: rest in [0, dx)
+    rest += dx;
+    --whole;
+  }
+  if (2 * rest != dx) return false;
+  pixel = {x, static_cast<int>(a.y + whole + 1)};
+  return true;
+}
+
+PixelDiagram hand_diagram(std::string title, bool edges) {
+  PixelDiagram diagram({-1, -1}, {8, 6}, std::move(title), 48);
+  const auto [p0, p1, p2] = hand_triangle;
+  if (edges) diagram.triangle(p0, p1, p2, diagram_colors::dark_gray, 1.5);
+  diagram.vertex(p0, "P0", LabelPlace::below_right);
+  diagram.vertex(p1, "P1", LabelPlace::below_right);
+  diagram.vertex(p2, "P2", LabelPlace::above_right);
+  return diagram;
+}
+
+void clipped_line(PixelDiagram& diagram, glm::dvec2 a, glm::dvec2 b, glm::ivec2 first,
+                  glm::ivec2 last, Color color, double width) {
+  const glm::dvec2 lo = glm::dvec2(first) - 0.5, hi = glm::dvec2(last) + 0.5, d = b - a;
+  double t0 = 0, t1 = 1;
+  // Each side of the box cuts the parameter range [t0, t1] of a + t d.
+  const std::array<std::pair<double, double>, 4> sides{
+      {{-d.x, a.x - lo.x}, {d.x, hi.x - a.x}, {-d.y, a.y - lo.y}, {d.y, hi.y - a.y}}};
+  for (const auto& [p, q] : sides) {
+    if (p == 0) {
+      if (q < 0) return;  // parallel to this side and outside it
+      continue;
+    }
+    const double r = q / p;
+    if (p < 0) {
+      t0 = std::max(t0, r);
+    } else {
+      t1 = std::min(t1, r);
+    }
+  }
+  if (t0 < t1) diagram.line(a + t0 * d, a + t1 * d, color, width);
+}
+
+}  // namespace tri::ch03::figures

@@ -1,0 +1,113 @@
+// The figures' own arithmetic, and the pixel claims the README reads off them.
+#include <string>
+
+#include <catch2/catch.hpp>
+
+#include "diagram_support.hpp"
+#include "lines.hpp"
+#include "test_helpers.hpp"
+#include "wireframe.hpp"
+
+using namespace tri::ch03;
+using namespace tri::ch03::testing;
+using namespace tri::ch03::figures;
+
+namespace {
+
+std::size_t occurrences(const std::string& text, const std::string& part) {
+  std::size_t count = 0;
+  for (auto at = text.find(part); at != std::string::npos; at = text.find(part, at + 1)) ++count;
+  return count;
+}
+
+}  // namespace
+
+TEST_CASE("Figure labels show at most two decimals and no trailing zeros", "[figures]") {
+  CHECK(short_number(8.0 / 3.0) == "2.67");
+  CHECK(short_number(1.2) == "1.2");
+  CHECK(short_number(6.0) == "6");
+  CHECK(short_number(-0.001) == "0");
+}
+
+TEST_CASE("Step 5's rounded ends reach past the edge at exactly (1,1), (3,1) and (1,2)",
+          "[figures][step5]") {
+  const auto [a, b, c] = hand_triangle;
+  PixelSet outside;
+  for (const auto& p : fill_pixels(hand_triangle, 16, 16)) {
+    if (!centre_in_triangle(a, b, c, {p.first, p.second})) outside.insert(p);
+  }
+  CHECK(outside == PixelSet{{1, 1}, {3, 1}, {1, 2}});
+}
+
+TEST_CASE("Figure 7-3's wide edge ties every fourth column: in the fill upright, out flipped",
+          "[figures][outline]") {
+  // Canvas coordinates of the 600x600 figure: the book's centred ones plus 300.
+  for (const int flip : {1, -1}) {
+    const Vertices v{{{100, 300 - 250 * flip}, {500, 300 + 50 * flip}, {320, 300 + 250 * flip}}};
+    const PixelSet fill = fill_pixels(v, 600, 600);
+    tri::Canvas outline(600, 600);
+    outline.enable_write_counts();
+    tri::ch02::draw_wireframe_triangle(outline, v[0], v[1], v[2], tri::colors::black);
+    int ties = 0;
+    for (int x = v[0].x; x <= v[1].x; ++x) {
+      glm::ivec2 tie;
+      if (!halfway_tie(v[0], v[1], x, tie)) continue;
+      ++ties;
+      CHECK((x - v[0].x) % 4 == 2);
+      CHECK(outline.write_count(tie.x, tie.y) > 0);  // the outline rounds the tie up
+      CHECK(fill.count({tie.x, tie.y}) == (flip > 0 ? 1u : 0u));
+    }
+    CHECK(ties == 100);
+  }
+}
+
+TEST_CASE("A half-way tie is found on edges given either way round", "[figures]") {
+  glm::ivec2 forward, backward;
+  REQUIRE(halfway_tie({0, 0}, {4, 3}, 2, forward));
+  REQUIRE(halfway_tie({4, 3}, {0, 0}, 2, backward));
+  CHECK(forward == glm::ivec2(2, 2));  // y = 1.5 rounds up to 2
+  CHECK(backward == forward);
+  CHECK_FALSE(halfway_tie({0, 0}, {4, 3}, 1, forward));  // y = 0.75
+}
+
+TEST_CASE("clipped_line keeps only the part of a segment over the diagram's pixels", "[figures]") {
+  const glm::ivec2 first{0, 0}, last{9, 9};
+  tri::PixelDiagram clipped(first, last, "t"), expected(first, last, "t");
+  clipped_line(clipped, {-10.5, 4}, {20, 4}, first, last, tri::diagram_colors::black);
+  expected.line({-0.5, 4}, {9.5, 4}, tri::diagram_colors::black, 1.5);
+  CHECK(clipped.svg() == expected.svg());
+  const std::string before = clipped.svg();
+  clipped_line(clipped, {-3, -3}, {-1, 20}, first, last, tri::diagram_colors::black);
+  CHECK(clipped.svg() == before);  // wholly outside: nothing drawn
+}
+
+TEST_CASE("without_crowded_x_ticks drops only the x numbers between multiples", "[figures]") {
+  const tri::PixelDiagram diagram({-100, 0}, {100, 10}, "t", 1);
+  const std::string tick = R"(text-anchor="middle" fill="#5a5a5a">)";
+  const std::string all = diagram.svg(), thinned = without_crowded_x_ticks(all, 40);
+  CHECK(occurrences(all, tick + "-20<") == 1);
+  CHECK(occurrences(thinned, tick + "-20<") == 0);
+  CHECK(occurrences(thinned, tick + "-40<") == 1);
+  CHECK(occurrences(thinned, tick + "0<") == 1);
+  CHECK(occurrences(thinned, "<text") == occurrences(all, "<text") - 6);  // ±20, ±60, ±100
+}
+
+TEST_CASE(
+    "tinyrenderer's green triangle: its 30 outline pixels outside the fill are on the wide "
+    "edges",
+    "[figures][outline]") {
+  const Vertices green{{{180, 150}, {120, 160}, {130, 180}}};
+  const PixelSet fill = fill_pixels(green, 200, 200);
+  const auto line = [](glm::ivec2 a, glm::ivec2 b) {
+    tri::Canvas canvas(200, 200);
+    canvas.enable_write_counts();
+    tri::ch01::draw_line_gambetta(canvas, a, b, tri::colors::black);
+    return tri::testing::written_pixels(canvas);
+  };
+  const PixelSet wide_a = line(green[0], green[1]), wide_b = line(green[0], green[2]);
+  PixelSet outside = minus(wide_a, fill);
+  for (const auto& p : minus(wide_b, fill)) outside.insert(p);
+  CHECK(outside.size() == 30);
+  // The steep edge P1-P2 is drawn as x = f(y), like the fill: none of its pixels is outside.
+  CHECK(minus(line(green[1], green[2]), fill).empty());
+}

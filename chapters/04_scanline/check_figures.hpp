@@ -1,0 +1,17 @@
+/// @file
+/// Chapter 04's comparison figures: where the two-loop, single-loop and published single-loop
+/// fills differ, and the pixels the int casts add, as SVG diagrams.
+#pragma once
+
+#include <string>
+
+namespace tri::ch04::figures {
+
+/// The green triangle zoomed, every pixel where the loop variants differ marked.
+std::string loop_differences();
+/// The red and white triangles whole, the same differences as dots.
+std::string loop_differences_red_white();
+/// The red triangle's lower-left corner: the truncated boundary A against the ideal edge.
+std::string truncation_close_up();
+
+}  // namespace tri::ch04::figures

@@ -1,0 +1,68 @@
+#include "diagram_support.hpp"
+
+#include <algorithm>
+#include <array>
+#include <utility>
+
+#include <cstdint>
+
+#include "boundaries.hpp"
+
+namespace tri::ch04::figures {
+
+Canvas drawn_by(const Step& step, const ArticleTriangle& triangle) {
+  Canvas canvas(article_image_size, article_image_size);
+  canvas.enable_write_counts();
+  step(canvas, triangle.vertices[0], triangle.vertices[1], triangle.vertices[2]);
+  return canvas;
+}
+
+bool centre_in_triangle(const ArticleTriangle& triangle, glm::ivec2 pixel) noexcept {
+  const auto [a, b, c] = triangle.vertices;
+  // Twice the signed area of (p, q, pixel): which side of the edge p q the centre is on.
+  const auto side = [pixel](glm::ivec2 p, glm::ivec2 q) {
+    return (std::int64_t{q.x} - p.x) * (std::int64_t{pixel.y} - p.y) -
+           (std::int64_t{q.y} - p.y) * (std::int64_t{pixel.x} - p.x);
+  };
+  const std::int64_t ab = side(a, b), bc = side(b, c), ca = side(c, a);
+  return (ab >= 0 && bc >= 0 && ca >= 0) || (ab <= 0 && bc <= 0 && ca <= 0);
+}
+
+const ArticleTriangle& diagram_triangle() noexcept {
+  return article_triangles[2];
+}
+
+PixelDiagram green_diagram(std::string title) {
+  PixelDiagram diagram({118, 148}, {182, 182}, std::move(title), 12);
+  const auto [a, b, c] = diagram_triangle().vertices;
+  diagram.triangle(a, b, c, diagram_colors::black, 1.25);
+  const SortedTriangle t = sort_by_y(a, b, c);
+  diagram.vertex(t.t0, "t0", LabelPlace::below_left);
+  diagram.vertex(t.t1, "t1", LabelPlace::below_right);
+  diagram.vertex(t.t2, "t2", LabelPlace::above_right);
+  return diagram;
+}
+
+void clipped_line(PixelDiagram& diagram, glm::dvec2 a, glm::dvec2 b, glm::ivec2 first,
+                  glm::ivec2 last, Color color, double width) {
+  const glm::dvec2 lo = glm::dvec2(first) - 0.5, hi = glm::dvec2(last) + 0.5, d = b - a;
+  double t0 = 0, t1 = 1;
+  // Each side of the box cuts the parameter range [t0, t1] of a + t d.
+  const std::array<std::pair<double, double>, 4> sides{
+      {{-d.x, a.x - lo.x}, {d.x, hi.x - a.x}, {-d.y, a.y - lo.y}, {d.y, hi.y - a.y}}};
+  for (const auto& [p, q] : sides) {
+    if (p == 0) {
+      if (q < 0) return;  // parallel to this side and outside it
+      continue;
+    }
+    const double r = q / p;
+    if (p < 0) {
+      t0 = std::max(t0, r);
+    } else {
+      t1 = std::min(t1, r);
+    }
+  }
+  if (t0 < t1) diagram.line(a + t0 * d, a + t1 * d, color, width);
+}
+
+}  // namespace tri::ch04::figures

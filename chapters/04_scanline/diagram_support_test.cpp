@@ -1,0 +1,65 @@
+// The pixel claims the README reads off the step diagrams of the green triangle.
+#include <catch2/catch.hpp>
+
+#include "boundaries.hpp"
+#include "diagram_support.hpp"
+#include "lower_half.hpp"
+
+using namespace tri::ch04;
+using namespace tri::ch04::figures;
+
+TEST_CASE("On the green triangle the +1 leaves B's last lower-half point at x = 126, not 120",
+          "[figures][step3]") {
+  const auto [a, b, c] = diagram_triangle().vertices;
+  const SortedTriangle t = sort_by_y(a, b, c);
+  REQUIRE(t.t1 == glm::ivec2(120, 160));
+  CHECK(lower_half_ends(t, t.t1.y).b == 126);
+}
+
+TEST_CASE("The green triangle's lower half leaves out 35 centres that lie inside it",
+          "[figures][step4]") {
+  const auto [a, b, c] = diagram_triangle().vertices;
+  const SortedTriangle t = sort_by_y(a, b, c);
+  const tri::Canvas drawn =
+      drawn_by([](tri::Canvas& canvas, glm::ivec2 p, glm::ivec2 q,
+                  glm::ivec2 r) { fill_lower_half(canvas, p, q, r, tri::colors::white); },
+               diagram_triangle());
+  int left_out = 0, drawn_outside_rows = 0;
+  for (int y = 0; y < drawn.height(); ++y) {
+    for (int x = 0; x < drawn.width(); ++x) {
+      const bool in_rows = y >= t.t0.y && y <= t.t1.y;
+      if (!in_rows && drawn.write_count(x, y) > 0) ++drawn_outside_rows;
+      if (in_rows && drawn.write_count(x, y) == 0 &&
+          centre_in_triangle(diagram_triangle(), {x, y})) {
+        ++left_out;
+        CHECK(x < lower_half_ends(t, y).b);  // all left of B's point: B lags, A loses none
+      }
+    }
+  }
+  CHECK(left_out == 35);
+  CHECK(drawn_outside_rows == 0);
+}
+
+TEST_CASE("centre_in_triangle counts centres on an edge as inside, in either winding",
+          "[figures]") {
+  const ArticleTriangle ccw{{{{0, 0}, {4, 0}, {0, 4}}}, tri::colors::white};
+  const ArticleTriangle cw{{{{0, 0}, {0, 4}, {4, 0}}}, tri::colors::white};
+  for (const auto& t : {ccw, cw}) {
+    CHECK(centre_in_triangle(t, {1, 1}));
+    CHECK(centre_in_triangle(t, {2, 2}));  // on the hypotenuse
+    CHECK(centre_in_triangle(t, {0, 0}));  // a vertex
+    CHECK_FALSE(centre_in_triangle(t, {3, 2}));
+    CHECK_FALSE(centre_in_triangle(t, {-1, 0}));
+  }
+}
+
+TEST_CASE("clipped_line keeps only the part of a segment over the diagram's pixels", "[figures]") {
+  const glm::ivec2 first{0, 0}, last{9, 9};
+  tri::PixelDiagram clipped(first, last, "t"), expected(first, last, "t");
+  clipped_line(clipped, {4, -10.5}, {4, 20}, first, last, tri::diagram_colors::black);
+  expected.line({4, -0.5}, {4, 9.5}, tri::diagram_colors::black, 1.5);
+  CHECK(clipped.svg() == expected.svg());
+  const std::string before = clipped.svg();
+  clipped_line(clipped, {20, -3}, {30, 20}, first, last, tri::diagram_colors::black);
+  CHECK(clipped.svg() == before);  // wholly outside: nothing drawn
+}
