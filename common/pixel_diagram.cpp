@@ -4,6 +4,7 @@
 #include <array>
 #include <charconv>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 namespace tri {
@@ -201,11 +202,47 @@ void PixelDiagram::pixel_text(glm::ivec2 pixel, std::string text, Color color) {
   marks_ += text_element(c.x, c.y + size * 0.36, text, "middle", color, size, false);
 }
 
+std::optional<std::array<glm::dvec2, 2>> clip_segment(glm::dvec2 a, glm::dvec2 b, glm::dvec2 lo,
+                                                      glm::dvec2 hi) noexcept {
+  // Liang–Barsky: the part of a + t (b - a), 0 <= t <= 1, on the inner side of all four sides.
+  double t0 = 0, t1 = 1;
+  const glm::dvec2 d = b - a;
+  const double p[4] = {-d.x, d.x, -d.y, d.y};
+  const double q[4] = {a.x - lo.x, hi.x - a.x, a.y - lo.y, hi.y - a.y};
+  for (int i = 0; i < 4; ++i) {
+    if (p[i] == 0) {
+      if (q[i] < 0) return std::nullopt;  // parallel to this side and outside it
+      continue;
+    }
+    const double t = q[i] / p[i];
+    if (p[i] < 0) {
+      t0 = std::max(t0, t);
+    } else {
+      t1 = std::min(t1, t);
+    }
+    if (t0 > t1) return std::nullopt;
+  }
+  return std::array<glm::dvec2, 2>{a + t0 * d, a + t1 * d};
+}
+
 void PixelDiagram::line(glm::dvec2 a, glm::dvec2 b, Color color, double width, bool dashed) {
-  geometry_ += line_element(to_svg(a), to_svg(b), color, width, dashed);
+  const auto visible = clip_segment(a, b, glm::dvec2(first_) - 0.5, glm::dvec2(last_) + 0.5);
+  if (!visible) return;
+  geometry_ += line_element(to_svg((*visible)[0]), to_svg((*visible)[1]), color, width, dashed);
 }
 
 void PixelDiagram::triangle(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, Color color, double width) {
+  const glm::dvec2 lo = glm::dvec2(first_) - 0.5, hi = glm::dvec2(last_) + 0.5;
+  const auto inside = [&](glm::dvec2 p) {
+    return p.x >= lo.x && p.x <= hi.x && p.y >= lo.y && p.y <= hi.y;
+  };
+  if (!(inside(a) && inside(b) && inside(c))) {
+    // Partly outside: its edges, each cut to the grid.
+    line(a, b, color, width);
+    line(b, c, color, width);
+    line(c, a, color, width);
+    return;
+  }
   const glm::dvec2 pa = to_svg(a), pb = to_svg(b), pc = to_svg(c);
   geometry_ += "<polygon points=\"" + unit(pa.x) + "," + unit(pa.y) + " " + unit(pb.x) + "," +
                unit(pb.y) + " " + unit(pc.x) + "," + unit(pc.y) + "\" fill=\"none\" stroke=\"" +

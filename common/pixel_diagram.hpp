@@ -8,6 +8,8 @@
 /// the image. The chapters only say what to draw; this writer decides how it looks.
 #pragma once
 
+#include <array>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -75,9 +77,10 @@ class PixelDiagram {
   /// Writes a short text (a count, a letter) in the middle of a pixel.
   void pixel_text(glm::ivec2 pixel, std::string text, Color color = diagram_colors::black);
 
-  /// A straight segment of the ideal geometry, in pixel coordinates.
+  /// A straight segment of the ideal geometry, in pixel coordinates, cut to the diagram's pixels
+  /// (so a far-away vertex still gives the right direction inside the grid).
   void line(glm::dvec2 a, glm::dvec2 b, Color color, double width = 2, bool dashed = false);
-  /// The three edges of a triangle.
+  /// The three edges of a triangle, cut to the diagram's pixels.
   void triangle(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, Color color, double width = 2);
   /// A filled dot at a point, radius in SVG units.
   void point(glm::dvec2 p, Color color, double radius = 4);
@@ -139,6 +142,10 @@ class PixelDiagram {
   std::string labels_;
   std::vector<LegendEntry> legend_;
 };
+
+/// The part of segment ab inside the box [lo, hi], or nothing when it misses the box.
+std::optional<std::array<glm::dvec2, 2>> clip_segment(glm::dvec2 a, glm::dvec2 b, glm::dvec2 lo,
+                                                      glm::dvec2 hi) noexcept;
 
 /// Several diagrams side by side in one SVG document, top-aligned, with one title above them.
 std::string side_by_side(std::span<const PixelDiagram> panels, const std::string& title);

@@ -70,8 +70,8 @@ TEST_CASE("A pixel diagram has its title, pixel numbers and every legend entry i
   for (const char* tick : {">10</text>", ">11</text>", ">12</text>", ">20</text>", ">21</text>"}) {
     CHECK(svg.find(tick) != std::string::npos);
   }
-  for (const char* entry : {">covered</text>", ">centre on an edge</text>", ">ideal edge</text>",
-                            ">one note</text>"}) {
+  for (const char* entry :
+       {">covered</text>", ">centre on an edge</text>", ">ideal edge</text>", ">one note</text>"}) {
     CHECK(svg.find(entry) != std::string::npos);
   }
   CHECK(svg.find("stroke-dasharray") != std::string::npos);
@@ -130,4 +130,25 @@ TEST_CASE("A pixel diagram is the same bytes every time and refuses an empty ran
   CHECK(draw() == draw());
   CHECK_THROWS_AS(PixelDiagram({1, 0}, {0, 0}, "t"), std::invalid_argument);
   CHECK_THROWS_AS(PixelDiagram({0, 0}, {1, 1}, "t", 0.5), std::invalid_argument);
+}
+
+TEST_CASE("A pixel diagram cuts the ideal geometry to its pixels", "[pixel_diagram]") {
+  // Grid of pixels 0..1 x 0..1 at 20 units: the box [-0.5, 1.5]^2 spans SVG x 34..74, y 34..74.
+  PixelDiagram diagram({0, 0}, {1, 1}, "t", 20);
+  diagram.line({-10.5, 0.5}, {100, 0.5}, dc::black);  // crosses the grid between its rows
+  diagram.line({5, 5}, {9, 9}, dc::black);            // misses it entirely
+  const std::string svg = diagram.svg();
+  CHECK(svg.find("x1=\"34\" y1=\"54\" x2=\"74\" y2=\"54\"") != std::string::npos);
+  CHECK(occurrences(svg, "<line") == 1);
+}
+
+TEST_CASE("clip_segment keeps the part of a segment inside a box", "[pixel_diagram]") {
+  const auto inside = tri::clip_segment({-1, 1}, {3, 1}, {0, 0}, {2, 2});
+  REQUIRE(inside);
+  CHECK((*inside)[0] == glm::dvec2(0, 1));
+  CHECK((*inside)[1] == glm::dvec2(2, 1));
+  CHECK_FALSE(tri::clip_segment({-1, 3}, {3, 3}, {0, 0}, {2, 2}));
+  const auto whole = tri::clip_segment({0.5, 0.5}, {1, 1.5}, {0, 0}, {2, 2});
+  REQUIRE(whole);
+  CHECK((*whole)[1] == glm::dvec2(1, 1.5));
 }
