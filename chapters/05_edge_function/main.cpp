@@ -1,13 +1,12 @@
 // Chapter 05's figures: the tinyrenderer triangles filled by the edge-function test, the signs of
 // the three edge values, the bounding box (and its clamping), the published bug, zero-area cases.
 // Each one that argues about pixels is a pixel diagram (common/pixel_diagram.hpp).
-#include <algorithm>
 #include <array>
-#include <optional>
 #include <string>
 #include <vector>
 
 #include "bounding_box.hpp"
+#include "clip_segment.hpp"
 #include "cross_product.hpp"
 #include "edge_function_fill.hpp"
 #include "figures.hpp"
@@ -196,29 +195,6 @@ BugComparison compare_published_bug() {
   return out;
 }
 
-// The part of segment a-b inside the squares of pixels first..last (Liang–Barsky), if any.
-std::optional<std::array<glm::dvec2, 2>> clip_to_pixels(glm::dvec2 a, glm::dvec2 b,
-                                                        glm::ivec2 first, glm::ivec2 last) {
-  const glm::dvec2 low = glm::dvec2(first) - 0.5, high = glm::dvec2(last) + 0.5, d = b - a;
-  double t0 = 0, t1 = 1;
-  for (int axis = 0; axis < 2; ++axis) {
-    for (const double bound : {low[axis], high[axis]}) {
-      const bool is_low = bound == low[axis];
-      const double p = is_low ? -d[axis] : d[axis];
-      const double q = is_low ? a[axis] - bound : bound - a[axis];
-      if (p == 0) {
-        if (q < 0) return std::nullopt;
-        continue;
-      }
-      const double t = q / p;
-      if (p < 0) t0 = std::max(t0, t);
-      if (p > 0) t1 = std::min(t1, t);
-    }
-  }
-  if (t0 > t1) return std::nullopt;
-  return std::array<glm::dvec2, 2>{a + t0 * d, a + t1 * d};
-}
-
 // The lines the published test really uses for BC and CA: each slid vertically to A's height,
 // drawn across the shown pixels.
 void draw_slid_lines(PixelDiagram& d, const Vertices& v, glm::ivec2 first, glm::ivec2 last,
@@ -229,7 +205,8 @@ void draw_slid_lines(PixelDiagram& d, const Vertices& v, glm::ivec2 first, glm::
       {{b + bc_shift, c + bc_shift}, {c + ca_shift, a + ca_shift}}};
   for (const auto& [p, q] : lines) {
     // Extended far beyond the edge's length, then cut to the diagram.
-    if (const auto seg = clip_to_pixels(p - 100.0 * (q - p), q + 100.0 * (q - p), first, last)) {
+    if (const auto seg = tri::ch05::clip_segment_to_pixels(p - 100.0 * (q - p), q + 100.0 * (q - p),
+                                                           first, last)) {
       d.line((*seg)[0], (*seg)[1], color, 1.5, true);
     }
   }
