@@ -244,7 +244,7 @@ std::string published_bug_zoom_figure(const BugComparison& cmp) {
                  "Zoom on the third triangle: the published test tests against slid edges", 12);
   fill_comparison(d, cmp);
   for (const auto p : pixels_of(cmp.extra, marked)) d.mark(p, PixelMark::cross, dc::black);
-  for (const auto p : pixels_of(cmp.both, marked)) d.mark(p, PixelMark::ring, dc::black);
+  for (const auto p : pixels_of(cmp.both, marked)) d.mark(p, PixelMark::square, dc::black);
   d.triangle(at(v[0]), at(v[1]), at(v[2]), dc::black);
   draw_slid_lines(d, v, zoom_first, zoom_last, dc::purple);
   d.vertex(at(v[0]), "A", LabelPlace::below_left);
@@ -253,7 +253,7 @@ std::string published_bug_zoom_figure(const BugComparison& cmp) {
   d.legend_fill("inside, lost by the published test", light_sky);
   d.legend_fill("drawn by the published test only", dc::vermillion);
   d.legend_mark("outside the triangle, drawn", PixelMark::cross);
-  d.legend_mark("drawn by both (grey, ringed)", PixelMark::ring);
+  d.legend_mark("drawn by both (grey, outlined)", PixelMark::square);
   d.legend_line("ideal triangle", dc::black);
   d.legend_line("BC and CA slid to A's height: what the published test tests against", dc::purple,
                 true);
