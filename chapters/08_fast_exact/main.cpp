@@ -1,6 +1,6 @@
 // Chapter 08's figures: which edges each pixel passes (the one-branch test), the spans of a
 // sliver against its bounding box, a triangle's 8x8 blocks by class, which path the hybrid takes
-// per triangle, and the bands the threads share out.
+// per triangle (and close up, which pixels each path tests), and the bands the threads share out.
 #include <array>
 #include <string>
 #include <vector>
@@ -223,6 +223,49 @@ std::string hybrid_paths_figure() {
   return d.svg();
 }
 
+// Step 6, close up: the two paths on one small and one larger triangle. The small one's candidate
+// pixels fit one 8x8 block, and every one of them is tested in lanes; the larger one is drawn as
+// spans, which touch only the covered pixels.
+std::string hybrid_paths_zoom_figure() {
+  const Triangle small{{{1.5, 2.25}, {7.25, 4.5}, {3.75, 8.5}}};
+  const Triangle large{{{10.5, 1.25}, {22.5, 4.75}, {14.25, 10.5}}};
+  const glm::ivec2 first(0, 0), last(23, 11);
+  PixelDiagram d(first, last,
+                 "Close up: lanes test every candidate pixel, spans touch only covered ones", 26);
+  const auto small_setup = tri::ch08::setup_triangle(small, 24, 12);
+  const auto& r = small_setup->range;
+  for (int y = r.first_y; y <= r.last_y; ++y) {
+    for (int x = r.first_x; x <= r.last_x; ++x) {
+      d.fill({x, y}, small_setup->covers(x, y) ? dc::purple : light_purple);
+    }
+  }
+  outline(d, r, dc::dark_gray, 2, true);
+  const auto large_setup = tri::ch08::setup_triangle(large, 24, 12);
+  tri::ch08::SpanWalker walker(*large_setup);
+  for (int y = walker.first_row(); y <= walker.last_row(); ++y, walker.next_row()) {
+    const tri::ch08::RowSpan s = walker.span();
+    for (int x = s.first; x <= s.last; ++x) d.fill({x, y}, dc::sky_blue);
+  }
+  outline(d, large_setup->range, dc::dark_gray, 2, true);
+  d.triangle(small[0], small[1], small[2], dc::black);
+  d.triangle(large[0], large[1], large[2], dc::black);
+  d.vertex(small[0], "A", LabelPlace::below_right);
+  d.vertex(small[1], "B", LabelPlace::below_right);
+  d.vertex(small[2], "C", LabelPlace::above_right);
+  d.vertex(large[0], "A", LabelPlace::below_right);
+  d.vertex(large[1], "B", LabelPlace::below_left);
+  d.vertex(large[2], "C", LabelPlace::above_right);
+  d.legend_fill("lanes: tested, covered", dc::purple);
+  d.legend_fill("lanes: tested, not covered", light_purple);
+  d.legend_fill("spans: filled without a test", dc::sky_blue);
+  d.legend_line("candidate pixels", dc::dark_gray, true);
+  d.legend_line("ideal triangles", dc::black);
+  d.legend_note(
+      "Left: candidate pixels within one 8x8 block (fits_one_block). Right: larger, so "
+      "spans; the rest of its frame is never touched.");
+  return d.svg();
+}
+
 // Step 7: a scene drawn by two threads; every row tinted by the thread that owns its band. Each
 // thread draws every triangle, clipped to its bands; the result is the serial picture whatever
 // the timing, so the figure is the same on every run.
@@ -277,13 +320,14 @@ int main(int argc, char** argv) {
       argc, argv, "08_fast_exact",
       "Chapter 08, fast and still exact: which edges each pixel passes (08_edge_signs.svg), the\n"
       "spans of a sliver in its bounding box (08_sliver_spans.svg), a triangle's 8x8 blocks by\n"
-      "class (08_blocks.svg), the path the hybrid takes per triangle (08_hybrid_paths.svg), and\n"
-      "the bands two threads share (08_bands.svg).",
+      "class (08_blocks.svg), the path the hybrid takes per triangle (08_hybrid_paths.svg, close\n"
+      "up in 08_hybrid_paths_zoom.svg), and the bands two threads share (08_bands.svg).",
       [](tri::FigureWriter& figures) {
         figures.save_svg("08_edge_signs", edge_signs_figure());
         figures.save_svg("08_sliver_spans", sliver_spans_figure());
         figures.save_svg("08_blocks", blocks_figure());
         figures.save_svg("08_hybrid_paths", hybrid_paths_figure());
+        figures.save_svg("08_hybrid_paths_zoom", hybrid_paths_zoom_figure());
         figures.save_svg("08_bands", bands_figure());
       });
 }
