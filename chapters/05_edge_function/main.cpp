@@ -1,106 +1,296 @@
 // Chapter 05's figures: the tinyrenderer triangles filled by the edge-function test, the signs of
 // the three edge values, the bounding box (and its clamping), the published bug, zero-area cases.
+// Each one that argues about pixels is a pixel diagram (common/pixel_diagram.hpp).
 #include <array>
+#include <string>
+#include <vector>
 
 #include "bounding_box.hpp"
+#include "clip_segment.hpp"
 #include "cross_product.hpp"
 #include "edge_function_fill.hpp"
 #include "figures.hpp"
 #include "lines.hpp"
+#include "pixel_diagram.hpp"
+#include "point_in_triangle.hpp"
 
 namespace {
 
 using tri::Canvas;
 using tri::Color;
+using tri::LabelPlace;
+using tri::PixelDiagram;
+using tri::PixelMark;
+namespace dc = tri::diagram_colors;
 using Vertices = std::array<glm::ivec2, 3>;
 
-constexpr Color dim_blue{40, 50, 110, 255};
-constexpr Color dark_gray{70, 70, 70, 255};
+// Okabe–Ito colours lightened towards white, for fills under black text and dots.
+constexpr Color light_green{153, 216, 199, 255};
+constexpr Color light_sky{187, 225, 246, 255};
+constexpr Color light_vermillion{242, 191, 153, 255};
+constexpr Color light_blue{153, 199, 224, 255};
+constexpr Color light_purple{235, 201, 220, 255};
+// Paints the pixel sets the figures compute on a (black) canvas before they are coloured.
+constexpr Color marked = tri::colors::white;
 
-// tinyrenderer lesson 2's three test triangles on its 200x200 image, in its colours.
+// tinyrenderer lesson 2's three test triangles on its 200x200 image.
 constexpr std::array<Vertices, 3> tinyrenderer_triangles{{
     {{{10, 70}, {50, 160}, {70, 80}}},
     {{{180, 50}, {150, 1}, {70, 180}}},
     {{{180, 150}, {120, 160}, {130, 180}}},
 }};
-constexpr std::array<Color, 3> tinyrenderer_colors{tri::colors::red, tri::colors::white,
-                                                   tri::colors::green};
+constexpr std::array<Color, 3> tinyrenderer_colors{dc::vermillion, dc::blue, dc::green};
+constexpr std::array<const char*, 3> tinyrenderer_names{"first", "second", "third"};
+// The pixels of the published-bug zoom: the third triangle and its surroundings.
+constexpr glm::ivec2 zoom_first{116, 147}, zoom_last{182, 182};
 
-Canvas tinyrenderer_fill() {
+glm::dvec2 at(glm::ivec2 p) {
+  return glm::dvec2(p);
+}
+
+std::string point_text(glm::ivec2 p) {
+  return "(" + std::to_string(p.x) + ", " + std::to_string(p.y) + ")";
+}
+
+// The pixels of a canvas painted in `color`.
+std::vector<glm::ivec2> pixels_of(const Canvas& canvas, Color color) {
+  std::vector<glm::ivec2> out;
+  for (int y = 0; y < canvas.height(); ++y) {
+    for (int x = 0; x < canvas.width(); ++x) {
+      if (canvas.pixel(x, y) == color) out.emplace_back(x, y);
+    }
+  }
+  return out;
+}
+
+// Step 4: tinyrenderer's three triangles, a whole scene, with their ideal edges on top.
+std::string tinyrenderer_figure() {
   Canvas canvas(200, 200);
   for (std::size_t i = 0; i < tinyrenderer_triangles.size(); ++i) {
     const auto& [a, b, c] = tinyrenderer_triangles[i];
     tri::ch05::fill_triangle_edge_function(canvas, a, b, c, tinyrenderer_colors[i]);
   }
-  return canvas;
+  PixelDiagram d({0, 0}, {199, 199},
+                 "tinyrenderer's three triangles filled by the edge-function test (200 x 200)", 3);
+  d.show_centres(false);
+  d.fill_from(canvas, tri::colors::black);
+  for (std::size_t i = 0; i < tinyrenderer_triangles.size(); ++i) {
+    const auto& [a, b, c] = tinyrenderer_triangles[i];
+    d.triangle(at(a), at(b), at(c), dc::black, 1);
+    d.legend_fill(std::string(tinyrenderer_names[i]) + " " + point_text(a) + " " + point_text(b) +
+                      " " + point_text(c) + ": " +
+                      std::to_string(pixels_of(canvas, tinyrenderer_colors[i]).size()) + " pixels",
+                  tinyrenderer_colors[i]);
+  }
+  d.legend_line("ideal triangle edges", dc::black);
+  return d.svg();
 }
 
-// Each pixel gets red when AB x AP >= 0, green when BC x BP >= 0, blue when CA x CP >= 0: the
-// triangle is where all three mix to white.
-Canvas edge_signs() {
-  Canvas canvas(48, 40);
-  const glm::ivec2 a(8, 6), b(40, 14), c(18, 34);
-  for (int y = 0; y < canvas.height(); ++y) {
-    for (int x = 0; x < canvas.width(); ++x) {
+// Step 2: every pixel centre coloured by the signs of its three edge values: which of them are
+// negative says on which side of which edge it lies.
+std::string edge_signs_figure() {
+  const glm::ivec2 a(1, 1), b(13, 4), c(5, 10);
+  PixelDiagram d({0, 0}, {14, 11}, "The signs of AB x AP, BC x BP, CA x CP at every pixel centre P",
+                 32);
+  const std::array<Color, 3> one_negative{light_vermillion, light_blue, light_purple};
+  int on_edge = 0;
+  for (int y = 0; y <= 11; ++y) {
+    for (int x = 0; x <= 14; ++x) {
       const glm::i64vec3 e = tri::ch05::edge_crosses(a, b, c, {x, y});
-      const auto on = [](std::int64_t value) {
-        return static_cast<std::uint8_t>(value >= 0 ? 255 : 0);
-      };
-      canvas.put_pixel(x, y, Color{on(e.x), on(e.y), on(e.z), 255});
+      const int negatives = (e.x < 0) + (e.y < 0) + (e.z < 0);
+      if (negatives == 0 && (e.x == 0 || e.y == 0 || e.z == 0)) {
+        d.fill({x, y}, dc::yellow);
+        d.mark({x, y}, PixelMark::square, dc::black);
+        ++on_edge;
+      } else if (negatives == 0) {
+        d.fill({x, y}, light_green);
+      } else if (negatives == 1) {
+        d.fill({x, y}, one_negative[e.x < 0 ? 0 : e.y < 0 ? 1 : 2]);
+      } else {
+        d.fill({x, y}, dc::light_gray);
+      }
     }
   }
-  return canvas;
+  d.line(at(a), at(b), dc::vermillion);
+  d.line(at(b), at(c), dc::blue);
+  d.line(at(c), at(a), dc::purple);
+  d.vertex(at(a), "A", LabelPlace::below_right);
+  d.vertex(at(b), "B", LabelPlace::below_right);
+  d.vertex(at(c), "C", LabelPlace::above_right);
+  d.legend_fill("all three > 0: inside", light_green);
+  d.legend_fill("all >= 0, one is 0: on an edge", dc::yellow);
+  d.legend_mark("centre exactly on an edge (drawn)", PixelMark::square);
+  d.legend_fill("AB x AP < 0 only", light_vermillion);
+  d.legend_fill("BC x BP < 0 only", light_blue);
+  d.legend_fill("CA x CP < 0 only", light_purple);
+  d.legend_fill("two values < 0 (past a vertex)", dc::light_gray);
+  d.legend_line("edge AB", dc::vermillion);
+  d.legend_line("edge BC", dc::blue);
+  d.legend_line("edge CA", dc::purple);
+  d.legend_note("A, B, C run counter-clockwise; " + std::to_string(on_edge) +
+                " centres lie exactly on an edge (A, B, C among them).");
+  return d.svg();
 }
 
-// Blue: the pixels of the clamped bounding box the loop tests; white: those inside; red: the
-// vertices that are on the canvas.
-Canvas bounding_box_figure(int width, int height, const Vertices& v) {
-  Canvas canvas(width, height);
-  const auto box = tri::ch05::bounding_box_on_canvas(v[0], v[1], v[2], width, height);
-  for (int y = box.min.y; y <= box.max.y; ++y) {
-    for (int x = box.min.x; x <= box.max.x; ++x) canvas.put_pixel(x, y, dim_blue);
+// Step 1: the box the loop visits (clamped to the canvas), the pixels drawn, the vertices. The
+// diagram shows `shown` pixels, which may reach beyond the canvas to show the whole triangle.
+std::string bounding_box_figure(const std::string& title, const Vertices& v, glm::ivec2 canvas_size,
+                                glm::ivec2 shown_first, glm::ivec2 shown_last) {
+  Canvas canvas(canvas_size.x, canvas_size.y);
+  tri::ch05::fill_triangle_edge_function(canvas, v[0], v[1], v[2], dc::blue);
+  const auto box =
+      tri::ch05::bounding_box_on_canvas(v[0], v[1], v[2], canvas_size.x, canvas_size.y);
+  PixelDiagram d(shown_first, shown_last, title, 14);
+  bool off_canvas = false;
+  for (int y = shown_first.y; y <= shown_last.y; ++y) {
+    for (int x = shown_first.x; x <= shown_last.x; ++x) {
+      if (x < 0 || y < 0 || x >= canvas_size.x || y >= canvas_size.y) {
+        d.fill({x, y}, dc::light_gray);
+        off_canvas = true;
+      } else if (canvas.pixel(x, y) == dc::blue) {
+        d.fill({x, y}, dc::blue);
+      } else if (x >= box.min.x && x <= box.max.x && y >= box.min.y && y <= box.max.y) {
+        d.fill({x, y}, light_sky);
+      }
+    }
   }
-  tri::ch05::fill_triangle_edge_function(canvas, v[0], v[1], v[2], tri::colors::white);
-  for (const glm::ivec2 vertex : v) {
-    if (canvas.contains(vertex)) canvas.put_pixel(vertex, tri::colors::red);
+  d.triangle(at(v[0]), at(v[1]), at(v[2]), dc::black);
+  d.vertex(at(v[0]), "A", LabelPlace::left);
+  d.vertex(at(v[1]), "B", LabelPlace::below_right);
+  d.vertex(at(v[2]), "C", LabelPlace::above_right);
+  for (const glm::ivec2 p : v) {
+    if (canvas.contains(p)) d.mark(p, PixelMark::square, dc::vermillion);
   }
-  return canvas;
+  d.legend_fill("in the box, tested, outside the triangle", light_sky);
+  d.legend_fill("in the box, drawn", dc::blue);
+  if (off_canvas) d.legend_fill("off the canvas: never visited", dc::light_gray);
+  d.legend_mark("a vertex's pixel", PixelMark::square, dc::vermillion);
+  d.legend_line("ideal triangle", dc::black);
+  d.legend_note("Box: columns " + std::to_string(box.min.x) + " to " + std::to_string(box.max.x) +
+                ", rows " + std::to_string(box.min.y) + " to " + std::to_string(box.max.y) +
+                " (both ends included).");
+  return d.svg();
 }
 
-// White: drawn by both tests; blue: inside, but lost by the published test; red: drawn only by
-// the published test.
-Canvas published_bug_comparison() {
-  Canvas correct(200, 200), published(200, 200), comparison(200, 200);
+// The published test against the right one, as three pixel sets on one canvas.
+struct BugComparison {
+  Canvas both{200, 200}, lost{200, 200}, extra{200, 200};
+};
+
+BugComparison compare_published_bug() {
+  Canvas right(200, 200), published(200, 200);
   for (const auto& [a, b, c] : tinyrenderer_triangles) {
-    tri::ch05::fill_triangle_edge_function(correct, a, b, c, tri::colors::white);
-    tri::ch05::fill_triangle_published_bug(published, a, b, c, tri::colors::white);
+    tri::ch05::fill_triangle_edge_function(right, a, b, c, marked);
+    tri::ch05::fill_triangle_published_bug(published, a, b, c, marked);
   }
+  BugComparison out;
   for (int y = 0; y < 200; ++y) {
     for (int x = 0; x < 200; ++x) {
-      const bool in_correct = correct.pixel(x, y) == tri::colors::white;
-      const bool in_published = published.pixel(x, y) == tri::colors::white;
-      if (in_correct && in_published) comparison.put_pixel(x, y, tri::colors::white);
-      if (in_correct && !in_published) comparison.put_pixel(x, y, dim_blue);
-      if (!in_correct && in_published) comparison.put_pixel(x, y, tri::colors::red);
+      const bool r = right.pixel(x, y) == marked, p = published.pixel(x, y) == marked;
+      if (r && p) out.both.put_pixel(x, y, marked);
+      if (r && !p) out.lost.put_pixel(x, y, marked);
+      if (!r && p) out.extra.put_pixel(x, y, marked);
     }
   }
-  return comparison;
+  return out;
 }
 
-// Zero-area triangles: grey is the segment as chapter 01's Bresenham draws it, white what the
-// fill draws, only the pixel centres exactly on the segment.
-Canvas zero_area() {
-  Canvas canvas(24, 30);
+// The lines the published test really uses for BC and CA: each slid vertically to A's height,
+// drawn across the shown pixels.
+void draw_slid_lines(PixelDiagram& d, const Vertices& v, glm::ivec2 first, glm::ivec2 last,
+                     Color color) {
+  const glm::dvec2 a = at(v[0]), b = at(v[1]), c = at(v[2]);
+  const glm::dvec2 bc_shift(0, a.y - b.y), ca_shift(0, a.y - c.y);
+  const std::array<std::array<glm::dvec2, 2>, 2> lines{
+      {{b + bc_shift, c + bc_shift}, {c + ca_shift, a + ca_shift}}};
+  for (const auto& [p, q] : lines) {
+    // Extended far beyond the edge's length, then cut to the diagram.
+    if (const auto seg = tri::ch05::clip_segment_to_pixels(p - 100.0 * (q - p), q + 100.0 * (q - p),
+                                                           first, last)) {
+      d.line((*seg)[0], (*seg)[1], color, 1.5, true);
+    }
+  }
+}
+
+void fill_comparison(PixelDiagram& d, const BugComparison& cmp) {
+  d.fill(pixels_of(cmp.both, marked), dc::covered);
+  d.fill(pixels_of(cmp.lost, marked), light_sky);
+  d.fill(pixels_of(cmp.extra, marked), dc::vermillion);
+}
+
+std::string published_bug_figure(const BugComparison& cmp) {
+  PixelDiagram d({0, 0}, {199, 199}, "The published points[0].y test against the right one", 3);
+  d.show_centres(false);
+  fill_comparison(d, cmp);
+  for (const auto& [a, b, c] : tinyrenderer_triangles)
+    d.triangle(at(a), at(b), at(c), dc::black, 1);
+  const glm::ivec2 first = zoom_first, last = zoom_last;
+  d.line(glm::dvec2(first) - 0.5, glm::dvec2(last.x + 0.5, first.y - 0.5), dc::purple, 1.5);
+  d.line(glm::dvec2(last) + 0.5, glm::dvec2(last.x + 0.5, first.y - 0.5), dc::purple, 1.5);
+  d.line(glm::dvec2(last) + 0.5, glm::dvec2(first.x - 0.5, last.y + 0.5), dc::purple, 1.5);
+  d.line(glm::dvec2(first) - 0.5, glm::dvec2(first.x - 0.5, last.y + 0.5), dc::purple, 1.5);
+  d.legend_fill("drawn by both", dc::covered);
+  d.legend_fill("inside, lost by the published test", light_sky);
+  d.legend_fill("outside, drawn by the published test", dc::vermillion);
+  d.legend_line("ideal triangles", dc::black);
+  d.legend_line("region of the zoomed figure", dc::purple);
+  return d.svg();
+}
+
+// The zoomed companion: the third triangle, where the lost and the extra pixels sit side by side.
+std::string published_bug_zoom_figure(const BugComparison& cmp) {
+  const Vertices& v = tinyrenderer_triangles[2];
+  PixelDiagram d(zoom_first, zoom_last,
+                 "Zoom on the third triangle: the published test tests against slid edges", 12);
+  fill_comparison(d, cmp);
+  for (const auto p : pixels_of(cmp.extra, marked)) d.mark(p, PixelMark::cross, dc::black);
+  for (const auto p : pixels_of(cmp.both, marked)) d.mark(p, PixelMark::square, dc::black);
+  d.triangle(at(v[0]), at(v[1]), at(v[2]), dc::black);
+  draw_slid_lines(d, v, zoom_first, zoom_last, dc::purple);
+  d.vertex(at(v[0]), "A", LabelPlace::below_left);
+  d.vertex(at(v[1]), "B", LabelPlace::right);
+  d.vertex(at(v[2]), "C", LabelPlace::right);
+  d.legend_fill("inside, lost by the published test", light_sky);
+  d.legend_fill("drawn by the published test only", dc::vermillion);
+  d.legend_mark("outside the triangle, drawn", PixelMark::cross);
+  d.legend_mark("drawn by both (grey, outlined)", PixelMark::square);
+  d.legend_line("ideal triangle", dc::black);
+  d.legend_line("BC and CA slid to A's height: what the published test tests against", dc::purple,
+                true);
+  return d.svg();
+}
+
+// Zero-area triangles: the ideal segment, chapter 01's Bresenham line under it for comparison,
+// and the pixels the fill draws: only the centres exactly on the segment.
+std::string zero_area_figure() {
   const std::array<Vertices, 3> segments{{
       {{{0, 0}, {10, 10}, {20, 20}}},
       {{{2, 22}, {12, 25}, {22, 28}}},
       {{{20, 4}, {20, 4}, {20, 4}}},
   }};
+  Canvas bresenham(24, 30), drawn(24, 30);
   for (const auto& [a, b, c] : segments) {
-    tri::ch01::draw_line_bresenham(canvas, a, c, dark_gray);
-    tri::ch05::fill_triangle_edge_function(canvas, a, b, c, tri::colors::white);
+    tri::ch01::draw_line_bresenham(bresenham, a, c, marked);
+    tri::ch05::fill_triangle_edge_function(drawn, a, b, c, marked);
   }
-  return canvas;
+  PixelDiagram d({0, 0}, {23, 29}, "Zero-area triangles draw only the centres on their segment",
+                 18);
+  d.fill(pixels_of(bresenham, marked), dc::light_gray);
+  d.fill(pixels_of(drawn, marked), dc::sky_blue);
+  for (const auto& [a, b, c] : segments) d.line(at(a), at(c), dc::vermillion);
+  d.vertex(at(segments[0][0]), "A", LabelPlace::above_right);
+  d.vertex(at(segments[0][1]), "B", LabelPlace::below_right);
+  d.vertex(at(segments[0][2]), "C", LabelPlace::above_left);
+  d.vertex(at(segments[1][0]), "A", LabelPlace::below_right);
+  d.vertex(at(segments[1][1]), "B", LabelPlace::below_right);
+  d.vertex(at(segments[1][2]), "C", LabelPlace::below_left);
+  d.vertex(at(segments[2][0]), "A = B = C", LabelPlace::above_left);
+  d.legend_fill("drawn by the fill", dc::sky_blue);
+  d.legend_fill("chapter 01's Bresenham line, not drawn by the fill", dc::light_gray);
+  d.legend_line("the ideal segment", dc::vermillion);
+  d.legend_note(
+      "Direction (1, 1): every centre on it; (10, 3): only A, B, C; one point: one pixel.");
+  return d.svg();
 }
 
 }  // namespace
@@ -109,20 +299,25 @@ int main(int argc, char** argv) {
   return tri::run_chapter_program(
       argc, argv, "05_edge_function",
       "Chapter 05, the edge-function fill: tinyrenderer's three triangles\n"
-      "(05_tinyrenderer_triangles.png), the signs of the three edge cross products\n"
-      "(05_edge_signs.png), the bounding box and its clamping to the canvas\n"
-      "(05_bounding_box.png, 05_bounding_box_clamped.png), the published points[0].y bug against\n"
-      "the correct test (05_published_bug.png) and zero-area triangles (05_zero_area.png).",
+      "(05_tinyrenderer_triangles.svg), the signs of the three edge cross products at each pixel\n"
+      "centre (05_edge_signs.svg), the bounding box and its clamping to the canvas\n"
+      "(05_bounding_box.svg, 05_bounding_box_clamped.svg), the published points[0].y bug against\n"
+      "the correct test (05_published_bug.svg, zoomed in 05_published_bug_zoom.svg) and\n"
+      "zero-area triangles (05_zero_area.svg).",
       [](tri::FigureWriter& figures) {
-        figures.save_png("05_tinyrenderer_triangles", tri::magnified(tinyrenderer_fill(), 3));
-        figures.save_png("05_edge_signs", tri::magnified(edge_signs(), 12));
-        figures.save_png(
+        figures.save_svg("05_tinyrenderer_triangles", tinyrenderer_figure());
+        figures.save_svg("05_edge_signs", edge_signs_figure());
+        figures.save_svg(
             "05_bounding_box",
-            tri::magnified(bounding_box_figure(40, 32, {{{5, 4}, {34, 11}, {14, 27}}}), 12));
-        figures.save_png(
+            bounding_box_figure("The bounding box: every pixel in it is tested",
+                                {{{5, 4}, {34, 11}, {14, 27}}}, {40, 32}, {0, 0}, {39, 31}));
+        figures.save_svg(
             "05_bounding_box_clamped",
-            tri::magnified(bounding_box_figure(40, 32, {{{-12, 6}, {24, -9}, {30, 26}}}), 12));
-        figures.save_png("05_published_bug", tri::magnified(published_bug_comparison(), 3));
-        figures.save_png("05_zero_area", tri::magnified(zero_area(), 16));
+            bounding_box_figure("The box cut down to the 40 x 32 canvas",
+                                {{{-12, 6}, {24, -9}, {30, 26}}}, {40, 32}, {-17, -10}, {39, 31}));
+        const auto comparison = compare_published_bug();
+        figures.save_svg("05_published_bug", published_bug_figure(comparison));
+        figures.save_svg("05_published_bug_zoom", published_bug_zoom_figure(comparison));
+        figures.save_svg("05_zero_area", zero_area_figure());
       });
 }

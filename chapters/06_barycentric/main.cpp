@@ -1,126 +1,296 @@
 // Chapter 06's figures: tinyrenderer's three triangles with their bounding boxes, filled, and
 // coloured by their barycentric weights; what a zero area draws without the guard; and where
-// float and double part ways.
+// float and double part ways. Each one that argues about pixels is a pixel diagram.
 #include <array>
+#include <string>
+#include <vector>
 
 #include "barycentric.hpp"
 #include "bounding_box.hpp"
+#include "clip_segment.hpp"
 #include "examples.hpp"
 #include "figures.hpp"
 #include "fill.hpp"
+#include "pixel_diagram.hpp"
 
 namespace {
 
 using tri::Canvas;
 using tri::Color;
+using tri::LabelPlace;
+using tri::PixelDiagram;
+using tri::PixelMark;
 using tri::ch06::PixelTriangle;
+namespace dc = tri::diagram_colors;
 
-constexpr std::array<Color, 3> tinyrenderer_colors{tri::colors::red, tri::colors::white,
-                                                   tri::colors::green};
-constexpr Color dark_gray{60, 60, 60, 255};
+constexpr std::array<Color, 3> tinyrenderer_colors{dc::vermillion, dc::blue, dc::green};
+// The same three, lightened towards white: the tested part of each bounding box.
+constexpr std::array<Color, 3> box_colors{Color{242, 191, 153, 255}, Color{153, 199, 224, 255},
+                                          Color{153, 216, 199, 255}};
+constexpr std::array<const char*, 3> tinyrenderer_names{"first", "second", "third"};
+// Paints the pixel sets the figures compute on a (black) canvas before they are coloured.
+constexpr Color marked = tri::colors::white;
 
-Color darker(Color color) {
-  return Color{color.r / 4, color.g / 4, color.b / 4, 255};
+glm::dvec2 at(glm::ivec2 p) {
+  return glm::dvec2(p);
 }
 
-void fill_box(Canvas& canvas, const tri::ch05::PixelBox& box, Color color) {
+std::string point_text(glm::ivec2 p) {
+  return "(" + std::to_string(p.x) + ", " + std::to_string(p.y) + ")";
+}
+
+std::string triangle_text(const PixelTriangle& t) {
+  return point_text(t[0]) + " " + point_text(t[1]) + " " + point_text(t[2]);
+}
+
+// The pixels of a canvas painted in `color`.
+std::vector<glm::ivec2> pixels_of(const Canvas& canvas, Color color) {
+  std::vector<glm::ivec2> out;
+  for (int y = 0; y < canvas.height(); ++y) {
+    for (int x = 0; x < canvas.width(); ++x) {
+      if (canvas.pixel(x, y) == color) out.emplace_back(x, y);
+    }
+  }
+  return out;
+}
+
+// The pixels of a clamped bounding box.
+std::vector<glm::ivec2> box_pixels(const PixelTriangle& t, int width, int height) {
+  const auto box = tri::ch05::bounding_box_on_canvas(t[0], t[1], t[2], width, height);
+  std::vector<glm::ivec2> out;
   for (int y = box.min.y; y <= box.max.y; ++y) {
-    for (int x = box.min.x; x <= box.max.x; ++x) canvas.put_pixel(x, y, color);
+    for (int x = box.min.x; x <= box.max.x; ++x) out.emplace_back(x, y);
+  }
+  return out;
+}
+
+// A whole 200x200 scene at 3 units per pixel, without centre dots.
+PixelDiagram scene_diagram(const std::string& title) {
+  PixelDiagram d({0, 0}, {199, 199}, title, 3);
+  d.show_centres(false);
+  return d;
+}
+
+// An edge drawn across the shown pixels, wherever its vertices are.
+void clipped_line(PixelDiagram& d, glm::dvec2 a, glm::dvec2 b, glm::ivec2 first, glm::ivec2 last,
+                  Color color, bool dashed = false) {
+  if (const auto s = tri::ch05::clip_segment_to_pixels(a, b, first, last)) {
+    d.line((*s)[0], (*s)[1], color, 2, dashed);
   }
 }
 
 // Step 1: each triangle over its bounding box, the pixels the loop visits.
-Canvas bounding_boxes() {
-  Canvas canvas(200, 200);
+std::string bounding_boxes_figure() {
+  PixelDiagram d = scene_diagram("Every pixel of each bounding box is tested; few are drawn");
+  Canvas drawn(200, 200);
   for (std::size_t i = 0; i < 3; ++i) {
     const auto [a, b, c] = tri::ch06::tinyrenderer_triangles[i];
-    fill_box(canvas, tri::ch05::bounding_box_on_canvas(a, b, c, canvas.width(), canvas.height()),
-             darker(tinyrenderer_colors[i]));
+    tri::ch06::fill_triangle_barycentric<double>(drawn, a, b, c, tinyrenderer_colors[i]);
   }
   for (std::size_t i = 0; i < 3; ++i) {
-    const auto [a, b, c] = tri::ch06::tinyrenderer_triangles[i];
-    tri::ch06::fill_triangle_barycentric<double>(canvas, a, b, c, tinyrenderer_colors[i]);
+    const auto& t = tri::ch06::tinyrenderer_triangles[i];
+    const auto box = box_pixels(t, 200, 200);
+    d.fill(box, box_colors[i]);
+    d.legend_fill(std::string(tinyrenderer_names[i]) + " box: " + std::to_string(box.size()) +
+                      " pixels tested",
+                  box_colors[i]);
+    d.legend_fill(std::string(tinyrenderer_names[i]) + " triangle: " +
+                      std::to_string(pixels_of(drawn, tinyrenderer_colors[i]).size()) + " drawn",
+                  tinyrenderer_colors[i]);
   }
-  return canvas;
+  d.fill_from(drawn, tri::colors::black);
+  for (const auto& [a, b, c] : tri::ch06::tinyrenderer_triangles) {
+    d.triangle(at(a), at(b), at(c), dc::black, 1);
+  }
+  d.legend_line("ideal triangle edges", dc::black);
+  return d.svg();
 }
 
 // Step 4: the three triangles filled, as tinyrenderer shows them.
-Canvas tinyrenderer_triangles() {
+std::string tinyrenderer_figure() {
+  PixelDiagram d = scene_diagram("tinyrenderer's three triangles filled by barycentric weights");
   Canvas canvas(200, 200);
   for (std::size_t i = 0; i < 3; ++i) {
-    const auto [a, b, c] = tri::ch06::tinyrenderer_triangles[i];
-    tri::ch06::fill_triangle_barycentric<double>(canvas, a, b, c, tinyrenderer_colors[i]);
+    const auto& t = tri::ch06::tinyrenderer_triangles[i];
+    tri::ch06::fill_triangle_barycentric<double>(canvas, t[0], t[1], t[2], tinyrenderer_colors[i]);
   }
-  return canvas;
+  d.fill_from(canvas, tri::colors::black);
+  for (std::size_t i = 0; i < 3; ++i) {
+    const auto& t = tri::ch06::tinyrenderer_triangles[i];
+    d.triangle(at(t[0]), at(t[1]), at(t[2]), dc::black, 1);
+    d.legend_fill(std::string(tinyrenderer_names[i]) + " " + triangle_text(t) + ": " +
+                      std::to_string(pixels_of(canvas, tinyrenderer_colors[i]).size()) + " pixels",
+                  tinyrenderer_colors[i]);
+  }
+  d.legend_line("ideal triangle edges", dc::black);
+  return d.svg();
 }
 
 // Step 5: the same triangles, each pixel a blend of red, green and blue by its weights.
-Canvas weights() {
+std::string weights_figure() {
+  PixelDiagram d = scene_diagram("Each pixel coloured wA red + wB green + wC blue");
   Canvas canvas(200, 200);
   for (const auto& [a, b, c] : tri::ch06::tinyrenderer_triangles) {
     tri::ch06::fill_triangle_with_weights(canvas, a, b, c, tri::colors::red, tri::colors::green,
                                           tri::colors::blue);
   }
-  return canvas;
+  // 16 levels per channel (multiples of 17) merge neighbouring pixels into runs: the SVG stays
+  // a quarter of its size, and the blend still reads.
+  for (int y = 0; y < canvas.height(); ++y) {
+    for (int x = 0; x < canvas.width(); ++x) {
+      const Color c = canvas.pixel(x, y);
+      const auto level = [](int v) { return static_cast<std::uint8_t>((v + 8) / 17 * 17); };
+      canvas.put_pixel(x, y, Color{level(c.r), level(c.g), level(c.b), 255});
+    }
+  }
+  d.fill_from(canvas, tri::colors::black);
+  for (const auto& t : tri::ch06::tinyrenderer_triangles) {
+    d.triangle(at(t[0]), at(t[1]), at(t[2]), dc::black, 1);
+    const std::array<const char*, 3> names{"A", "B", "C"};
+    for (std::size_t k = 0; k < 3; ++k) {
+      d.point(at(t[k]), dc::black, 3);
+      d.label(at(t[k]), names[k], LabelPlace::right);
+    }
+  }
+  d.legend_fill("A, the first vertex: weight (1, 0, 0)", tri::colors::red);
+  d.legend_fill("B: (0, 1, 0)", tri::colors::green);
+  d.legend_fill("C: (0, 0, 1)", tri::colors::blue);
+  d.legend_line("ideal triangle edges", dc::black);
+  d.legend_note(
+      "In between, the colours mix in proportion to the three weights (shown in 16 "
+      "levels per channel).");
+  return d.svg();
 }
 
-// Zero-area triangles: grey is the bounding box the loop visits, red what the unguarded version
-// draws (NaN weights). The guarded version draws nothing here.
-Canvas zero_area_unguarded() {
-  Canvas canvas(12, 13);
+// Step 3: zero-area triangles without the guard: the box the loop visits, what the NaN weights
+// let through, the ideal segment. The guarded version draws nothing here.
+std::string zero_area_unguarded_figure() {
   const std::array<PixelTriangle, 4> degenerate{{
       {{{1, 1}, {3, 2}, {9, 5}}},     // diagonal, direction (2, 1)
       {{{1, 8}, {10, 8}, {5, 8}}},    // horizontal
       {{{2, 10}, {2, 10}, {9, 11}}},  // two vertices equal, no pixel centre between the ends
       {{{10, 1}, {10, 1}, {10, 1}}},  // a point
   }};
-  for (const auto& [a, b, c] : degenerate) {
-    fill_box(canvas, tri::ch05::bounding_box_on_canvas(a, b, c, canvas.width(), canvas.height()),
-             dark_gray);
+  Canvas unguarded(12, 13), guarded(12, 13);
+  PixelDiagram d({0, 0}, {11, 12}, "Without the guard, NaN weights draw the centres on the segment",
+                 32);
+  for (const auto& t : degenerate) {
+    d.fill(box_pixels(t, 12, 13), dc::light_gray);
+    tri::ch06::fill_triangle_barycentric_unguarded<double>(unguarded, t[0], t[1], t[2], marked);
+    tri::ch06::fill_triangle_barycentric<double>(guarded, t[0], t[1], t[2], marked);
   }
-  for (const auto& [a, b, c] : degenerate) {
-    tri::ch06::fill_triangle_barycentric_unguarded<double>(canvas, a, b, c, tri::colors::red);
-    tri::ch06::fill_triangle_barycentric<double>(canvas, a, b, c, tri::colors::white);
+  const auto drawn = pixels_of(unguarded, marked);
+  d.fill(drawn, dc::vermillion);
+  for (const auto p : drawn) d.mark(p, PixelMark::ring, dc::black);
+  for (const auto& t : degenerate) {
+    // The segment is the hull of the three points: from the lowest to the highest in (x, y).
+    glm::ivec2 low = t[0], high = t[0];
+    for (const auto p : t) {
+      if (p.x < low.x || (p.x == low.x && p.y < low.y)) low = p;
+      if (p.x > high.x || (p.x == high.x && p.y > high.y)) high = p;
+    }
+    d.line(at(low), at(high), dc::blue);
   }
-  return canvas;
+  d.vertex(at(degenerate[0][0]), "A", LabelPlace::above_left);
+  d.vertex(at(degenerate[0][1]), "B", LabelPlace::above_left);
+  d.vertex(at(degenerate[0][2]), "C", LabelPlace::above_left);
+  d.vertex(at(degenerate[1][0]), "A", LabelPlace::above_right);
+  d.vertex(at(degenerate[1][1]), "B", LabelPlace::above_left);
+  d.vertex(at(degenerate[1][2]), "C", LabelPlace::above_right);
+  d.vertex(at(degenerate[2][0]), "A = B", LabelPlace::above_right);
+  d.vertex(at(degenerate[2][2]), "C", LabelPlace::above_left);
+  d.vertex(at(degenerate[3][0]), "A = B = C", LabelPlace::above_left);
+  d.legend_fill("in a bounding box: tested", dc::light_gray);
+  d.legend_fill("drawn without the guard", dc::vermillion);
+  d.legend_mark("NaN weights: centre on the segment", PixelMark::ring);
+  d.legend_line("the ideal segment (zero area)", dc::blue);
+  d.legend_note(
+      "Without the guard: " + std::to_string(drawn.size()) +
+      " pixels drawn. With the guard: " + std::to_string(pixels_of(guarded, marked).size()) + ".");
+  return d.svg();
 }
 
-// The kept triangle of the seeded search: white where both draw, red where only double does
-// (float misses it), blue where only float does.
-Canvas float_versus_double() {
-  const auto [a, b, c] = tri::ch06::float_double_disagreement;
+// The kept triangle of the seeded search, on its 16x16 canvas: where float and double agree, and
+// the one pixel centre on edge BC that only double draws. The vertices are 10^4 pixels away, so
+// their true coordinates go in the legend and the edges are cut to the canvas.
+std::string float_versus_double_figure() {
+  const PixelTriangle& t = tri::ch06::float_double_disagreement;
   Canvas with_float(16, 16), with_double(16, 16);
-  with_float.enable_write_counts();
-  with_double.enable_write_counts();
-  tri::ch06::fill_triangle_barycentric<float>(with_float, a, b, c, tri::colors::white);
-  tri::ch06::fill_triangle_barycentric<double>(with_double, a, b, c, tri::colors::white);
-  Canvas canvas(16, 16);
+  tri::ch06::fill_triangle_barycentric<float>(with_float, t[0], t[1], t[2], marked);
+  tri::ch06::fill_triangle_barycentric<double>(with_double, t[0], t[1], t[2], marked);
+  const glm::ivec2 first(0, 0), last(15, 15);
+  PixelDiagram d(first, last, "float and double disagree on one centre exactly on edge BC", 32);
+  std::vector<glm::ivec2> both, double_only, float_only;
   for (int y = 0; y < 16; ++y) {
     for (int x = 0; x < 16; ++x) {
-      const bool f = with_float.write_count(x, y) > 0, d = with_double.write_count(x, y) > 0;
-      if (f && d) canvas.put_pixel(x, y, tri::colors::white);
-      if (d && !f) canvas.put_pixel(x, y, tri::colors::red);
-      if (f && !d) canvas.put_pixel(x, y, tri::colors::blue);
+      const bool f = with_float.pixel(x, y) == marked, dbl = with_double.pixel(x, y) == marked;
+      if (f && dbl) both.emplace_back(x, y);
+      if (dbl && !f) double_only.emplace_back(x, y);
+      if (f && !dbl) float_only.emplace_back(x, y);
     }
   }
-  return canvas;
+  d.fill(both, dc::covered);
+  d.fill(double_only, dc::vermillion);
+  d.fill(float_only, dc::sky_blue);
+  for (const auto p : double_only) d.mark(p, PixelMark::ring);
+  for (const auto p : float_only) d.mark(p, PixelMark::cross);
+  const std::array<Color, 3> edge_colors{dc::orange, dc::blue, dc::purple};
+  const std::array<const char*, 3> edge_names{"AB", "BC", "CA"};
+  for (std::size_t k = 0; k < 3; ++k) {
+    clipped_line(d, at(t[k]), at(t[(k + 1) % 3]), first, last, edge_colors[k]);
+  }
+  for (const auto p : double_only) {
+    d.label(at(p), "midpoint of BC " + point_text(p), LabelPlace::below_left);
+  }
+  d.legend_fill("drawn by both", dc::covered);
+  d.legend_fill("drawn by double only", dc::vermillion);
+  d.legend_mark("float rounds wA below 0 here", PixelMark::ring);
+  if (!float_only.empty()) d.legend_fill("drawn by float only", dc::sky_blue);
+  for (std::size_t k = 0; k < 3; ++k) {
+    if (tri::ch05::clip_segment_to_pixels(at(t[k]), at(t[(k + 1) % 3]), first, last)) {
+      d.legend_line(std::string("edge ") + edge_names[k], edge_colors[k]);
+    }
+  }
+  d.legend_note("Vertices far off this 16 x 16 canvas: A " + point_text(t[0]) + ", B " +
+                point_text(t[1]) + ", C " + point_text(t[2]) + ".");
+  d.legend_note("double draws " + std::to_string(both.size() + double_only.size()) +
+                " pixels (the exact set), float " +
+                std::to_string(both.size() + float_only.size()) + ".");
+  return d.svg();
 }
 
 // A zero-area triangle 10^7 away, which double leaves empty and float draws because it computes
-// the area as 2^21: white where float draws a pixel centre that lies exactly on the line, red
-// where it draws one off the line.
-Canvas float_zero_area_far_away() {
-  const auto [a, b, c] = tri::ch06::collinear_at_ten_million;
-  Canvas canvas(32, 32);
-  tri::ch06::fill_triangle_barycentric<double>(canvas, a, b, c, tri::colors::yellow);
-  tri::ch06::fill_triangle_barycentric<float>(canvas, a, b, c, tri::colors::red);
-  // The line has direction (1, 7) through (16, 16): these are its pixel centres on the canvas.
-  for (int k = -2; k <= 2; ++k) {
-    if (canvas.pixel(16 + k, 16 + 7 * k) == tri::colors::red) {
-      canvas.put_pixel(16 + k, 16 + 7 * k, tri::colors::white);
-    }
+// the area as 2^21: the pixel centres float draws on the line and off it.
+std::string float_zero_area_far_away_figure() {
+  const PixelTriangle& t = tri::ch06::collinear_at_ten_million;
+  Canvas with_float(32, 32), with_double(32, 32);
+  tri::ch06::fill_triangle_barycentric<float>(with_float, t[0], t[1], t[2], marked);
+  tri::ch06::fill_triangle_barycentric<double>(with_double, t[0], t[1], t[2], marked);
+  const glm::ivec2 first(0, 0), last(31, 31);
+  PixelDiagram d(first, last, "float draws a zero-area triangle whose vertices are 10^7 away", 18);
+  std::vector<glm::ivec2> on_line, off_line;
+  for (const auto p : pixels_of(with_float, marked)) {
+    // On the line through the vertices exactly when the integer cross product is 0.
+    const glm::i64vec2 u = glm::i64vec2(t[1]) - glm::i64vec2(t[0]);
+    const glm::i64vec2 v = glm::i64vec2(p) - glm::i64vec2(t[0]);
+    (u.x * v.y - u.y * v.x == 0 ? on_line : off_line).push_back(p);
   }
-  return canvas;
+  d.fill(on_line, dc::sky_blue);
+  d.fill(off_line, dc::vermillion);
+  for (const auto p : on_line) d.mark(p, PixelMark::ring);
+  for (const auto p : off_line) d.mark(p, PixelMark::cross);
+  clipped_line(d, at(t[0]), at(t[1]), first, last, dc::blue);
+  d.vertex(at(t[2]), "C", LabelPlace::right);
+  d.legend_fill("drawn by float, centre on the line", dc::sky_blue);
+  d.legend_mark("on the line", PixelMark::ring);
+  d.legend_fill("drawn by float, centre off the line", dc::vermillion);
+  d.legend_mark("off the line", PixelMark::cross);
+  d.legend_line("the line through A, B, C (zero area)", dc::blue);
+  d.legend_note("A " + point_text(t[0]) + " and B " + point_text(t[1]) +
+                " lie far off the canvas.");
+  d.legend_note("float draws " + std::to_string(on_line.size() + off_line.size()) +
+                " pixels, double " + std::to_string(pixels_of(with_double, marked).size()) + ".");
+  return d.svg();
 }
 
 }  // namespace
@@ -129,18 +299,17 @@ int main(int argc, char** argv) {
   return tri::run_chapter_program(
       argc, argv, "06_barycentric",
       "Chapter 06, bounding box and barycentric coordinates: tinyrenderer's three triangles over\n"
-      "their bounding boxes (06_bounding_boxes.png), filled (06_tinyrenderer_triangles.png) and\n"
-      "coloured by their weights (06_barycentric_weights.png); what zero-area triangles draw\n"
-      "without the guard (06_zero_area_unguarded.png); the pixel float misses and double keeps\n"
-      "(06_float_vs_double.png); a zero-area triangle 10^7 away that float draws\n"
-      "(06_float_zero_area_far_away.png).",
+      "their bounding boxes (06_bounding_boxes.svg), filled (06_tinyrenderer_triangles.svg) and\n"
+      "coloured by their weights (06_barycentric_weights.svg); what zero-area triangles draw\n"
+      "without the guard (06_zero_area_unguarded.svg); the pixel float misses and double keeps\n"
+      "(06_float_vs_double.svg); a zero-area triangle 10^7 away that float draws\n"
+      "(06_float_zero_area_far_away.svg).",
       [](tri::FigureWriter& figures) {
-        figures.save_png("06_bounding_boxes", tri::magnified(bounding_boxes(), 3));
-        figures.save_png("06_tinyrenderer_triangles", tri::magnified(tinyrenderer_triangles(), 3));
-        figures.save_png("06_barycentric_weights", tri::magnified(weights(), 3));
-        figures.save_png("06_zero_area_unguarded", tri::magnified(zero_area_unguarded(), 24));
-        figures.save_png("06_float_vs_double", tri::magnified(float_versus_double(), 24));
-        figures.save_png("06_float_zero_area_far_away",
-                         tri::magnified(float_zero_area_far_away(), 12));
+        figures.save_svg("06_bounding_boxes", bounding_boxes_figure());
+        figures.save_svg("06_tinyrenderer_triangles", tinyrenderer_figure());
+        figures.save_svg("06_barycentric_weights", weights_figure());
+        figures.save_svg("06_zero_area_unguarded", zero_area_unguarded_figure());
+        figures.save_svg("06_float_vs_double", float_versus_double_figure());
+        figures.save_svg("06_float_zero_area_far_away", float_zero_area_far_away_figure());
       });
 }

@@ -1,12 +1,14 @@
 // Chapter 08's figures: which edges each pixel passes (the one-branch test), the spans of a
 // sliver against its bounding box, a triangle's 8x8 blocks by class, which path the hybrid takes
-// per triangle, and the bands the threads share out.
+// per triangle (and close up, which pixels each path tests), and the bands the threads share out.
 #include <array>
-#include <cmath>
+#include <string>
 #include <vector>
 
 #include "blocks.hpp"
+#include "clip_segment.hpp"
 #include "figures.hpp"
+#include "pixel_diagram.hpp"
 #include "random.hpp"
 #include "simd.hpp"
 #include "spans.hpp"
@@ -17,11 +19,19 @@ namespace {
 
 using tri::Canvas;
 using tri::Color;
+using tri::LabelPlace;
+using tri::PixelDiagram;
+using tri::PixelMark;
 using tri::Triangle;
 using tri::ch07::PixelRange;
+namespace dc = tri::diagram_colors;
 
-constexpr Color dark{40, 40, 48, 255};
-constexpr Color box_gray{80, 80, 90, 255};
+// Okabe–Ito colours lightened towards white, for fills under the centre dots.
+constexpr Color light_green{153, 216, 199, 255};
+constexpr Color light_vermillion{242, 191, 153, 255};
+constexpr Color light_blue{153, 199, 224, 255};
+constexpr Color light_purple{235, 201, 220, 255};
+constexpr Color light_orange{245, 207, 128, 255};
 
 Color mix(Color a, Color b, int percent_b) {
   const auto channel = [&](int i) {
@@ -30,89 +40,163 @@ Color mix(Color a, Color b, int percent_b) {
   return {channel(0), channel(1), channel(2), 255};
 }
 
-void fill_rect(Canvas& canvas, const PixelRange& r, Color color) {
-  for (int y = r.first_y; y <= r.last_y; ++y) {
-    for (int x = r.first_x; x <= r.last_x; ++x) canvas.put_pixel(x, y, color);
+// The outline of a rectangle of pixels (their squares' outer border).
+void outline(PixelDiagram& d, const PixelRange& r, Color color, double width, bool dashed = false) {
+  const glm::dvec2 low(r.first_x - 0.5, r.first_y - 0.5), high(r.last_x + 0.5, r.last_y + 0.5);
+  d.line(low, {high.x, low.y}, color, width, dashed);
+  d.line({high.x, low.y}, high, color, width, dashed);
+  d.line(high, {low.x, high.y}, color, width, dashed);
+  d.line({low.x, high.y}, low, color, width, dashed);
+}
+
+// A triangle's ideal edges, cut to the pixels first..last of a whole-scene diagram.
+void clipped_triangle(PixelDiagram& d, const Triangle& t, glm::ivec2 first, glm::ivec2 last,
+                      double width) {
+  for (std::size_t k = 0; k < 3; ++k) {
+    if (const auto s = tri::ch05::clip_segment_to_pixels(t[k], t[(k + 1) % 3], first, last)) {
+      d.line((*s)[0], (*s)[1], dc::black, width);
+    }
   }
 }
 
-// Step 2: each candidate pixel coloured by the edges it passes; a channel goes dark for each
-// failed edge (red: edge 0, green: edge 1, blue: edge 2). White: all three pass, one OR says so.
-Canvas edge_signs() {
-  Canvas canvas(40, 30, dark);
-  const auto setup = tri::ch08::setup_triangle({{{3.5, 4.25}, {36.75, 9.5}, {14.25, 27}}}, 40, 30);
+// The triangle's ideal edges and its three labelled vertices (A, B, C counter-clockwise).
+void draw_triangle(PixelDiagram& d, const Triangle& t, std::array<LabelPlace, 3> places) {
+  d.triangle(t[0], t[1], t[2], dc::black);
+  d.vertex(t[0], "A", places[0]);
+  d.vertex(t[1], "B", places[1]);
+  d.vertex(t[2], "C", places[2]);
+}
+
+// Step 2: every candidate pixel by the edges it passes (the setup's edges 0, 1, 2 are BC, CA and
+// AB for a counter-clockwise A, B, C); pixels outside the candidate range are never tested.
+std::string edge_signs_figure() {
+  const Triangle t{{{1.5, 2.25}, {18.75, 5.5}, {7.25, 14}}};
+  const auto setup = tri::ch08::setup_triangle(t, 21, 17);
+  PixelDiagram d({0, 0}, {20, 16}, "Which edges each candidate pixel passes: (w0 | w1 | w2) >= 0",
+                 26);
+  const std::array<Color, 3> fails_one{light_blue, light_purple, light_vermillion};
   const auto& r = setup->range;
+  int fails_two = 0;
   for (int y = r.first_y; y <= r.last_y; ++y) {
     for (int x = r.first_x; x <= r.last_x; ++x) {
-      std::array<std::uint8_t, 3> rgb{};
-      for (int e = 0; e < 3; ++e) {
-        const bool pass =
-            setup->edges[static_cast<std::size_t>(e)].at(x - r.first_x, y - r.first_y) >= 0;
-        rgb[static_cast<std::size_t>(e)] = pass ? 255 : 70;
+      int failed = 0;
+      std::size_t which = 0;
+      for (std::size_t e = 0; e < 3; ++e) {
+        if (setup->edges[e].at(x - r.first_x, y - r.first_y) < 0) {
+          ++failed;
+          which = e;
+        }
       }
-      canvas.put_pixel(x, y, Color{rgb[0], rgb[1], rgb[2], 255});
+      fails_two += failed == 2;
+      d.fill({x, y}, failed == 0 ? light_green : failed == 1 ? fails_one[which] : dc::light_gray);
     }
   }
-  return canvas;
+  outline(d, r, dc::dark_gray, 2, true);
+  d.line(t[0], t[1], dc::vermillion);
+  d.line(t[1], t[2], dc::blue);
+  d.line(t[2], t[0], dc::purple);
+  d.vertex(t[0], "A", LabelPlace::below_right);
+  d.vertex(t[1], "B", LabelPlace::below_left);
+  d.vertex(t[2], "C", LabelPlace::above_right);
+  d.legend_fill("passes all three: drawn", light_green);
+  d.legend_fill("fails AB only", light_vermillion);
+  d.legend_fill("fails BC only", light_blue);
+  d.legend_fill("fails CA only", light_purple);
+  if (fails_two > 0) d.legend_fill("fails two (past a vertex)", dc::light_gray);
+  d.legend_line("candidate pixels (bounding box)", dc::dark_gray, true);
+  d.legend_line("edge AB", dc::vermillion);
+  d.legend_line("edge BC", dc::blue);
+  d.legend_line("edge CA", dc::purple);
+  return d.svg();
 }
 
-// Step 3: a sliver's bounding box (grey: what a per-pixel loop tests) and its spans, one per
-// row, in alternating colours: the only pixels the span walker touches.
-Canvas sliver_spans() {
-  Canvas canvas(64, 40, dark);
-  const auto setup = tri::ch08::setup_triangle({{{2.5, 3.25}, {61, 36.5}, {30.75, 20.5}}}, 64, 40);
-  fill_rect(canvas, setup->range, box_gray);
+// Step 3: a sliver's candidate pixels (what steps 1 and 2 test) and its spans, one per row in
+// alternating colours: the only pixels the span walker touches.
+std::string sliver_spans_figure() {
+  const Triangle t{{{1.5, 1.25}, {30.5, 18.5}, {13.75, 11.5}}};
+  const auto setup = tri::ch08::setup_triangle(t, 32, 20);
+  PixelDiagram d({0, 0}, {31, 19}, "A sliver: one span per row instead of its bounding box", 20);
+  const auto& r = setup->range;
+  const auto candidates = (r.last_x - r.first_x + 1) * (r.last_y - r.first_y + 1);
+  for (int y = r.first_y; y <= r.last_y; ++y) {
+    for (int x = r.first_x; x <= r.last_x; ++x) d.fill({x, y}, dc::light_gray);
+  }
   tri::ch08::SpanWalker walker(*setup);
+  int spanned = 0;
   for (int y = walker.first_row(); y <= walker.last_row(); ++y, walker.next_row()) {
     const tri::ch08::RowSpan s = walker.span();
-    for (int x = s.first; x <= s.last; ++x)
-      canvas.put_pixel(x, y, y % 2 == 0 ? tri::colors::cyan : tri::colors::yellow);
-  }
-  return canvas;
-}
-
-// Block borders drawn on a magnified canvas, every `block` source pixels from `origin`.
-void draw_block_grid(Canvas& big, int factor, const PixelRange& range, Color color) {
-  for (int y = range.first_y * factor; y < (range.last_y + 1) * factor; ++y) {
-    for (int x = range.first_x * factor; x < (range.last_x + 1) * factor; ++x) {
-      const bool vertical =
-          (x / factor - range.first_x) % tri::ch08::block_size == 0 && x % factor == 0;
-      const bool horizontal =
-          (y / factor - range.first_y) % tri::ch08::block_size == 0 && y % factor == 0;
-      if (vertical || horizontal) big.put_pixel(x, y, color);
+    for (int x = s.first; x <= s.last; ++x) {
+      d.fill({x, y}, y % 2 == 0 ? dc::sky_blue : dc::orange);
+      ++spanned;
     }
   }
+  outline(d, r, dc::dark_gray, 2, true);
+  draw_triangle(d, t, {LabelPlace::below_right, LabelPlace::left, LabelPlace::above_left});
+  d.legend_fill("candidate pixel: tested by steps 1 and 2", dc::light_gray);
+  d.legend_fill("span, even row", dc::sky_blue);
+  d.legend_fill("span, odd row", dc::orange);
+  d.legend_line("ideal triangle", dc::black);
+  d.legend_line("candidate pixels", dc::dark_gray, true);
+  d.legend_note("Steps 1 and 2 test " + std::to_string(candidates) + " pixels; the spans fill " +
+                std::to_string(spanned) + ", testing none.");
+  return d.svg();
 }
 
-// Step 4: the 8x8 blocks of a triangle's candidate pixels: outside (dark), inside (green, filled
-// without a test), partial (amber, each pixel tested; white where covered).
-Canvas blocks() {
-  constexpr int factor = 8;
-  Canvas canvas(72, 56, dark);
-  const auto setup =
-      tri::ch08::setup_triangle({{{3.25, 2.5}, {69.5, 14.75}, {22.5, 53.25}}}, 72, 56);
+// Step 4: the 8x8 blocks of a triangle's candidate pixels by class; a partial block's pixels by
+// whether they are covered.
+std::string blocks_figure() {
+  const Triangle t{{{3.25, 2.5}, {69.5, 14.75}, {23.5, 51.25}}};
+  const auto setup = tri::ch08::setup_triangle(t, 72, 56);
+  PixelDiagram d({0, 0}, {71, 55}, "8x8 blocks: skipped, filled without a test, or tested", 10);
+  int inside = 0, outside = 0, partial = 0;
+  std::vector<PixelRange> blocks, empty_blocks;
   tri::ch08::for_each_block(*setup, [&](const PixelRange& block, tri::ch08::BlockCoverage c) {
-    if (c == tri::ch08::BlockCoverage::inside) fill_rect(canvas, block, Color{60, 170, 80, 255});
-    if (c == tri::ch08::BlockCoverage::outside) fill_rect(canvas, block, Color{55, 55, 70, 255});
-    if (c == tri::ch08::BlockCoverage::partial) {
-      for (int y = block.first_y; y <= block.last_y; ++y) {
-        for (int x = block.first_x; x <= block.last_x; ++x) {
-          canvas.put_pixel(x, y,
-                           setup->covers(x, y) ? tri::colors::white : Color{200, 140, 40, 255});
+    blocks.push_back(block);
+    bool any = false;
+    for (int y = block.first_y; y <= block.last_y; ++y) {
+      for (int x = block.first_x; x <= block.last_x; ++x) {
+        const bool covered = setup->covers(x, y);
+        any = any || covered;
+        switch (c) {
+          case tri::ch08::BlockCoverage::inside:
+            d.fill({x, y}, light_green);
+            break;
+          case tri::ch08::BlockCoverage::outside:
+            d.fill({x, y}, dc::light_gray);
+            break;
+          case tri::ch08::BlockCoverage::partial:
+            d.fill({x, y}, covered ? dc::sky_blue : light_orange);
+            break;
         }
       }
     }
+    inside += c == tri::ch08::BlockCoverage::inside;
+    outside += c == tri::ch08::BlockCoverage::outside;
+    partial += c == tri::ch08::BlockCoverage::partial;
+    if (c == tri::ch08::BlockCoverage::partial && !any) empty_blocks.push_back(block);
   });
-  Canvas big = tri::magnified(canvas, factor);
-  draw_block_grid(big, factor, setup->range, Color{20, 20, 20, 255});
-  return big;
+  for (const auto& block : blocks) outline(d, block, dc::black, 2);
+  for (const auto& block : empty_blocks) outline(d, block, dc::vermillion, 4);
+  draw_triangle(d, t, {LabelPlace::below_right, LabelPlace::above_left, LabelPlace::right});
+  d.legend_fill("inside block: filled without a test", light_green);
+  d.legend_fill("outside block: skipped", dc::light_gray);
+  d.legend_fill("partial block, pixel covered", dc::sky_blue);
+  d.legend_fill("partial block, pixel not covered", light_orange);
+  d.legend_line("ideal triangle", dc::black);
+  d.legend_line("partial, yet no pixel covered: no single edge rejects it", dc::vermillion);
+  d.legend_note(std::to_string(inside) + " inside, " + std::to_string(outside) + " outside, " +
+                std::to_string(partial) + " partial blocks, " +
+                std::to_string(empty_blocks.size()) + " of them without a covered pixel.");
+  return d.svg();
 }
 
-// Step 6: mixed triangles coloured by the path the hybrid takes: magenta for triangles within one
-// 8x8 block (lane test), cyan for the rest (spans).
-Canvas hybrid_paths() {
-  Canvas canvas(160, 120, dark);
+// Step 6: mixed triangles by the path the hybrid takes: lanes for a triangle whose candidate
+// pixels fit in one 8x8 block, spans for the rest.
+std::string hybrid_paths_figure() {
+  Canvas canvas(160, 120);
   tri::Random random(8);
+  std::vector<Triangle> triangles;
+  int lanes = 0, spans = 0;
   for (int i = 0; i < 140; ++i) {
     const double extent = i % 3 == 0 ? random.real(8, 30) : random.real(1, 4);
     const glm::dvec2 centre(random.real(0, 160), random.real(0, 120));
@@ -123,18 +207,71 @@ Canvas hybrid_paths() {
     const auto setup = tri::ch08::setup_triangle(t, 160, 120);
     if (!setup) continue;
     const bool one_block = tri::ch08::fits_one_block(*setup);
-    const Color color = mix(one_block ? tri::colors::magenta : tri::colors::cyan,
-                            tri::colors::white, random.integer(0, 50));
-    tri::ch08::draw_triangle_spans(canvas, t, color);
+    (one_block ? lanes : spans) += 1;
+    tri::ch08::draw_triangle_spans(canvas, t, one_block ? dc::purple : dc::sky_blue);
+    triangles.push_back(t);
   }
-  return canvas;
+  PixelDiagram d({0, 0}, {159, 119}, "The hybrid's path per triangle: lanes or spans", 4);
+  d.show_centres(false);
+  d.fill_from(canvas, tri::colors::black);
+  for (const auto& t : triangles) clipped_triangle(d, t, {0, 0}, {159, 119}, 0.75);
+  d.legend_fill("fits one 8x8 block: lane test (" + std::to_string(lanes) + " triangles)",
+                dc::purple);
+  d.legend_fill("larger: spans (" + std::to_string(spans) + " triangles)", dc::sky_blue);
+  d.legend_line("ideal triangle edges", dc::black);
+  d.legend_note("Where triangles overlap, the later one is on top (scene order).");
+  return d.svg();
 }
 
-// Step 7: a scene drawn by two threads; every pixel tinted by the thread that owns its row's
-// band (blue: thread 0, orange: thread 1). Each thread draws every triangle, clipped to its
-// bands.
-Canvas bands() {
-  Canvas canvas(128, 96, Color{30, 30, 30, 255});
+// Step 6, close up: the two paths on one small and one larger triangle. The small one's candidate
+// pixels fit one 8x8 block, and every one of them is tested in lanes; the larger one is drawn as
+// spans, which touch only the covered pixels.
+std::string hybrid_paths_zoom_figure() {
+  const Triangle small{{{1.5, 2.25}, {7.25, 4.5}, {3.75, 8.5}}};
+  const Triangle large{{{10.5, 1.25}, {22.5, 4.75}, {14.25, 10.5}}};
+  const glm::ivec2 first(0, 0), last(23, 11);
+  PixelDiagram d(first, last,
+                 "Close up: lanes test every candidate pixel, spans touch only covered ones", 26);
+  const auto small_setup = tri::ch08::setup_triangle(small, 24, 12);
+  const auto& r = small_setup->range;
+  for (int y = r.first_y; y <= r.last_y; ++y) {
+    for (int x = r.first_x; x <= r.last_x; ++x) {
+      d.fill({x, y}, small_setup->covers(x, y) ? dc::purple : light_purple);
+    }
+  }
+  outline(d, r, dc::dark_gray, 2, true);
+  const auto large_setup = tri::ch08::setup_triangle(large, 24, 12);
+  tri::ch08::SpanWalker walker(*large_setup);
+  for (int y = walker.first_row(); y <= walker.last_row(); ++y, walker.next_row()) {
+    const tri::ch08::RowSpan s = walker.span();
+    for (int x = s.first; x <= s.last; ++x) d.fill({x, y}, dc::sky_blue);
+  }
+  outline(d, large_setup->range, dc::dark_gray, 2, true);
+  d.triangle(small[0], small[1], small[2], dc::black);
+  d.triangle(large[0], large[1], large[2], dc::black);
+  d.vertex(small[0], "A", LabelPlace::below_right);
+  d.vertex(small[1], "B", LabelPlace::below_right);
+  d.vertex(small[2], "C", LabelPlace::above_right);
+  d.vertex(large[0], "A", LabelPlace::below_right);
+  d.vertex(large[1], "B", LabelPlace::below_left);
+  d.vertex(large[2], "C", LabelPlace::above_right);
+  d.legend_fill("lanes: tested, covered", dc::purple);
+  d.legend_fill("lanes: tested, not covered", light_purple);
+  d.legend_fill("spans: filled without a test", dc::sky_blue);
+  d.legend_line("candidate pixels", dc::dark_gray, true);
+  d.legend_line("ideal triangles", dc::black);
+  d.legend_note(
+      "Left: candidate pixels within one 8x8 block (fits_one_block). Right: larger, so "
+      "spans; the rest of its frame is never touched.");
+  return d.svg();
+}
+
+// Step 7: a scene drawn by two threads; every row tinted by the thread that owns its band. Each
+// thread draws every triangle, clipped to its bands; the result is the serial picture whatever
+// the timing, so the figure is the same on every run.
+std::string bands_figure() {
+  const Color background{30, 30, 30, 255};
+  Canvas canvas(128, 96, background);
   tri::Random random(3);
   std::vector<tri::SceneTriangle> scene;
   for (int i = 0; i < 24; ++i) {
@@ -148,14 +285,32 @@ Canvas bands() {
     scene.push_back({t, Color{level, level, level, 255}});
   }
   tri::ch08::draw_batch_on_threads(canvas, scene, 2);
-  const std::array<Color, 2> tints{Color{40, 110, 255, 255}, Color{255, 140, 30, 255}};
+  const auto bands = tri::ch08::bands_for(canvas.height(), 2);
+  const std::array<Color, 2> tints{dc::blue, dc::orange};
+  PixelDiagram d({0, 0}, {127, 95},
+                 "Two threads, bands of " + std::to_string(bands.rows) + " rows dealt in turn", 5);
+  d.show_centres(false);
   for (int y = 0; y < canvas.height(); ++y) {
-    const Color tint =
-        tints[static_cast<std::size_t>(tri::ch08::bands_for(canvas.height(), 2).owner(y))];
-    for (int x = 0; x < canvas.width(); ++x)
-      canvas.put_pixel(x, y, mix(canvas.pixel(x, y), tint, 45));
+    const Color tint = tints[static_cast<std::size_t>(bands.owner(y))];
+    for (int x = 0; x < canvas.width(); ++x) {
+      const Color c = canvas.pixel(x, y);
+      // Empty pixels show the owner's colour faintly; drawn ones its colour over the grey.
+      d.fill({x, y}, c == background ? mix(tint, dc::empty, 80) : mix(c, tint, 55));
+    }
   }
-  return canvas;
+  for (int y = bands.rows; y < canvas.height(); y += bands.rows) {
+    d.line({-0.5, y - 0.5}, {127.5, y - 0.5}, dc::black, 1.5);
+  }
+  for (const auto& t : scene) clipped_triangle(d, t.vertices, {0, 0}, {127, 95}, 0.75);
+  d.legend_fill("empty, row of thread 0", mix(tints[0], dc::empty, 80));
+  d.legend_fill("drawn by thread 0", mix(Color{190, 190, 190, 255}, tints[0], 55));
+  d.legend_fill("empty, row of thread 1", mix(tints[1], dc::empty, 80));
+  d.legend_fill("drawn by thread 1", mix(Color{190, 190, 190, 255}, tints[1], 55));
+  d.legend_line("band border", dc::black);
+  d.legend_note(
+      "Triangles are drawn in grey levels 120 to 255 under the tint; thin lines: "
+      "their ideal edges.");
+  return d.svg();
 }
 
 }  // namespace
@@ -163,15 +318,16 @@ Canvas bands() {
 int main(int argc, char** argv) {
   return tri::run_chapter_program(
       argc, argv, "08_fast_exact",
-      "Chapter 08, fast and still exact: which edges each pixel passes (08_edge_signs.png), the\n"
-      "spans of a sliver in its bounding box (08_sliver_spans.png), a triangle's 8x8 blocks by\n"
-      "class (08_blocks.png), the path the hybrid takes per triangle (08_hybrid_paths.png), and\n"
-      "the bands two threads share (08_bands.png).",
+      "Chapter 08, fast and still exact: which edges each pixel passes (08_edge_signs.svg), the\n"
+      "spans of a sliver in its bounding box (08_sliver_spans.svg), a triangle's 8x8 blocks by\n"
+      "class (08_blocks.svg), the path the hybrid takes per triangle (08_hybrid_paths.svg, close\n"
+      "up in 08_hybrid_paths_zoom.svg), and the bands two threads share (08_bands.svg).",
       [](tri::FigureWriter& figures) {
-        figures.save_png("08_edge_signs", tri::magnified(edge_signs(), 12));
-        figures.save_png("08_sliver_spans", tri::magnified(sliver_spans(), 10));
-        figures.save_png("08_blocks", blocks());
-        figures.save_png("08_hybrid_paths", tri::magnified(hybrid_paths(), 4));
-        figures.save_png("08_bands", tri::magnified(bands(), 5));
+        figures.save_svg("08_edge_signs", edge_signs_figure());
+        figures.save_svg("08_sliver_spans", sliver_spans_figure());
+        figures.save_svg("08_blocks", blocks_figure());
+        figures.save_svg("08_hybrid_paths", hybrid_paths_figure());
+        figures.save_svg("08_hybrid_paths_zoom", hybrid_paths_zoom_figure());
+        figures.save_svg("08_bands", bands_figure());
       });
 }
