@@ -224,14 +224,15 @@ void process_markdown(const std::string& name, const std::string& text, SourceCa
     if (!has_block) {
       report.problems.push_back(
           {name, line_number,
-           "listing of " + where + " is not followed by a ```cpp block" + refresh_hint()});
+           "listing of " + where + " is not followed by a ```cpp block" + refresh_hint(), true});
     } else {
       std::string shown;
       for (const auto& body_line : body) shown += body_line + '\n';
       if (shown != region->text) {
         report.problems.push_back({name, line_number,
                                    "listing differs from " + where + " (marked at line " +
-                                       std::to_string(region->first_line) + ")" + refresh_hint()});
+                                       std::to_string(region->first_line) + ")" + refresh_hint(),
+                                   true});
       }
       i = body_end;
     }
@@ -261,7 +262,7 @@ Report run(const fs::path& root, bool write) {
     report.listings += found.listings;
     for (auto& problem : found.problems) {
       // --update fixes the listings that differ or lack their block; the rest stay reported.
-      if (!write || !problem.message.ends_with(refresh_hint())) {
+      if (!write || !problem.refreshable) {
         report.problems.push_back(std::move(problem));
       }
     }

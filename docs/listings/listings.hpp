@@ -24,6 +24,7 @@ struct Problem {
   std::string file;
   int line = 0;
   std::string message;
+  bool refreshable = false;  ///< --update fixes it (a listing that differs or lacks its block)
 };
 
 /// "file:line: message", the form compilers use, so editors can jump to it.
