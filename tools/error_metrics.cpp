@@ -69,6 +69,7 @@ ErrorReport measure_error(const TriangleAlgorithm& algorithm, const Scene& scene
       scene);
 }
 
+// [listing measure_error]
 ErrorReport measure_error(const CountingDraw& draw, const Scene& scene) {
   static constexpr TriangleAlgorithm oracle{"exact_oracle", "07_exact_coverage",
                                             CoverageRule::top_left, "", ch07::draw_triangle_oracle};
@@ -99,5 +100,6 @@ ErrorReport measure_error(const CountingDraw& draw, const Scene& scene) {
       static_cast<std::uint64_t>(std::count(changed.begin(), changed.end(), true));
   return report;
 }
+// [/listing]
 
 }  // namespace tri

@@ -4,6 +4,7 @@
 
 namespace tri::ch01 {
 
+// [listing interpolate]
 std::vector<double> interpolate(int i0, double d0, int i1, double d1) {
   if (i0 == i1) return {d0};  // one sample; (d1 - d0) / 0 would be the slope otherwise
   std::vector<double> values;
@@ -17,5 +18,6 @@ std::vector<double> interpolate(int i0, double d0, int i1, double d1) {
   }
   return values;
 }
+// [/listing]
 
 }  // namespace tri::ch01

@@ -31,6 +31,7 @@ MajorMinor orient(glm::ivec2 p0, glm::ivec2 p1) {
   return m;
 }
 
+// [listing exact_pixel_at]
 ExactLinePixel pixel_at(const MajorMinor& m, std::int64_t major) {
   const std::int64_t n = m.a1 - m.a0;
   const std::int64_t k = major - m.a0;
@@ -46,6 +47,7 @@ ExactLinePixel pixel_at(const MajorMinor& m, std::int64_t major) {
   const auto b = static_cast<int>(minor);
   return {m.x_major ? glm::ivec2(a, b) : glm::ivec2(b, a), tie};
 }
+// [/listing]
 
 }  // namespace
 

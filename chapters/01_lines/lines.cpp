@@ -17,6 +17,7 @@ int round_to_int(double v) {
 
 }  // namespace
 
+// [listing draw_line_gambetta]
 void draw_line_gambetta(Canvas& canvas, glm::ivec2 p0, glm::ivec2 p1, Color color) {
   // 64-bit differences: endpoints 2^31 apart overflow int.
   if (std::abs(std::int64_t{p1.x} - p0.x) > std::abs(std::int64_t{p1.y} - p0.y)) {
@@ -31,7 +32,9 @@ void draw_line_gambetta(Canvas& canvas, glm::ivec2 p0, glm::ivec2 p1, Color colo
     for (int y = p0.y; y <= p1.y; ++y) canvas.put_pixel(round_to_int(xs[y - p0.y]), y, color);
   }
 }
+// [/listing]
 
+// [listing draw_line_dda]
 void draw_line_dda(Canvas& canvas, glm::ivec2 p0, glm::ivec2 p1, Color color) {
   const double dx = static_cast<double>(p1.x) - p0.x;
   const double dy = static_cast<double>(p1.y) - p0.y;
@@ -52,6 +55,7 @@ void draw_line_dda(Canvas& canvas, glm::ivec2 p0, glm::ivec2 p1, Color color) {
     y += step_y;
   }
 }
+// [/listing]
 
 void draw_line_bresenham(Canvas& canvas, glm::ivec2 p0, glm::ivec2 p1, Color color) {
   // Work in 64 bits: differences of ±2^30 coordinates, doubled and multiplied, need them.
@@ -84,6 +88,7 @@ void draw_line_bresenham(Canvas& canvas, glm::ivec2 p0, glm::ivec2 p1, Color col
   std::int64_t error = 2 * dy * k - 2 * dx * moves;
   std::int64_t y = y0 + y_step * moves;
   const std::int64_t minor_size = steep ? canvas.width() : canvas.height();
+  // [listing bresenham_walk]
   for (std::int64_t x = first; x <= last; ++x) {
     if (y < 0 || y >= minor_size) {
       // Off the canvas across the line: write nothing (a far line may cross it later).
@@ -98,6 +103,7 @@ void draw_line_bresenham(Canvas& canvas, glm::ivec2 p0, glm::ivec2 p1, Color col
       error -= 2 * dx;
     }
   }
+  // [/listing]
 }
 
 void draw_line_midpoint(Canvas& canvas, glm::ivec2 p0, glm::ivec2 p1, Color color) {
@@ -108,6 +114,7 @@ void draw_line_midpoint(Canvas& canvas, glm::ivec2 p0, glm::ivec2 p1, Color colo
   const bool steep = dy > dx;
   if (steep) std::swap(dx, dy);  // dx is now the major length, dy the minor one
   // e = 2 dx * (signed distance of the next midpoint below the line); starts at dx - 2 dy.
+  // [listing midpoint_walk]
   std::int64_t e = dx - 2 * dy;
   std::int64_t x = p0.x;  // 64 bits: the walk steps once past p1
   std::int64_t y = p0.y;
@@ -129,6 +136,7 @@ void draw_line_midpoint(Canvas& canvas, glm::ivec2 p0, glm::ivec2 p1, Color colo
       e -= 2 * dy;
     }
   }
+  // [/listing]
 }
 
 }  // namespace tri::ch01

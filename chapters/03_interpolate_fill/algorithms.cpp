@@ -7,6 +7,7 @@
 namespace tri::ch03 {
 namespace {
 
+// [listing registered]
 // Approximate, not inclusive: span ends round to the nearest column, so centres up to half a
 // pixel outside an edge are drawn too (see the chapter's README for the measured count).
 constexpr std::array<TriangleAlgorithm, 1> algorithms{{
@@ -14,6 +15,7 @@ constexpr std::array<TriangleAlgorithm, 1> algorithms{{
      "Gambetta's Listing 7-1: x = f(y) per edge by Interpolate, spans rounded to nearest",
      draw_at_nearest_pixels<draw_filled_triangle>},
 }};
+// [/listing]
 
 }  // namespace
 

@@ -22,6 +22,7 @@ double edge_x_at(glm::ivec2 lo, glm::ivec2 hi, int y) noexcept {
   return lo.x + dx * steps / dy;
 }
 
+// [listing edge_xs]
 // The book's Interpolate(lo.y, lo.x, hi.y, hi.x), restricted to the rows in `rows`.
 std::vector<double> edge_xs(glm::ivec2 lo, glm::ivec2 hi, RowRange rows) {
   const int first = std::max(rows.first, lo.y);
@@ -29,15 +30,18 @@ std::vector<double> edge_xs(glm::ivec2 lo, glm::ivec2 hi, RowRange rows) {
   if (first > last) return {};
   return ch01::interpolate(first, edge_x_at(lo, hi, first), last, edge_x_at(lo, hi, last));
 }
+// [/listing]
 
 }  // namespace
 
+// [listing sort_by_y]
 SortedTriangle sort_by_y(glm::ivec2 p0, glm::ivec2 p1, glm::ivec2 p2) noexcept {
   if (p1.y < p0.y) std::swap(p1, p0);
   if (p2.y < p0.y) std::swap(p2, p0);
   if (p2.y < p1.y) std::swap(p2, p1);
   return {p0, p1, p2};
 }
+// [/listing]
 
 RowRange triangle_rows(const SortedTriangle& t) noexcept {
   return {t.p0.y, t.p2.y};
@@ -47,6 +51,7 @@ RowRange visible_rows(const SortedTriangle& t, int canvas_height) noexcept {
   return {std::max(t.p0.y, 0), std::min(t.p2.y, canvas_height - 1)};
 }
 
+// [listing interpolate_edges]
 EdgeXs interpolate_edges(const SortedTriangle& t, RowRange rows) {
   const RowRange kept{std::max(rows.first, t.p0.y), std::min(rows.last, t.p2.y)};
   if (!kept.empty() &&
@@ -55,7 +60,9 @@ EdgeXs interpolate_edges(const SortedTriangle& t, RowRange rows) {
   }
   return {edge_xs(t.p0, t.p1, kept), edge_xs(t.p1, t.p2, kept), edge_xs(t.p0, t.p2, kept)};
 }
+// [/listing]
 
+// [listing concatenate_short_sides]
 std::vector<double> concatenate_short_sides(std::vector<double> x01,
                                             const std::vector<double>& x12) {
   // Both present means both hold row y1: keep x12's copy. Forgetting this shifts every row above.
@@ -63,11 +70,13 @@ std::vector<double> concatenate_short_sides(std::vector<double> x01,
   x01.insert(x01.end(), x12.begin(), x12.end());
   return x01;
 }
+// [/listing]
 
 std::size_t middle_row_index(std::size_t rows) noexcept {
   return rows / 2;
 }
 
+// [listing choose_left_right]
 SpanEnds choose_left_right(std::vector<double> x02, std::vector<double> x012) {
   const std::size_t rows = std::min(x02.size(), x012.size());
   if (rows == 0) return {std::move(x02), std::move(x012)};
@@ -84,7 +93,9 @@ SpanEnds choose_left_right(std::vector<double> x02, std::vector<double> x012) {
   if (x02[row] < x012[row]) return {std::move(x02), std::move(x012)};
   return {std::move(x012), std::move(x02)};
 }
+// [/listing]
 
+// [listing draw_spans]
 int nearest_column(double x, int width) noexcept {
   const double column = std::floor(x + 0.5);
   if (!(column > -1.0)) return -1;  // also catches NaN
@@ -105,5 +116,6 @@ void draw_spans(Canvas& canvas, int first_row, const SpanEnds& spans, Color colo
     if (left <= right) canvas.fill_span(static_cast<int>(first_row + i), left, right + 1, color);
   }
 }
+// [/listing]
 
 }  // namespace tri::ch03

@@ -7,6 +7,7 @@
 
 namespace tri::ch03 {
 
+// [listing draw_filled_triangle]
 void draw_filled_triangle(Canvas& canvas, glm::ivec2 p0, glm::ivec2 p1, glm::ivec2 p2,
                           Color color) {
   const SortedTriangle t = sort_by_y(p0, p1, p2);  // step 1
@@ -24,5 +25,6 @@ void draw_filled_triangle(Canvas& canvas, glm::ivec2 p0, glm::ivec2 p1, glm::ive
   const SpanEnds spans = choose_left_right(std::move(edges.x02), std::move(x012));      // step 4
   draw_spans(canvas, rows.first, spans, color);                                         // step 5
 }
+// [/listing]
 
 }  // namespace tri::ch03

@@ -19,11 +19,13 @@ struct ArticleTriangle {
   Color color;
 };
 
+// [listing article_triangles]
 /// Red, white and green, as the article draws them.
 inline constexpr std::array<ArticleTriangle, 3> article_triangles{{
     {{{{10, 70}, {50, 160}, {70, 80}}}, colors::red},
     {{{{180, 50}, {150, 1}, {70, 180}}}, colors::white},
     {{{{180, 150}, {120, 160}, {130, 180}}}, colors::green},
 }};
+// [/listing]
 
 }  // namespace tri::ch04

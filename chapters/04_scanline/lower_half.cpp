@@ -4,6 +4,7 @@
 
 namespace tri::ch04 {
 
+// [listing lower_half_ends]
 SpanEnds lower_half_ends(const SortedTriangle& t, std::int64_t y) noexcept {
   const std::int64_t total_height = static_cast<std::int64_t>(t.t2.y) - t.t0.y;
   const std::int64_t segment_height = static_cast<std::int64_t>(t.t1.y) - t.t0.y + 1;
@@ -11,7 +12,9 @@ SpanEnds lower_half_ends(const SortedTriangle& t, std::int64_t y) noexcept {
   return {truncated_boundary_x(t.t0, t.t2, i, total_height),
           truncated_boundary_x(t.t0, t.t1, i, segment_height)};
 }
+// [/listing]
 
+// [listing draw_lower_half_boundary_points]
 void draw_lower_half_boundary_points(Canvas& canvas, glm::ivec2 a, glm::ivec2 b, glm::ivec2 c) {
   const SortedTriangle t = sort_by_y(a, b, c);
   if (t.t0.y == t.t2.y) return;  // all on one row: the total height would divide 0 by 0
@@ -22,7 +25,9 @@ void draw_lower_half_boundary_points(Canvas& canvas, glm::ivec2 a, glm::ivec2 b,
     put_pixel_if_on_canvas(canvas, ends.b, y, colors::green);
   }
 }
+// [/listing]
 
+// [listing fill_lower_half]
 void fill_lower_half(Canvas& canvas, glm::ivec2 a, glm::ivec2 b, glm::ivec2 c, Color color) {
   const SortedTriangle t = sort_by_y(a, b, c);
   if (t.t0.y == t.t2.y) return;  // all on one row: the total height would divide 0 by 0
@@ -32,5 +37,6 @@ void fill_lower_half(Canvas& canvas, glm::ivec2 a, glm::ivec2 b, glm::ivec2 c, C
     fill_span_between(canvas, y, ends.a, ends.b, color);
   }
 }
+// [/listing]
 
 }  // namespace tri::ch04

@@ -5,12 +5,15 @@
 
 namespace tri::ch04 {
 
+// [listing draw_outline]
 void draw_outline(Canvas& canvas, glm::ivec2 a, glm::ivec2 b, glm::ivec2 c, Color color) {
   ch01::draw_line_bresenham(canvas, a, b, color);
   ch01::draw_line_bresenham(canvas, b, c, color);
   ch01::draw_line_bresenham(canvas, c, a, color);
 }
+// [/listing]
 
+// [listing draw_sorted_boundaries]
 void draw_sorted_boundaries(Canvas& canvas, glm::ivec2 a, glm::ivec2 b, glm::ivec2 c) {
   const auto [t0, t1, t2] = sort_by_y(a, b, c);
   ch01::draw_line_bresenham(canvas, t0, t1, colors::green);
@@ -18,5 +21,6 @@ void draw_sorted_boundaries(Canvas& canvas, glm::ivec2 a, glm::ivec2 b, glm::ive
   // Last, so the long boundary stays red where it meets B at t0 and t2.
   ch01::draw_line_bresenham(canvas, t2, t0, colors::red);
 }
+// [/listing]
 
 }  // namespace tri::ch04

@@ -5,6 +5,7 @@
 namespace tri::ch04 {
 namespace {
 
+// [listing fill_single_loop_rows]
 // The single loop over rows t0.y .. t0.y + last_i, shared by the fixed and the published bound.
 void fill_single_loop_rows(Canvas& canvas, const SortedTriangle& t, std::int64_t last_i,
                            Color color) {
@@ -14,16 +15,20 @@ void fill_single_loop_rows(Canvas& canvas, const SortedTriangle& t, std::int64_t
     fill_span_between(canvas, y, ends.a, ends.b, color);
   }
 }
+// [/listing]
 
 }  // namespace
 
+// [listing upper_half_ends]
 SpanEnds upper_half_ends(const SortedTriangle& t, std::int64_t y) noexcept {
   const std::int64_t total_height = static_cast<std::int64_t>(t.t2.y) - t.t0.y;
   const std::int64_t segment_height = static_cast<std::int64_t>(t.t2.y) - t.t1.y + 1;
   return {truncated_boundary_x(t.t0, t.t2, y - t.t0.y, total_height),
           truncated_boundary_x(t.t1, t.t2, y - t.t1.y, segment_height)};
 }
+// [/listing]
 
+// [listing fill_two_loops]
 void fill_two_loops(Canvas& canvas, glm::ivec2 a, glm::ivec2 b, glm::ivec2 c, Color color) {
   const SortedTriangle t = sort_by_y(a, b, c);
   if (t.t0.y == t.t2.y) return;  // all on one row: the total height would divide 0 by 0
@@ -38,7 +43,9 @@ void fill_two_loops(Canvas& canvas, glm::ivec2 a, glm::ivec2 b, glm::ivec2 c, Co
     fill_span_between(canvas, y, ends.a, ends.b, color);
   }
 }
+// [/listing]
 
+// [listing single_loop_ends]
 SpanEnds single_loop_ends(const SortedTriangle& t, std::int64_t i) noexcept {
   const std::int64_t total_height = static_cast<std::int64_t>(t.t2.y) - t.t0.y;
   const std::int64_t lower_height = static_cast<std::int64_t>(t.t1.y) - t.t0.y;
@@ -48,7 +55,9 @@ SpanEnds single_loop_ends(const SortedTriangle& t, std::int64_t i) noexcept {
                   : truncated_boundary_x(t.t0, t.t1, i, lower_height);
   return {truncated_boundary_x(t.t0, t.t2, i, total_height), b};
 }
+// [/listing]
 
+// [listing single_loop_bounds]
 void fill_single_loop(Canvas& canvas, glm::ivec2 a, glm::ivec2 b, glm::ivec2 c, Color color) {
   const SortedTriangle t = sort_by_y(a, b, c);
   if (t.t0.y == t.t2.y) return;  // the article's early return for a triangle on one row
@@ -62,5 +71,6 @@ void fill_single_loop_as_published(Canvas& canvas, glm::ivec2 a, glm::ivec2 b, g
   // i < total height: one row short of t2.
   fill_single_loop_rows(canvas, t, static_cast<std::int64_t>(t.t2.y) - t.t0.y - 1, color);
 }
+// [/listing]
 
 }  // namespace tri::ch04

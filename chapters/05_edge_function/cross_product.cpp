@@ -10,6 +10,7 @@ glm::i64vec2 difference(glm::ivec2 b, glm::ivec2 a) noexcept {
 
 }  // namespace
 
+// [listing edge_crosses]
 std::int64_t edge_cross(glm::ivec2 a, glm::ivec2 b, glm::ivec2 p) noexcept {
   return cross_2d(difference(b, a), difference(p, a));
 }
@@ -17,7 +18,9 @@ std::int64_t edge_cross(glm::ivec2 a, glm::ivec2 b, glm::ivec2 p) noexcept {
 glm::i64vec3 edge_crosses(glm::ivec2 a, glm::ivec2 b, glm::ivec2 c, glm::ivec2 p) noexcept {
   return {edge_cross(a, b, p), edge_cross(b, c, p), edge_cross(c, a, p)};
 }
+// [/listing]
 
+// [listing edge_crosses_published_bug]
 glm::i64vec3 edge_crosses_published_bug(glm::ivec2 a, glm::ivec2 b, glm::ivec2 c,
                                         glm::ivec2 p) noexcept {
   // The slip: BP and CP are measured from (b.x, a.y) and (c.x, a.y), not from b and c.
@@ -26,5 +29,6 @@ glm::i64vec3 edge_crosses_published_bug(glm::ivec2 a, glm::ivec2 b, glm::ivec2 c
   return {edge_cross(a, b, p), cross_2d(difference(c, b), difference(p, b_at_a_height)),
           cross_2d(difference(a, c), difference(p, c_at_a_height))};
 }
+// [/listing]
 
 }  // namespace tri::ch05

@@ -11,6 +11,7 @@
 
 namespace tri::ch05 {
 
+// [listing cross_2d]
 /// The z component of the 3-D cross product of (u, 0) and (v, 0): u.x v.y - u.y v.x. With y up it
 /// is > 0 when v points to the left of u (counter-clockwise from it), < 0 to the right, 0 when
 /// they are parallel. It is also twice the signed area of the triangle spanned by u and v.
@@ -18,6 +19,7 @@ namespace tri::ch05 {
 constexpr std::int64_t cross_2d(glm::i64vec2 u, glm::i64vec2 v) noexcept {
   return u.x * v.y - u.y * v.x;
 }
+// [/listing]
 
 /// AB x AP: > 0 when p is left of the directed edge a -> b, 0 on its line, < 0 right of it.
 /// Computed exactly in 64 bits for any a, b, p within ±2^30: every difference (up to 2^31) is

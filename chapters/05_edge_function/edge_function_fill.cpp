@@ -6,6 +6,7 @@
 namespace tri::ch05 {
 namespace {
 
+// [listing fill_box]
 // One loop for both tests, so the figure compares only the tests. A template, not a function
 // pointer, so the test is inlined into the loop.
 template <bool (*inside)(glm::ivec2, glm::ivec2, glm::ivec2, glm::ivec2) noexcept>
@@ -18,13 +19,16 @@ void fill_box(Canvas& canvas, glm::ivec2 a, glm::ivec2 b, glm::ivec2 c, Color co
     }
   }
 }
+// [/listing]
 
 }  // namespace
 
+// [listing fill_triangle_edge_function]
 void fill_triangle_edge_function(Canvas& canvas, glm::ivec2 a, glm::ivec2 b, glm::ivec2 c,
                                  Color color) {
   fill_box<inside_triangle>(canvas, a, b, c, color);
 }
+// [/listing]
 
 void fill_triangle_published_bug(Canvas& canvas, glm::ivec2 a, glm::ivec2 b, glm::ivec2 c,
                                  Color color) {

@@ -7,6 +7,7 @@
 namespace tri::ch06 {
 namespace {
 
+// [listing registered]
 constexpr std::array<TriangleAlgorithm, 2> algorithms{{
     {"barycentric_float", "06_barycentric", CoverageRule::approximate,
      "bounding box, barycentric weights from one cross product in float",
@@ -15,6 +16,7 @@ constexpr std::array<TriangleAlgorithm, 2> algorithms{{
      "bounding box, barycentric weights from one cross product in double",
      draw_at_nearest_pixels<fill_triangle_barycentric<double>>},
 }};
+// [/listing]
 
 }  // namespace
 

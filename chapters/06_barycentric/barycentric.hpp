@@ -17,6 +17,7 @@ namespace tri::ch06 {
 template <std::floating_point Scalar>
 using Weights = glm::vec<3, Scalar>;
 
+// [listing cross_of_rows]
 /// The cross product of the x row (AB.x, AC.x, PA.x) and the y row (AB.y, AC.y, PA.y).
 /// Every weight comes out of it: P = A + s·AB + t·AC exactly when (s, t, 1) is perpendicular to
 /// both rows, so (s, t, 1) is u / u.z; and u.z = AB × AC is twice the signed area of ABC. The
@@ -32,12 +33,14 @@ glm::vec<3, Scalar> cross_of_rows(glm::ivec2 a, glm::ivec2 b, glm::ivec2 c, glm:
   return {x_row.y * y_row.z - x_row.z * y_row.y, x_row.z * y_row.x - x_row.x * y_row.z,
           x_row.x * y_row.y - x_row.y * y_row.x};
 }
+// [/listing]
 
 /// What the guarded version returns for a zero-area triangle: a negative weight, so the inside
 /// test rejects every pixel.
 template <std::floating_point Scalar>
 inline constexpr Weights<Scalar> degenerate_weights{-1, 1, 1};
 
+// [listing barycentric]
 /// The barycentric weights (wA, wB, wC) of pixel p in triangle abc: p = wA·a + wB·b + wC·c and
 /// wA + wB + wC = 1. Either winding works, since the area's sign divides out. A zero-area
 /// triangle returns degenerate_weights instead of dividing by zero.
@@ -48,7 +51,9 @@ Weights<Scalar> barycentric(glm::ivec2 a, glm::ivec2 b, glm::ivec2 c, glm::ivec2
   if (std::abs(u.z) < Scalar(1)) return degenerate_weights<Scalar>;
   return {Scalar(1) - (u.x + u.y) / u.z, u.x / u.z, u.y / u.z};
 }
+// [/listing]
 
+// [listing barycentric_unguarded]
 /// The same weights without the guard, kept only to show what the guard prevents: for a
 /// zero-area triangle u.z is 0 and the weights become ±infinity or NaN (IEEE 754 division).
 /// Never registered as an algorithm.
@@ -59,12 +64,15 @@ Weights<Scalar> barycentric_unguarded(glm::ivec2 a, glm::ivec2 b, glm::ivec2 c,
   const glm::vec<3, Scalar> u = cross_of_rows<Scalar>(a, b, c, p);
   return {Scalar(1) - (u.x + u.y) / u.z, u.x / u.z, u.y / u.z};
 }
+// [/listing]
 
+// [listing is_inside]
 /// The articles' inside test: reject the pixel if any weight is below zero. A weight of exactly 0
 /// (a pixel on an edge) passes. So does NaN, because every comparison with NaN is false.
 template <std::floating_point Scalar>
 bool is_inside(const Weights<Scalar>& weights) noexcept {
   return !(weights.x < 0 || weights.y < 0 || weights.z < 0);
 }
+// [/listing]
 
 }  // namespace tri::ch06

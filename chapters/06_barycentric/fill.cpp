@@ -9,6 +9,7 @@
 namespace tri::ch06 {
 namespace {
 
+// [listing fill_box]
 // The article's loop: every pixel of the clamped box, kept when its weights pass is_inside.
 // Weighing is barycentric or barycentric_unguarded; the box bounds the loop to the canvas.
 template <typename Weighing>
@@ -21,20 +22,25 @@ void fill_box(Canvas& canvas, glm::ivec2 a, glm::ivec2 b, glm::ivec2 c, Color co
     }
   }
 }
+// [/listing]
 
+// [listing blend_channel]
 std::uint8_t blend_channel(const Weights<double>& w, int channel_a, int channel_b, int channel_c) {
   const double value = w.x * channel_a + w.y * channel_b + w.z * channel_c;
   // Weights may miss [0, 1] by a rounding error; keep the channel a valid byte.
   return static_cast<std::uint8_t>(std::lround(std::clamp(value, 0.0, 255.0)));
 }
+// [/listing]
 
 }  // namespace
 
+// [listing fill_triangle_barycentric]
 template <std::floating_point Scalar>
 void fill_triangle_barycentric(Canvas& canvas, glm::ivec2 a, glm::ivec2 b, glm::ivec2 c,
                                Color color) noexcept {
   fill_box(canvas, a, b, c, color, barycentric<Scalar>);
 }
+// [/listing]
 
 template <std::floating_point Scalar>
 void fill_triangle_barycentric_unguarded(Canvas& canvas, glm::ivec2 a, glm::ivec2 b, glm::ivec2 c,
@@ -42,6 +48,7 @@ void fill_triangle_barycentric_unguarded(Canvas& canvas, glm::ivec2 a, glm::ivec
   fill_box(canvas, a, b, c, color, barycentric_unguarded<Scalar>);
 }
 
+// [listing fill_triangle_with_weights]
 void fill_triangle_with_weights(Canvas& canvas, glm::ivec2 a, glm::ivec2 b, glm::ivec2 c,
                                 Color color_a, Color color_b, Color color_c) noexcept {
   const ch05::PixelBox box = ch05::bounding_box_on_canvas(a, b, c, canvas.width(), canvas.height());
@@ -56,6 +63,7 @@ void fill_triangle_with_weights(Canvas& canvas, glm::ivec2 a, glm::ivec2 b, glm:
     }
   }
 }
+// [/listing]
 
 template void fill_triangle_barycentric<float>(Canvas&, glm::ivec2, glm::ivec2, glm::ivec2,
                                                Color) noexcept;

@@ -8,6 +8,7 @@
 
 namespace tri::ch07 {
 
+// [listing top_left_rule]
 bool is_top_left_edge(glm::dvec2 a, glm::dvec2 b) noexcept {
   const bool top = a.y == b.y && b.x < a.x;
   const bool left = b.y < a.y;
@@ -19,9 +20,11 @@ Triangle counter_clockwise(const Triangle& triangle) noexcept {
   if (exact_orientation(t[0], t[1], t[2]) < 0) std::swap(t[1], t[2]);
   return t;
 }
+// [/listing]
 
 namespace {
 
+// [listing inside_edge]
 // Covered with respect to one edge of a counter-clockwise triangle.
 bool inside_edge(glm::dvec2 a, glm::dvec2 b, glm::dvec2 p) noexcept {
   const int side = exact_orientation(a, b, p);
@@ -31,13 +34,16 @@ bool inside_edge(glm::dvec2 a, glm::dvec2 b, glm::dvec2 p) noexcept {
 bool covers_ccw(const Triangle& t, glm::dvec2 p) noexcept {
   return inside_edge(t[0], t[1], p) && inside_edge(t[1], t[2], p) && inside_edge(t[2], t[0], p);
 }
+// [/listing]
 
 }  // namespace
 
+// [listing oracle_covers]
 bool oracle_covers(const Triangle& triangle, glm::ivec2 p) noexcept {
   if (exact_orientation(triangle[0], triangle[1], triangle[2]) == 0) return false;
   return covers_ccw(counter_clockwise(triangle), glm::dvec2(p));
 }
+// [/listing]
 
 void draw_triangle_oracle(Canvas& canvas, const Triangle& triangle, Color color) {
   if (exact_orientation(triangle[0], triangle[1], triangle[2]) == 0) return;

@@ -102,6 +102,7 @@ class WideInteger {
 
 }  // namespace
 
+// [listing exact_orientation_slow_path]
 int exact_orientation_slow_path(glm::dvec2 a, glm::dvec2 b, glm::dvec2 p) noexcept {
   // (bx - ax)(py - ay) - (by - ay)(px - ax) with ax*ay - ay*ax cancelled: six products.
   const std::array<Term, 6> terms{product(b.x, p.y, +1), product(b.x, a.y, -1),
@@ -123,7 +124,9 @@ int exact_orientation_slow_path(glm::dvec2 a, glm::dvec2 b, glm::dvec2 p) noexce
   }
   return sum.sign();
 }
+// [/listing]
 
+// [listing exact_orientation]
 int exact_orientation(glm::dvec2 a, glm::dvec2 b, glm::dvec2 p) noexcept {
   const double left = (b.x - a.x) * (p.y - a.y);
   const double right = (b.y - a.y) * (p.x - a.x);
@@ -140,5 +143,6 @@ int exact_orientation(glm::dvec2 a, glm::dvec2 b, glm::dvec2 p) noexcept {
   }
   return exact_orientation_slow_path(a, b, p);
 }
+// [/listing]
 
 }  // namespace tri::ch07

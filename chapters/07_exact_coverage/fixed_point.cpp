@@ -9,6 +9,7 @@ namespace {
 
 __extension__ using Int128 = __int128;
 
+// [listing shifts]
 // floor(a / 2^bits) and ceil(a / 2^bits) for any sign (arithmetic shift floors).
 std::int64_t floor_shift(std::int64_t a, int bits) {
   return a >> bits;
@@ -16,19 +17,23 @@ std::int64_t floor_shift(std::int64_t a, int bits) {
 std::int64_t ceil_shift(std::int64_t a, int bits) {
   return -((-a) >> bits);
 }
+// [/listing]
 
+// [listing edge_function]
 // The edge function of a -> b at p: twice the signed area of (a, b, p), > 0 when p is left of
 // a -> b. Int is std::int64_t or Int128, chosen by the bit budget.
 template <class Int>
 Int edge_function(SubpixelPoint a, SubpixelPoint b, std::int64_t px, std::int64_t py) {
   return Int(b.x - a.x) * Int(py - a.y) - Int(b.y - a.y) * Int(px - a.x);
 }
+// [/listing]
 
 template <class Int>
 void fill(Canvas& canvas, SubpixelPoint a, SubpixelPoint b, SubpixelPoint c, int bits,
           Color color) {
   const PixelRange range = candidate_pixels(a, b, c, bits, canvas.width(), canvas.height());
   if (range.empty()) return;
+  // [listing biased_test]
   // A top-left edge keeps its zeros; any other edge needs strictly positive values: w - 1 >= 0.
   const Int bias0 = is_top_left_edge(b, c) ? 0 : -1;
   const Int bias1 = is_top_left_edge(c, a) ? 0 : -1;
@@ -44,22 +49,28 @@ void fill(Canvas& canvas, SubpixelPoint a, SubpixelPoint b, SubpixelPoint c, int
       }
     }
   }
+  // [/listing]
 }
 
 }  // namespace
 
+// [listing snap_to_subpixel]
 SubpixelPoint snap_to_subpixel(glm::dvec2 p, int bits) noexcept {
   const double scale = std::ldexp(1.0, bits);
   return {static_cast<std::int64_t>(std::floor(p.x * scale + 0.5)),
           static_cast<std::int64_t>(std::floor(p.y * scale + 0.5))};
 }
+// [/listing]
 
+// [listing is_top_left_edge]
 bool is_top_left_edge(SubpixelPoint a, SubpixelPoint b) noexcept {
   const bool top = a.y == b.y && b.x < a.x;
   const bool left = b.y < a.y;
   return top || left;
 }
+// [/listing]
 
+// [listing fits_64_bit_edge_functions]
 bool fits_64_bit_edge_functions(SubpixelPoint a, SubpixelPoint b, SubpixelPoint c) noexcept {
   constexpr std::int64_t limit = std::int64_t{1} << 29;
   for (const SubpixelPoint& p : {a, b, c}) {
@@ -67,7 +78,9 @@ bool fits_64_bit_edge_functions(SubpixelPoint a, SubpixelPoint b, SubpixelPoint 
   }
   return true;
 }
+// [/listing]
 
+// [listing candidate_pixels]
 PixelRange candidate_pixels(SubpixelPoint a, SubpixelPoint b, SubpixelPoint c, int bits, int width,
                             int height) noexcept {
   const std::int64_t x0 = ceil_shift(std::min({a.x, b.x, c.x}), bits);
@@ -79,7 +92,9 @@ PixelRange candidate_pixels(SubpixelPoint a, SubpixelPoint b, SubpixelPoint c, i
           static_cast<int>(std::max<std::int64_t>(y0, 0)),
           static_cast<int>(std::min<std::int64_t>(y1, height - 1))};
 }
+// [/listing]
 
+// [listing draw_triangle_fixed_point]
 void draw_triangle_fixed_point(Canvas& canvas, const Triangle& triangle, Color color,
                                int subpixel_bits) {
   SubpixelPoint a = snap_to_subpixel(triangle[0], subpixel_bits);
@@ -96,6 +111,7 @@ void draw_triangle_fixed_point(Canvas& canvas, const Triangle& triangle, Color c
     fill<Int128>(canvas, a, b, c, subpixel_bits, color);
   }
 }
+// [/listing]
 
 void draw_triangle_fixed_point_8(Canvas& canvas, const Triangle& triangle, Color color) {
   draw_triangle_fixed_point(canvas, triangle, color, 8);

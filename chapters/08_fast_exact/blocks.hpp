@@ -26,6 +26,7 @@ enum class BlockCoverage {
   partial,  ///< neither: test its pixels
 };
 
+// [listing classify_block]
 /// Classifies a rectangle of pixels within the setup's range. An edge value is linear in x and y,
 /// so over a rectangle it is smallest and largest at two of its corners, which the step signs
 /// name: exact integers, so "inside" and "outside" are never wrong, only "partial" is cautious
@@ -49,6 +50,7 @@ inline BlockCoverage classify_block(const TriangleSetup& setup,
   }
   return inside ? BlockCoverage::inside : BlockCoverage::partial;
 }
+// [/listing]
 
 /// Calls visit(block, coverage) for each block_size x block_size block of the setup's range (the
 /// last column and row of blocks clipped to the range), row of blocks by row of blocks from the
@@ -66,6 +68,7 @@ void for_each_block(const TriangleSetup& setup, Visit&& visit) {
   }
 }
 
+// [listing for_each_block_run]
 /// for_each_block for drawing: each run of consecutive inside blocks of a row of blocks is handed
 /// over as one rectangle, fill_run(rectangle), so it is filled with long spans rather than block
 /// by block; each partial block goes to test_block(block); outside blocks to nobody.
@@ -91,6 +94,7 @@ void for_each_block_run(const TriangleSetup& setup, FillRun&& fill_run, TestBloc
     if (run_first_x >= 0) fill_run(ch07::PixelRange{run_first_x, run_last_x, y, last_y});
   }
 }
+// [/listing]
 
 /// The pixels of a partial block, each tested with step 2's one-branch test on incrementally
 /// updated edge values; writer.pixel(x, y) for the covered ones.

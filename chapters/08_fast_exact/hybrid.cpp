@@ -6,6 +6,7 @@
 namespace tri::ch08 {
 namespace {
 
+// [listing choose_per_triangle]
 template <class Writer>
 void fill_hybrid_with(const TriangleSetup& setup, Writer& writer) {
   if (fits_one_block(setup)) {
@@ -24,6 +25,7 @@ void draw_batch_with(Canvas& canvas, std::span<const SceneTriangle> triangles) {
     fill_hybrid_with(*setup, writer);
   }
 }
+// [/listing]
 
 }  // namespace
 

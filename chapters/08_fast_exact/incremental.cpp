@@ -2,6 +2,7 @@
 
 namespace tri::ch08 {
 
+// [listing draw_triangle_incremental]
 void draw_triangle_incremental(Canvas& canvas, const Triangle& triangle, Color color) {
   const auto setup = setup_triangle(triangle, canvas.width(), canvas.height());
   if (!setup) return;
@@ -9,7 +10,9 @@ void draw_triangle_incremental(Canvas& canvas, const Triangle& triangle, Color c
     if (w0 >= 0 && w1 >= 0 && w2 >= 0) canvas.put_pixel(x, y, color);
   });
 }
+// [/listing]
 
+// [listing draw_triangle_all_edges]
 void draw_triangle_all_edges(Canvas& canvas, const Triangle& triangle, Color color) {
   const auto setup = setup_triangle(triangle, canvas.width(), canvas.height());
   if (!setup) return;
@@ -17,5 +20,6 @@ void draw_triangle_all_edges(Canvas& canvas, const Triangle& triangle, Color col
     if (inside_all_edges(w0, w1, w2)) canvas.put_pixel(x, y, color);
   });
 }
+// [/listing]
 
 }  // namespace tri::ch08

@@ -12,6 +12,7 @@
 
 namespace tri::ch08 {
 
+// [listing walk_incremental]
 /// Visits every pixel of the setup's range, row by row from the bottom, with the three edge
 /// values at that pixel: visit(x, y, w0, w1, w2). Each value is the one before plus a step, one
 /// addition per edge and pixel instead of chapter 07's two multiplications.
@@ -32,17 +33,20 @@ void walk_incremental(const TriangleSetup& setup, Visit&& visit) {
     row2 += e2.step_y;
   }
 }
+// [/listing]
 
 /// Step 1 · incremental edge functions: chapter 07's rasterizer (same snapping, same bias, same
 /// candidate pixels) with walk_incremental, three comparisons per pixel.
 void draw_triangle_incremental(Canvas& canvas, const Triangle& triangle, Color color);
 
+// [listing inside_all_edges]
 /// Step 2's test: all three values are >= 0 exactly when their bitwise OR is, because a two's
 /// complement number is negative exactly when its sign bit is set, and the OR has the sign bit
 /// set exactly when one of them has.
 constexpr bool inside_all_edges(std::int64_t w0, std::int64_t w1, std::int64_t w2) noexcept {
   return (w0 | w1 | w2) >= 0;
 }
+// [/listing]
 
 /// Step 2 · testing all three edges at once: step 1 with inside_all_edges, one branch per pixel.
 void draw_triangle_all_edges(Canvas& canvas, const Triangle& triangle, Color color);

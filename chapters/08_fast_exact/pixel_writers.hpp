@@ -18,6 +18,7 @@ namespace tri::ch08 {
 
 static_assert(sizeof(Color) == sizeof(std::uint32_t), "a pixel is one 32-bit word");
 
+// [listing fill_pixels]
 /// Fills count pixels from first with one colour word, 8 (or 4) pixels per store: the last
 /// store of a span overlaps the one before instead of finishing pixel by pixel. GCC 12 compiles
 /// std::fill over Color (canvas.cpp) into one 4-byte store per pixel (see the README).
@@ -34,6 +35,7 @@ inline void fill_pixels(Color* first, int count,
     for (int i = 0; i < count; ++i) std::memcpy(first + i, words.data(), 4);
   }
 }
+// [/listing]
 
 /// Writes into Canvas::row, with no per-pixel bounds or counter checks. Callers pass only
 /// pixels of the canvas. Safe for threads that write disjoint rows.

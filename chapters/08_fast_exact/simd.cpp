@@ -49,6 +49,7 @@ struct VectorOf<float, 8> {
 template <class Lane, int N>
 using Vector = typename VectorOf<Lane, N>::type;
 
+// [listing lane_test]
 // N neighbouring pixels of a row at once. Per triangle: lane i of offset[e] is edge e's change
 // over i pixels; lane i of index is i.
 template <class Lane, int N>
@@ -81,6 +82,7 @@ struct LaneTest {
     result = (w0 + offset[0]) | (w1 + offset[1]) | (w2 + offset[2]) | (pixels_left - index);
   }
 };
+// [/listing]
 
 // The N pixels from `pixels` take `word` where the lane is >= 0 and keep their colour
 // elsewhere: one load, a select by the lanes' sign bits, one store.

@@ -4,6 +4,7 @@
 
 namespace tri::ch08 {
 
+// [listing row_span]
 RowSpan row_span(const TriangleSetup& setup, int y) noexcept {
   const ch07::PixelRange& r = setup.range;
   if (y < r.first_y || y > r.last_y) return {r.first_x, r.first_x - 1};
@@ -21,6 +22,7 @@ RowSpan row_span(const TriangleSetup& setup, int y) noexcept {
   if (first > last) return {r.first_x, r.first_x - 1};
   return {r.first_x + static_cast<int>(first), r.first_x + static_cast<int>(last)};
 }
+// [/listing]
 
 namespace {
 

@@ -23,11 +23,13 @@ struct RowSpan {
   friend bool operator==(const RowSpan&, const RowSpan&) = default;
 };
 
+// [listing floor_div]
 /// floor(a / b) for b > 0 and any sign of a (C++ division truncates toward zero instead).
 constexpr std::int64_t floor_div(std::int64_t a, std::int64_t b) noexcept {
   const std::int64_t q = a / b;
   return (a % b != 0 && a < 0) ? q - 1 : q;
 }
+// [/listing]
 
 /// The covered pixels of row y (within the setup's range), computed directly: each edge is
 /// w(dx) = w_row + step_x * dx >= 0, so an edge whose value grows to the right allows

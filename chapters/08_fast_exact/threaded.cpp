@@ -36,6 +36,7 @@ bool touches_bands_of(const Triangle& triangle, int height, const Bands& bands,
   return false;
 }
 
+// [listing draw_bands]
 template <class Writer>
 void draw_bands(Canvas& canvas, std::span<const SceneTriangle> triangles, int thread, int threads) {
   const ch07::PixelRange whole{0, canvas.width() - 1, 0, canvas.height() - 1};
@@ -62,6 +63,7 @@ void draw_bands(Canvas& canvas, std::span<const SceneTriangle> triangles, int th
     }
   }
 }
+// [/listing]
 
 }  // namespace
 
@@ -74,6 +76,7 @@ void draw_bands_of_thread(Canvas& canvas, std::span<const SceneTriangle> triangl
   }
 }
 
+// [listing draw_batch_on_threads]
 void draw_batch_on_threads(Canvas& canvas, std::span<const SceneTriangle> triangles, int threads) {
   threads = std::max(threads, 1);
   // No more threads than bands (fewer threads only make the bands taller).
@@ -96,6 +99,7 @@ void draw_batch_on_threads(Canvas& canvas, std::span<const SceneTriangle> triang
     draw_bands_of_thread(canvas, triangles, thread, threads);
   // Each std::jthread joins when `workers` goes out of scope.
 }
+// [/listing]
 
 void draw_batch_threaded(Canvas& canvas, std::span<const SceneTriangle> triangles) {
   draw_batch_on_threads(canvas, triangles,

@@ -16,6 +16,7 @@ Int edge_function(SubpixelPoint a, SubpixelPoint b, std::int64_t px, std::int64_
   return Int(b.x - a.x) * Int(py - a.y) - Int(b.y - a.y) * Int(px - a.x);
 }
 
+// [listing make_edge]
 // The edge a -> b at the origin pixel (origin_x, origin_y), in whole-pixel units.
 template <class Int>
 EdgeFunction make_edge(SubpixelPoint a, SubpixelPoint b, std::int64_t origin_x,
@@ -38,6 +39,7 @@ EdgeFunction make_edge(SubpixelPoint a, SubpixelPoint b, std::int64_t origin_x,
   }
   return edge;
 }
+// [/listing]
 
 template <class Int>
 std::optional<TriangleSetup> setup(SubpixelPoint a, SubpixelPoint b, SubpixelPoint c,
@@ -67,6 +69,7 @@ bool TriangleSetup::covers(int x, int y) const noexcept {
   return edges[0].at(dx, dy) >= 0 && edges[1].at(dx, dy) >= 0 && edges[2].at(dx, dy) >= 0;
 }
 
+// [listing setup_triangle]
 std::optional<TriangleSetup> setup_triangle(const Triangle& triangle, int width,
                                             int height) noexcept {
   const SubpixelPoint a = snap_to_256ths(triangle[0]);
@@ -77,6 +80,7 @@ std::optional<TriangleSetup> setup_triangle(const Triangle& triangle, int width,
   if (ch07::fits_64_bit_edge_functions(a, b, c)) return setup<std::int64_t>(a, b, c, range);
   return setup<Int128>(a, b, c, range);
 }
+// [/listing]
 
 std::optional<TriangleSetup> clip_setup(const TriangleSetup& setup,
                                         const ch07::PixelRange& clip) noexcept {

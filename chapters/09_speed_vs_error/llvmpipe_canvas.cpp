@@ -96,6 +96,7 @@ std::string LlvmpipeCanvas::renderer() const {
   return name == nullptr ? "unknown" : reinterpret_cast<const char*>(name);
 }
 
+// [listing upload_and_draw]
 void LlvmpipeCanvas::upload(std::span<const SceneTriangle> triangles) {
   std::vector<Vertex> vertices;
   vertices.reserve(triangles.size() * 3);
@@ -124,6 +125,7 @@ void LlvmpipeCanvas::draw() {
   glDrawArrays(GL_TRIANGLES, 0, context_->vertices);
   glFinish();
 }
+// [/listing]
 
 WriteCounts LlvmpipeCanvas::write_counts(std::span<const SceneTriangle> triangles) {
   Context& c = *context_;

@@ -5,12 +5,14 @@
 
 namespace tri::ch09 {
 
+// [listing log_position]
 double LogScale::position(double value) const noexcept {
   const double low = low_decade;
   const double high = std::max(high_decade, low_decade + 1);  // never a zero-width scale
   const double decade = value > 0 ? std::clamp(std::log10(value), low, high) : low;
   return low_position + (decade - low) / (high - low) * (high_position - low_position);
 }
+// [/listing]
 
 DecadeRange decades_covering(std::span<const double> values) noexcept {
   double smallest = 0, largest = 0;

@@ -9,6 +9,7 @@
 
 namespace tri::ch09 {
 
+// [listing prepare_scene]
 PreparedScene prepare_scene(const SuiteScene& suite, std::size_t error_triangle_limit) {
   PreparedScene prepared{suite, generate_scene(suite.recipe), {}, {}};
   prepared.triangles = scene_triangles(prepared.scene);
@@ -21,6 +22,7 @@ PreparedScene prepare_scene(const SuiteScene& suite, std::size_t error_triangle_
   }
   return prepared;
 }
+// [/listing]
 
 FillCeilings measure_fill_ceilings(int width, int height, int threads, const TimingPlan& plan) {
   Canvas canvas(width, height);
@@ -80,6 +82,7 @@ Measurement row_for(std::string_view name, std::string_view chapter, std::string
 
 }  // namespace
 
+// [listing measure]
 Measurement measure(const TriangleAlgorithm& algorithm, const PreparedScene& prepared,
                     const TimingPlan& plan, const FillCeilings& ceilings) {
   Measurement m = row_for(algorithm.name, algorithm.chapter, rule_name(algorithm.rule),
@@ -92,6 +95,7 @@ Measurement measure(const TriangleAlgorithm& algorithm, const PreparedScene& pre
   m.error = measure_error(algorithm, prepared.error_scene);
   return m;
 }
+// [/listing]
 
 Measurement measure(const ExternalPeer& peer, const PreparedScene& prepared, const TimingPlan& plan,
                     const FillCeilings& ceilings) {

@@ -6,6 +6,7 @@
 
 namespace tri::ch09 {
 
+// [listing spread_of]
 Spread spread_of(std::vector<double> samples) {
   if (samples.empty()) throw std::invalid_argument("spread_of needs at least one sample");
   std::sort(samples.begin(), samples.end());
@@ -13,6 +14,7 @@ Spread spread_of(std::vector<double> samples) {
   const double median = n % 2 == 1 ? samples[n / 2] : (samples[n / 2 - 1] + samples[n / 2]) / 2;
   return {median, samples.front(), samples.back()};
 }
+// [/listing]
 
 double geometric_mean(std::span<const double> values) noexcept {
   double log_sum = 0;

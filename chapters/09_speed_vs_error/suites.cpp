@@ -80,6 +80,7 @@ std::string grid_label(int grid_bits) {
   return "1/2^" + std::to_string(grid_bits);
 }
 
+// [listing scene_suite]
 std::vector<SuiteScene> scene_suite(SuiteSize size) {
   const SizeSpec& spec = spec_of(size);
   std::vector<SuiteScene> scenes;
@@ -100,6 +101,7 @@ std::vector<SuiteScene> scene_suite(SuiteSize size) {
   }
   return scenes;
 }
+// [/listing]
 
 BenchSettings bench_settings(SuiteSize size) {
   BenchSettings settings;

@@ -55,6 +55,7 @@ std::vector<AlgorithmSummary> summarize(std::span<const Measurement> rows) {
     s.order_dependent += m.error.order_dependent;
     s.outside_writes += m.error.outside_writes;
   }
+  // [listing overall_means]
   std::vector<AlgorithmSummary> summaries;
   for (Collected& c : collected) {
     c.summary.large_mpix_per_s = geometric_mean(c.large);
@@ -65,6 +66,7 @@ std::vector<AlgorithmSummary> summarize(std::span<const Measurement> rows) {
     summaries.push_back(std::move(c.summary));
   }
   return summaries;
+  // [/listing]
 }
 
 std::optional<PrecisionStep> precision_step(std::string_view name) {

@@ -24,6 +24,7 @@ void fill_rows(Canvas& canvas, int first_row, int end_row, Color color) {
 
 }  // namespace
 
+// [listing calibrated_timing]
 int next_repetitions(int repetitions, double elapsed_seconds, double target_seconds,
                      int max_repetitions) noexcept {
   double wanted = 2.0 * repetitions;
@@ -49,7 +50,9 @@ Timing time_runs(const std::function<void()>& run, const TimingPlan& plan) {
   for (int i = 0; i < samples; ++i) per_run.push_back(seconds_for(run, repetitions) / repetitions);
   return {spread_of(std::move(per_run)), repetitions, samples};
 }
+// [/listing]
 
+// [listing time_canvas_fill]
 Timing time_canvas_fill(Canvas& canvas, int threads, const TimingPlan& plan) {
   std::uint8_t shade = 0;
   const auto next_color = [&shade] {
@@ -72,6 +75,7 @@ Timing time_canvas_fill(Canvas& canvas, int threads, const TimingPlan& plan) {
       },
       plan);
 }
+// [/listing]
 
 double mpix_per_second(double pixels, double seconds) noexcept {
   return seconds > 0 ? pixels / seconds / 1e6 : 0.0;
