@@ -50,8 +50,7 @@ TEST_CASE("a centre on a top edge belongs to the triangle below it, not to the o
   check_decision(above, {3, 5}, false);
 }
 
-TEST_CASE(
-    "a centre on a left edge belongs to the triangle right of it, not to the one left of it") {
+TEST_CASE("a centre on a left edge belongs to the triangle right of it, not to its neighbour") {
   // (4,6) -> (2,2) runs downward through (3,4): the left edge of `right`. In `left` the same edge
   // runs upward, so there it is a right edge.
   const Triangle right{{{4, 6}, {2, 2}, {6, 2}}};
@@ -60,51 +59,73 @@ TEST_CASE(
   check_decision(left, {3, 4}, false);
 }
 
-TEST_CASE("a centre on a right edge is left to the neighbour right of it, whose left edge it is") {
-  // (6,1) -> (8,7) runs upward through (7,4): a right edge of `left`, which loses the centre.
-  // `right` has the same edge running downward, a left edge, and keeps it.
+TEST_CASE("a centre on a right edge goes to the neighbour right of it, whose left edge it is") {
+  // (6,1) -> (8,7) runs upward through (7,4): a right edge of `left`, which does not get the
+  // centre. `right` has the same edge running downward, a left edge, and gets it.
   const Triangle left{{{2, 4}, {6, 1}, {8, 7}}};
   const Triangle right{{{8, 7}, {6, 1}, {10, 3}}};
   check_decision(left, {7, 4}, false);
   check_decision(right, {7, 4}, true);
 }
 
-TEST_CASE("a centre on a bottom edge is left to the neighbour below, whose top edge it is") {
-  // (2,3) -> (9,3) is horizontal and runs left to right: the bottom edge of `above`, which loses
-  // (6,3). In `below` it runs right to left, a top edge, and keeps it.
+TEST_CASE("a centre on a bottom edge goes to the neighbour below it, whose top edge it is") {
+  // (2,3) -> (9,3) is horizontal and runs left to right: the bottom edge of `above`, which does
+  // not get (6,3). In `below` it runs right to left, a top edge, and gets it.
   const Triangle above{{{2, 3}, {9, 3}, {5, 7}}};
   const Triangle below{{{9, 3}, {2, 3}, {4, 0}}};
   check_decision(above, {6, 3}, false);
   check_decision(below, {6, 3}, true);
 }
 
-TEST_CASE(
-    "a fan of six triangles gives each centre on a spoke and the shared vertex to one owner") {
-  // The fan of the rule diagram (07_top_left_rule): six triangles around V = (6,4), listed
+TEST_CASE("six triangles around a vertex give it and each centre on a spoke to one of them") {
+  // The fan of the rule diagram (07_top_left_rule): six triangles around V = (6,6), listed
   // counter-clockwise. Each spoke is top or left in exactly one of its two triangles; V goes to
-  // the one triangle whose two edges at V are top and left: F, with (10,4) -> V on top and
-  // V -> (8,0) running down on the left.
-  const glm::dvec2 v{6, 4};
+  // the one triangle whose two edges at V are top and left: F, with (12,6) -> V on top and
+  // V -> (10,2) running down on the left.
+  const glm::dvec2 v{6, 6};
   const std::array<Triangle, 6> fan{{
-      {{v, {10, 4}, {8, 8}}},  // A
-      {{v, {8, 8}, {4, 8}}},   // B
-      {{v, {4, 8}, {2, 4}}},   // C
-      {{v, {2, 4}, {4, 0}}},   // D
-      {{v, {4, 0}, {8, 0}}},   // E
-      {{v, {8, 0}, {10, 4}}},  // F
+      {{v, {12, 6}, {10, 10}}},  // A
+      {{v, {10, 10}, {2, 10}}},  // B
+      {{v, {2, 10}, {0, 6}}},    // C
+      {{v, {0, 6}, {2, 2}}},     // D
+      {{v, {2, 2}, {10, 2}}},    // E
+      {{v, {10, 2}, {12, 6}}},   // F
   }};
   struct Owner {
     glm::ivec2 centre;
     int triangle;  // index into fan
   };
   const Owner owners[] = {
-      {{6, 4}, 5},                            // the shared vertex V: F
-      {{7, 4}, 5}, {{8, 4}, 5}, {{9, 4}, 5},  // V - (10,4): bottom of A, top of F
-      {{7, 6}, 0},                            // V - (8,8): left in A, right in B
-      {{5, 6}, 1},                            // V - (4,8): left in B, right in C
-      {{3, 4}, 3}, {{4, 4}, 3}, {{5, 4}, 3},  // V - (2,4): bottom of C, top of D
-      {{5, 2}, 4},                            // V - (4,0): right in D, left in E
-      {{7, 2}, 5},                            // V - (8,0): right in E, left in F
+      // The shared vertex V: F.
+      {{6, 6}, 5},
+      // V - (12,6): the bottom edge of A, the top edge of F.
+      {{7, 6}, 5},
+      {{8, 6}, 5},
+      {{9, 6}, 5},
+      {{10, 6}, 5},
+      {{11, 6}, 5},
+      // V - (10,10): a left edge in A, a right edge in B.
+      {{7, 7}, 0},
+      {{8, 8}, 0},
+      {{9, 9}, 0},
+      // V - (2,10): a left edge in B, a right edge in C.
+      {{5, 7}, 1},
+      {{4, 8}, 1},
+      {{3, 9}, 1},
+      // V - (0,6): the bottom edge of C, the top edge of D.
+      {{1, 6}, 3},
+      {{2, 6}, 3},
+      {{3, 6}, 3},
+      {{4, 6}, 3},
+      {{5, 6}, 3},
+      // V - (2,2): a right edge in D, a left edge in E.
+      {{5, 5}, 4},
+      {{4, 4}, 4},
+      {{3, 3}, 4},
+      // V - (10,2): a right edge in E, a left edge in F.
+      {{7, 5}, 5},
+      {{8, 4}, 5},
+      {{9, 3}, 5},
   };
   for (const Owner& owner : owners) {
     for (std::size_t i = 0; i < fan.size(); ++i) {
