@@ -285,7 +285,7 @@ std::vector<Triangle> integer_mesh() {
   std::vector<Triangle> mesh;
   for (int j = 0; j < rows; ++j) {
     for (int i = 0; i < columns; ++i) {
-      // Alternate the diagonal, so vertices are shared by four to eight triangles.
+      // Alternate the diagonal, so each inner vertex is shared by four or eight triangles.
       if ((i + j) % 2 == 0) {
         mesh.push_back({{at(i, j), at(i + 1, j), at(i + 1, j + 1)}});
         mesh.push_back({{at(i, j), at(i + 1, j + 1), at(i, j + 1)}});
