@@ -30,14 +30,16 @@ Int edge_function(SubpixelPoint a, SubpixelPoint b, std::int64_t px, std::int64_
 
 template <class Int>
 void fill(Canvas& canvas, SubpixelPoint a, SubpixelPoint b, SubpixelPoint c, int bits,
-          Color color) {
+          TieRule tie_rule, Color color) {
   const PixelRange range = candidate_pixels(a, b, c, bits, canvas.width(), canvas.height());
   if (range.empty()) return;
   // [listing biased_test]
   // A top-left edge keeps its zeros; any other edge needs strictly positive values: w - 1 >= 0.
-  const Int bias0 = is_top_left_edge(b, c) ? 0 : -1;
-  const Int bias1 = is_top_left_edge(c, a) ? 0 : -1;
-  const Int bias2 = is_top_left_edge(a, b) ? 0 : -1;
+  // The inclusive rule keeps every zero, so it biases no edge.
+  const Int other_bias = tie_rule == TieRule::top_left ? -1 : 0;
+  const Int bias0 = is_top_left_edge(b, c) ? 0 : other_bias;
+  const Int bias1 = is_top_left_edge(c, a) ? 0 : other_bias;
+  const Int bias2 = is_top_left_edge(a, b) ? 0 : other_bias;
   for (int y = range.first_y; y <= range.last_y; ++y) {
     const std::int64_t py = std::int64_t{y} << bits;
     for (int x = range.first_x; x <= range.last_x; ++x) {
@@ -96,7 +98,7 @@ PixelRange candidate_pixels(SubpixelPoint a, SubpixelPoint b, SubpixelPoint c, i
 
 // [listing draw_triangle_fixed_point]
 void draw_triangle_fixed_point(Canvas& canvas, const Triangle& triangle, Color color,
-                               int subpixel_bits) {
+                               int subpixel_bits, TieRule tie_rule) {
   SubpixelPoint a = snap_to_subpixel(triangle[0], subpixel_bits);
   SubpixelPoint b = snap_to_subpixel(triangle[1], subpixel_bits);
   SubpixelPoint c = snap_to_subpixel(triangle[2], subpixel_bits);
@@ -106,15 +108,19 @@ void draw_triangle_fixed_point(Canvas& canvas, const Triangle& triangle, Color c
   if (area == 0) return;
   if (area < 0) std::swap(b, c);
   if (fits_64_bit_edge_functions(a, b, c)) {
-    fill<std::int64_t>(canvas, a, b, c, subpixel_bits, color);
+    fill<std::int64_t>(canvas, a, b, c, subpixel_bits, tie_rule, color);
   } else {
-    fill<Int128>(canvas, a, b, c, subpixel_bits, color);
+    fill<Int128>(canvas, a, b, c, subpixel_bits, tie_rule, color);
   }
 }
 // [/listing]
 
 void draw_triangle_fixed_point_8(Canvas& canvas, const Triangle& triangle, Color color) {
   draw_triangle_fixed_point(canvas, triangle, color, 8);
+}
+
+void draw_triangle_fixed_point_inclusive(Canvas& canvas, const Triangle& triangle, Color color) {
+  draw_triangle_fixed_point(canvas, triangle, color, 8, TieRule::inclusive);
 }
 
 void draw_triangle_fixed_point_0(Canvas& canvas, const Triangle& triangle, Color color) {

@@ -41,14 +41,26 @@ struct PixelRange {
 PixelRange candidate_pixels(SubpixelPoint a, SubpixelPoint b, SubpixelPoint c, int bits, int width,
                             int height) noexcept;
 
+/// How a pixel centre exactly on an edge is decided.
+enum class TieRule {
+  top_left,  ///< kept only on a top or left edge: each shared centre drawn exactly once
+  inclusive  ///< kept on every edge: shared centres drawn by every triangle that touches them
+};
+
 /// The whole rasterizer with a chosen number of fractional bits (0..16): snap, cull zero area,
 /// make the winding counter-clockwise, then for every candidate pixel evaluate the three edge
-/// functions directly and keep the pixel when each is positive, or zero on a top-left edge.
+/// functions directly and keep the pixel when each is positive, or zero on an edge the tie rule
+/// keeps (by default, a top-left edge).
 void draw_triangle_fixed_point(Canvas& canvas, const Triangle& triangle, Color color,
-                               int subpixel_bits);
+                               int subpixel_bits, TieRule tie_rule = TieRule::top_left);
 
 /// draw_triangle_fixed_point with 8 fractional bits: exact for vertices on the 1/256 grid.
 void draw_triangle_fixed_point_8(Canvas& canvas, const Triangle& triangle, Color color);
+
+/// draw_triangle_fixed_point_8 with the tie rule removed (TieRule::inclusive): the same pixels
+/// except that every centre exactly on an edge is kept. Never registered; it shows, in the
+/// chapter's figures and tests, what the top-left rule takes away.
+void draw_triangle_fixed_point_inclusive(Canvas& canvas, const Triangle& triangle, Color color);
 
 /// The precision knob of the speed-vs-error report: 0, 2 and 4 fractional bits snap vertices to
 /// coarser grids, so they are exact only for vertices already on those grids.
