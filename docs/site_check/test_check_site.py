@@ -62,7 +62,21 @@ def chapter_body(number, previous, following):
     separator = " \u00b7 "
     return (f'<h1>Chapter {number:02d}</h1><p>{separator.join(links)}</p>'
             f'<p><a href="#step1">to step 1</a> \u00b7 <a href="index.html#map">the map</a></p>'
-            f'<h2 id="step1">Step 1</h2><img src="figure_{number:02d}.png" alt="">')
+            f'<h2 id="step1">Step 1</h2><img src="figure_{number:02d}.png" alt="">'
+            f'{SHELL_FRAGMENT}{CPP_FRAGMENT}{diagram(number)}')
+
+
+# A chapter's code listing as Doxygen writes it (C++ is highlighted), and a shell command (plain).
+CPP_FRAGMENT = ('<div class="fragment"><div class="line"><span class="keywordtype">int</span> '
+                'step = 1;</div></div>')
+SHELL_FRAGMENT = '<div class="fragment"><div class="line">./tutorial.sh run</div></div>'
+
+
+def diagram(number):
+    """A chapter's SVG diagram: chapter 01 as an <img>, the others as Doxygen's <object>."""
+    if number == 1:
+        return '<img src="diagram_01.svg" alt="">'
+    return f'<object type="image/svg+xml" data="diagram_{number:02d}.svg"></object>'
 
 
 def correct_site(chapters=CHAPTERS):
@@ -86,6 +100,7 @@ def correct_site(chapters=CHAPTERS):
         files[f"chapter{number:02d}.html"] = page(f"Chapter {number:02d}",
                                                   chapter_body(number, previous, following))
         files[f"figure_{number:02d}.png"] = one_pixel_png()
+        files[f"diagram_{number:02d}.svg"] = PLOT_SVG
     return files
 
 
@@ -192,6 +207,23 @@ class CheckerTest(unittest.TestCase):
         self.assert_fails_with(
             files, "chapter02.html: the next-chapter link leads to chapter09.html, expected "
             "chapter03.html", "chapter02.html: no link to the next chapter chapter03.html")
+
+    def test_a_chapter_without_a_cpp_listing_fails(self):
+        files = replaced(correct_site(), "chapter02.html", CPP_FRAGMENT, "")
+        self.assert_fails_with(files, "chapter02.html: no C++ code listing")
+
+    def test_a_chapter_whose_only_listing_is_a_shell_command_fails(self):
+        files = replaced(correct_site(), "chapter03.html", CPP_FRAGMENT, SHELL_FRAGMENT)
+        self.assert_fails_with(files, "chapter03.html: no C++ code listing")
+
+    def test_a_chapter_without_an_svg_diagram_fails(self):
+        files = replaced(correct_site(), "chapter09.html", diagram(9), "")
+        self.assert_fails_with(files, "chapter09.html: no SVG diagram that loaded")
+
+    def test_a_chapter_whose_svg_diagram_does_not_load_fails(self):
+        files = {**correct_site(), "diagram_01.svg": "this is not an SVG"}
+        self.assert_fails_with(files, "chapter01.html: image does not load: http",
+                               "chapter01.html: no SVG diagram that loaded")
 
     def test_a_chapter_map_without_a_chapter_fails(self):
         files = replaced(correct_site(), "index.html",
