@@ -29,6 +29,13 @@ std::string breakable(const std::string& name) {
   return out;
 }
 
+// A cell's codes stay on one line (no-break spaces), so "m6 x26 g6" never splits.
+std::string unbroken(const std::string& text) {
+  std::string out;
+  for (const char ch : text) out += ch == ' ' ? std::string("\u00a0") : std::string(1, ch);
+  return out;
+}
+
 std::string anchor(const HardCase& c) {
   return "hard_case_" + c.name;
 }
@@ -102,16 +109,33 @@ std::string to_markdown(const std::vector<Outcome>& outcomes, const std::vector<
         "**m** missed pixels, **x** extra pixels, **g** gaps (covered pixels never drawn), "
         "**o** pixels drawn too often (overdraw), **d** pixels that change with the vertex "
         "order. `x26 o1` reads \"26 extra pixels, 1 pixel drawn too often\".\n\n";
+  // An algorithm exact (or rightly refusing) on every case gets no column, only a mention, so
+  // the columns that tell something fit the page.
+  std::vector<std::string> columns, always_exact;
+  for (const auto& a : algorithms) {
+    const bool exact_everywhere = std::all_of(cases.begin(), cases.end(), [&](const HardCase& c) {
+      const auto it = table.find({c.name, a});
+      return it != table.end() && it->second->safe && no_deviation(it->second->error);
+    });
+    (exact_everywhere ? always_exact : columns).push_back(a);
+  }
+  if (!always_exact.empty()) {
+    md << "Exact on every case, so not given a column: ";
+    for (std::size_t i = 0; i < always_exact.size(); ++i) {
+      md << (i ? ", " : "") << '`' << always_exact[i] << '`';
+    }
+    md << ".\n\n";
+  }
   md << "| case |";
-  for (const auto& a : algorithms) md << " " << breakable(a) << " |";
+  for (const auto& a : columns) md << " " << breakable(a) << " |";
   md << "\n|---|";
-  for (std::size_t i = 0; i < algorithms.size(); ++i) md << "---|";
+  for (std::size_t i = 0; i < columns.size(); ++i) md << "---|";
   md << "\n";
   for (const auto& c : cases) {
     md << "| [" << c.name << "](#" << anchor(c) << ") |";
-    for (const auto& a : algorithms) {
+    for (const auto& a : columns) {
       const auto it = table.find({c.name, a});
-      md << " " << (it == table.end() ? std::string("–") : cell(*it->second)) << " |";
+      md << " " << (it == table.end() ? std::string("–") : unbroken(cell(*it->second))) << " |";
     }
     md << "\n";
   }
