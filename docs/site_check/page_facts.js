@@ -19,6 +19,7 @@
       src: image.src,
       loaded: image.complete && image.naturalWidth > 0 && !failed.includes(image.src),
       naturalWidth: image.naturalWidth,
+      inContents: image.closest('div.contents') !== null,
     })),
     // Doxygen embeds block-level SVG figures as <object>; a loaded one has a document.
     objects: objects().map((object) => ({
@@ -27,6 +28,7 @@
       loaded: !failed.includes(object.data) && object.contentDocument !== null &&
           object.contentDocument.documentElement !== null &&
           object.contentDocument.documentElement.localName === 'svg',
+      inContents: object.closest('div.contents') !== null,
     })),
     // Code listings: Doxygen highlights C++ in a fragment with keyword spans (span.keyword,
     // span.keywordtype, span.keywordflow); shell commands come out plain.

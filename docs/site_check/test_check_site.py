@@ -50,7 +50,12 @@ def page(title, body, head=""):
     return (f'<!DOCTYPE html><html><head><meta charset="utf-8"><title>{title}</title>'
             f'<script src="navtreedata.js"></script><script src="navtree.js"></script>{head}'
             f'</head><body><div id="nav-tree"><div id="nav-tree-contents"></div></div>'
-            f'<div class="contents">{body}</div></body></html>')
+            f'<div class="contents">{body}</div>{FOOTER}</body></html>')
+
+
+# Doxygen's footer shows an SVG logo on every page: it is not a chapter's diagram.
+FOOTER = '<div class="footer"><img src="logo.svg" alt="doxygen"></div>'
+
 
 
 def chapter_body(number, previous, following):
@@ -93,6 +98,7 @@ def correct_site(chapters=CHAPTERS):
         "hard_cases.html": page("Hard cases", '<p><a href="chapter01.html">01</a></p>'),
         "cover.png": one_pixel_png(),
         "09_speed_vs_error.svg": PLOT_SVG,
+        "logo.svg": PLOT_SVG,
     }
     for index, number in enumerate(chapters):
         previous = chapters[index - 1] if index > 0 else None
