@@ -2,7 +2,8 @@
 """Opens the tutorial's Doxygen site in headless Chromium the way a reader would and fails on
 what a reader would trip over: a figure that does not load, a link into the site that leads
 nowhere, a chapter missing from the navigation or out of order, a chapter without links to its
-neighbours, a main page without the chapter map or the speed-vs-error plot.
+neighbours, a chapter without a C++ listing or an SVG diagram, a main page without the chapter
+map or the speed-vs-error plot.
 
     check_site.py HTML_DIR [--chapters-dir DIR] [--chromium PATH] [--timeout SECONDS]
 
@@ -99,6 +100,8 @@ def check(html_dir, chapters_dir, chromium, timeout_s):
         problems += site_rules.request_problems(name, facts["failedRequests"])
         problems += site_rules.script_problems(name, facts["exceptions"])
         problems += site_rules.visible_navigation_problems(site, name, facts, pages)
+        if name in pages.values():
+            problems += site_rules.chapter_content_problems(name, facts)
     if site_rules.MAIN_PAGE in facts_of:
         problems += site_rules.navigation_problems(site, facts_of[site_rules.MAIN_PAGE], pages)
         problems += site_rules.main_page_problems(site, facts_of[site_rules.MAIN_PAGE], pages)

@@ -19,13 +19,21 @@
       src: image.src,
       loaded: image.complete && image.naturalWidth > 0 && !failed.includes(image.src),
       naturalWidth: image.naturalWidth,
+      inContents: image.closest('div.contents') !== null,
     })),
     // Doxygen embeds block-level SVG figures as <object>; a loaded one has a document.
     objects: objects().map((object) => ({
       src: object.data,
+      type: object.type,
       loaded: !failed.includes(object.data) && object.contentDocument !== null &&
           object.contentDocument.documentElement !== null &&
           object.contentDocument.documentElement.localName === 'svg',
+      inContents: object.closest('div.contents') !== null,
+    })),
+    // Code listings: Doxygen highlights C++ in a fragment with keyword spans (span.keyword,
+    // span.keywordtype, span.keywordflow); shell commands come out plain.
+    fragments: [...document.querySelectorAll('div.contents div.fragment')].map((fragment) => ({
+      cpp: fragment.querySelector('span[class^="keyword"]') !== null,
     })),
     links: [...document.querySelectorAll('a[href]')].map((link) => ({
       href: link.href,

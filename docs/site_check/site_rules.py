@@ -98,6 +98,28 @@ def loading_problems(page, facts):
     return problems
 
 
+def _is_svg(url):
+    return urlsplit(url).path.lower().endswith(".svg")
+
+
+def chapter_content_problems(page, facts):
+    """A chapter page shows its code and its geometry: at least one C++ listing (a Doxygen code
+    fragment highlighted as C++; shell commands come out plain) and at least one SVG diagram that
+    loaded (Doxygen's <object type="image/svg+xml">, or an <img> of an .svg file) in its text."""
+    problems = []
+    if not any(fragment["cpp"] for fragment in facts["fragments"]):
+        problems.append(f"{page}: no C++ code listing (a div.fragment highlighted as C++)")
+    # Only the page's text counts: Doxygen's search box and footer logo are SVG images too.
+    svgs = [figure for figure in facts["objects"]
+            if figure["inContents"] and figure["type"] == "image/svg+xml" and figure["loaded"]]
+    svgs += [image for image in facts["images"]
+             if image["inContents"] and _is_svg(image["src"]) and image["loaded"]]
+    if not svgs:
+        problems.append(f"{page}: no SVG diagram that loaded (an <object type=\"image/svg+xml\"> "
+                        f"or an <img> of an .svg file)")
+    return problems
+
+
 def link_problems(site, page, facts):
     """Every link of the page's text into the site must name an existing file and, for a page,
     an existing anchor. (The navigation tree is the same on every page: navigation_problems

@@ -50,7 +50,12 @@ def page(title, body, head=""):
     return (f'<!DOCTYPE html><html><head><meta charset="utf-8"><title>{title}</title>'
             f'<script src="navtreedata.js"></script><script src="navtree.js"></script>{head}'
             f'</head><body><div id="nav-tree"><div id="nav-tree-contents"></div></div>'
-            f'<div class="contents">{body}</div></body></html>')
+            f'<div class="contents">{body}</div>{FOOTER}</body></html>')
+
+
+# Doxygen's footer shows an SVG logo on every page: it is not a chapter's diagram.
+FOOTER = '<div class="footer"><img src="logo.svg" alt="doxygen"></div>'
+
 
 
 def chapter_body(number, previous, following):
@@ -62,7 +67,21 @@ def chapter_body(number, previous, following):
     separator = " \u00b7 "
     return (f'<h1>Chapter {number:02d}</h1><p>{separator.join(links)}</p>'
             f'<p><a href="#step1">to step 1</a> \u00b7 <a href="index.html#map">the map</a></p>'
-            f'<h2 id="step1">Step 1</h2><img src="figure_{number:02d}.png" alt="">')
+            f'<h2 id="step1">Step 1</h2><img src="figure_{number:02d}.png" alt="">'
+            f'{SHELL_FRAGMENT}{CPP_FRAGMENT}{diagram(number)}')
+
+
+# A chapter's code listing as Doxygen writes it (C++ is highlighted), and a shell command (plain).
+CPP_FRAGMENT = ('<div class="fragment"><div class="line"><span class="keywordtype">int</span> '
+                'step = 1;</div></div>')
+SHELL_FRAGMENT = '<div class="fragment"><div class="line">./tutorial.sh run</div></div>'
+
+
+def diagram(number):
+    """A chapter's SVG diagram: chapter 01 as an <img>, the others as Doxygen's <object>."""
+    if number == 1:
+        return '<img src="diagram_01.svg" alt="">'
+    return f'<object type="image/svg+xml" data="diagram_{number:02d}.svg"></object>'
 
 
 def correct_site(chapters=CHAPTERS):
@@ -79,6 +98,7 @@ def correct_site(chapters=CHAPTERS):
         "hard_cases.html": page("Hard cases", '<p><a href="chapter01.html">01</a></p>'),
         "cover.png": one_pixel_png(),
         "09_speed_vs_error.svg": PLOT_SVG,
+        "logo.svg": PLOT_SVG,
     }
     for index, number in enumerate(chapters):
         previous = chapters[index - 1] if index > 0 else None
@@ -86,6 +106,7 @@ def correct_site(chapters=CHAPTERS):
         files[f"chapter{number:02d}.html"] = page(f"Chapter {number:02d}",
                                                   chapter_body(number, previous, following))
         files[f"figure_{number:02d}.png"] = one_pixel_png()
+        files[f"diagram_{number:02d}.svg"] = PLOT_SVG
     return files
 
 
@@ -192,6 +213,23 @@ class CheckerTest(unittest.TestCase):
         self.assert_fails_with(
             files, "chapter02.html: the next-chapter link leads to chapter09.html, expected "
             "chapter03.html", "chapter02.html: no link to the next chapter chapter03.html")
+
+    def test_a_chapter_without_a_cpp_listing_fails(self):
+        files = replaced(correct_site(), "chapter02.html", CPP_FRAGMENT, "")
+        self.assert_fails_with(files, "chapter02.html: no C++ code listing")
+
+    def test_a_chapter_whose_only_listing_is_a_shell_command_fails(self):
+        files = replaced(correct_site(), "chapter03.html", CPP_FRAGMENT, SHELL_FRAGMENT)
+        self.assert_fails_with(files, "chapter03.html: no C++ code listing")
+
+    def test_a_chapter_without_an_svg_diagram_fails(self):
+        files = replaced(correct_site(), "chapter09.html", diagram(9), "")
+        self.assert_fails_with(files, "chapter09.html: no SVG diagram that loaded")
+
+    def test_a_chapter_whose_svg_diagram_does_not_load_fails(self):
+        files = {**correct_site(), "diagram_01.svg": "this is not an SVG"}
+        self.assert_fails_with(files, "chapter01.html: image does not load: http",
+                               "chapter01.html: no SVG diagram that loaded")
 
     def test_a_chapter_map_without_a_chapter_fails(self):
         files = replaced(correct_site(), "index.html",

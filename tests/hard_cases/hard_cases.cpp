@@ -2,7 +2,6 @@
 
 #include <cmath>
 #include <limits>
-#include <map>
 #include <numbers>
 #include <sstream>
 
@@ -167,65 +166,6 @@ std::string to_csv(const std::vector<Outcome>& outcomes) {
         << e.outside_writes << ',' << e.rejected << '\n';
   }
   return csv.str();
-}
-
-namespace {
-
-// A cell: "exact", or the non-zero counts (m missed, x extra, g gaps, o overdraw, d order).
-std::string cell(const Outcome& o) {
-  if (!o.safe) return "**unsafe**";
-  const ErrorReport& e = o.error;
-  if (e.missed == 0 && e.extra == 0 && e.gaps == 0 && e.overdraw == 0 && e.order_dependent == 0) {
-    return e.rejected > 0 ? "refused" : "exact";
-  }
-  std::ostringstream text;
-  const auto part = [&](std::uint64_t n, const char* tag) {
-    if (n == 0) return;
-    if (text.tellp() > 0) text << ' ';
-    text << tag << n;
-  };
-  part(e.missed, "m");
-  part(e.extra, "x");
-  part(e.gaps, "g");
-  part(e.overdraw, "o");
-  part(e.order_dependent, "d");
-  return text.str();
-}
-
-}  // namespace
-
-std::string to_markdown(const std::vector<Outcome>& outcomes, const std::vector<HardCase>& cases) {
-  std::vector<std::string> algorithms;
-  std::map<std::pair<std::string, std::string>, const Outcome*> table;
-  for (const auto& o : outcomes) {
-    if (algorithms.empty() || algorithms.back() != o.algorithm) algorithms.push_back(o.algorithm);
-    table[{o.case_name, o.algorithm}] = &o;
-  }
-  std::ostringstream md;
-  md << "# Hard cases × algorithms {#hard_cases}\n\n"
-     << "Every registered algorithm on every hard case of the shared suite "
-        "(`tests/hard_cases/hard_cases.cpp`), measured against the exact oracle of chapter 07 on "
-        "a 32×32 canvas. **exact**: the same pixels as the oracle, in every vertex order; "
-        "**refused**: NaN or infinite input rejected, nothing drawn. Otherwise the counts: "
-        "`m` missed pixels, `x` extra pixels, `g` gaps (covered pixels never drawn), `o` overdraw "
-        "(pixels drawn more often than the truth), `d` pixels that change with the vertex order. "
-        "**unsafe** would mean a write outside the canvas or unrefused NaN input; the tests "
-        "forbid it for every algorithm, demand *exact* from every `top-left` algorithm, and pin "
-        "the other numbers in `tests/hard_cases_expected.csv`.\n\n";
-  md << "| case | why it is hard |";
-  for (const auto& a : algorithms) md << " " << a << " |";
-  md << "\n|---|---|";
-  for (std::size_t i = 0; i < algorithms.size(); ++i) md << "---|";
-  md << "\n";
-  for (const auto& c : cases) {
-    md << "| `" << c.name << "` | " << c.reason << " |";
-    for (const auto& a : algorithms) {
-      const auto it = table.find({c.name, a});
-      md << " " << (it == table.end() ? std::string("–") : cell(*it->second)) << " |";
-    }
-    md << "\n";
-  }
-  return md.str();
 }
 
 }  // namespace tri::hard_cases

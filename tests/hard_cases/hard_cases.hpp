@@ -42,7 +42,4 @@ std::vector<Outcome> run_all(const std::vector<TriangleAlgorithm>& algorithms);
 /// One CSV line per outcome with a header: the format of tests/hard_cases_expected.csv.
 std::string to_csv(const std::vector<Outcome>& outcomes);
 
-/// The matrix as a Markdown page for the docs site: cases down, algorithms across.
-std::string to_markdown(const std::vector<Outcome>& outcomes, const std::vector<HardCase>& cases);
-
 }  // namespace tri::hard_cases

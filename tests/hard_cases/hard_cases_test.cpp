@@ -1,9 +1,13 @@
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <fstream>
 #include <map>
+#include <regex>
 #include <sstream>
 
+#include "hard_case_diagram.hpp"
+#include "hard_case_page.hpp"
 #include "hard_cases.hpp"
 #include "registry.hpp"
 
@@ -90,11 +94,67 @@ TEST_CASE("every other algorithm deviates exactly as tests/hard_cases_expected.c
   CHECK(compared > 0);
 }
 
-TEST_CASE("the hard-case matrix renders one Markdown row per case") {
+TEST_CASE("the hard-case page has a matrix row and a section with its reason per case") {
   const auto cases = all_cases();
   const auto outcomes = run_all(tri::registered_algorithms());
   const std::string md = to_markdown(outcomes, cases);
-  for (const auto& c : cases)
-    CHECK(md.find("| `" + c.name + "` | " + c.reason + " |") != std::string::npos);
+  for (const auto& c : cases) {
+    INFO(c.name);
+    CHECK(md.find("| [" + c.name + "](#hard_case_" + c.name + ") |") != std::string::npos);
+    CHECK(md.find("### " + c.name + " {#hard_case_" + c.name + "}") != std::string::npos);
+    CHECK(md.find("**Why it is hard:** " + c.reason + ".") != std::string::npos);
+    CHECK(md.find("](" + diagram_name(c) + ".svg)") != std::string::npos);
+  }
+  CHECK(md.find("unsafe**:") == std::string::npos);
   CHECK(md.find("| **unsafe** |") == std::string::npos);
+}
+
+TEST_CASE("the hard-case page spells the result codes out") {
+  Outcome o{"a", "inclusive", "c", {}, true};
+  o.error.extra = 26;
+  o.error.overdraw = 1;
+  o.error.order_dependent = 13;
+  CHECK(cell(o) == "x26 o1 d13");
+  CHECK(in_words(o) ==
+        "26 extra pixels, 1 pixel drawn too often, 13 pixels that change with the vertex order");
+  o.error = {};
+  o.error.missed = 1;
+  o.error.gaps = 1;
+  CHECK(in_words(o) == "1 missed pixel, 1 gap (a covered pixel never drawn)");
+  o.error = {};
+  CHECK(in_words(o) == "exact");
+  o.error.rejected = 1;
+  CHECK(in_words(o) == "refused");
+  o.safe = false;
+  o.error.outside_writes = 3;
+  CHECK(in_words(o) == "**unsafe**: 3 writes outside the canvas");
+}
+
+TEST_CASE("a case's diagram draws its triangles over the pixels the oracle covers") {
+  const auto cases = all_cases();
+  const auto find = [&](const std::string& name) {
+    return *std::find_if(cases.begin(), cases.end(),
+                         [&](const HardCase& c) { return c.name == name; });
+  };
+  const HardCase right = find("right_triangle_on_centres");
+  const std::string svg = diagram_svg(right);
+  CHECK(svg.rfind("<svg", 0) == 0);
+  CHECK(svg == diagram_svg(right));  // deterministic
+  CHECK(svg.find("A (2, 2)") != std::string::npos);
+  CHECK(svg.find("centre exactly on an edge") != std::string::npos);
+  CHECK_FALSE(reaches_beyond_canvas(right));
+
+  // A vertex 2^30 pixels away: the whole canvas, the edges cut to it, the vertex named below.
+  const HardCase far = find("vertices_far_2p30");
+  CHECK(reaches_beyond_canvas(far));
+  const std::string far_svg = diagram_svg(far);
+  CHECK(far_svg.find("Outside the picture: A (-1073741824, 3), B (1073741824, 17)") !=
+        std::string::npos);
+  // Every SVG coordinate stays within the picture (no line to 2^30 pixels away).
+  CHECK_FALSE(std::regex_search(far_svg, std::regex("=\"-?[0-9]{5,}")));
+
+  const HardCase nan = find("nan_vertex");
+  CHECK(diagram_svg(nan).find("Not finite, so not drawn") != std::string::npos);
+  CHECK(diagram_svg(find("all_vertices_equal")).find("No pixel centre is covered") !=
+        std::string::npos);
 }
