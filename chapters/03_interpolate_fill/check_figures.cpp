@@ -141,7 +141,7 @@ std::string figure_7_3(int flip) {
     diagram.legend_note("Vermillion dots: the outline pixels outside the fill.");
   diagram.legend_note(std::to_string(count.outside) + " of the outline's " +
                       std::to_string(count.outline) + " pixels lie outside the fill.");
-  return without_crowded_x_ticks(diagram.svg(), 40);
+  return diagram.svg();
 }
 
 std::string figure_7_3_close_up() {

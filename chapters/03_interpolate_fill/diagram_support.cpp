@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <array>
-#include <charconv>
 #include <cstdint>
 #include <cstdio>
 #include <string_view>
@@ -27,28 +26,6 @@ bool centre_in_triangle(glm::ivec2 a, glm::ivec2 b, glm::ivec2 c, glm::ivec2 pix
   };
   const std::int64_t ab = side(a, b), bc = side(b, c), ca = side(c, a);
   return (ab >= 0 && bc >= 0 && ca >= 0) || (ab <= 0 && bc <= 0 && ca <= 0);
-}
-
-std::string without_crowded_x_ticks(std::string svg, int every) {
-  // The x-axis numbers are the only centred 10-unit grey texts the writer emits.
-  const std::string tick = R"(font-size="10" text-anchor="middle" fill="#5a5a5a">)";
-  std::string out;
-  std::size_t line_start = 0;
-  while (line_start < svg.size()) {
-    const std::size_t line_end = std::min(svg.find('\n', line_start), svg.size() - 1);
-    const std::string_view line(svg.data() + line_start, line_end - line_start + 1);
-    const std::size_t at = line.find(tick);
-    bool keep = true;
-    if (at != std::string_view::npos) {
-      const std::string_view rest = line.substr(at + tick.size());
-      int value = 0;
-      std::from_chars(rest.data(), rest.data() + rest.size(), value);
-      keep = value % every == 0;
-    }
-    if (keep) out += line;
-    line_start = line_end + 1;
-  }
-  return out;
 }
 
 bool halfway_tie(glm::ivec2 a, glm::ivec2 b, int x, glm::ivec2& pixel) noexcept {

@@ -31,10 +31,6 @@ bool halfway_tie(glm::ivec2 a, glm::ivec2 b, int x, glm::ivec2& pixel) noexcept;
 /// its sorted vertices labelled P0, P1, P2 with their coordinates.
 PixelDiagram hand_diagram(std::string title, bool edges = true);
 
-/// The diagram writer numbers x every 20 pixels at one unit per pixel, where "-180" is wider
-/// than 20 units; this keeps only the x-axis numbers that are multiples of `every`.
-std::string without_crowded_x_ticks(std::string svg, int every);
-
 /// Draws the part of segment a b inside the pixels first..last (the writer does not clip, and a
 /// close-up shows only a stretch of an edge). Liang-Barsky clipping.
 void clipped_line(PixelDiagram& diagram, glm::dvec2 a, glm::dvec2 b, glm::ivec2 first,

@@ -12,16 +12,6 @@ using namespace tri::ch03;
 using namespace tri::ch03::testing;
 using namespace tri::ch03::figures;
 
-namespace {
-
-std::size_t occurrences(const std::string& text, const std::string& part) {
-  std::size_t count = 0;
-  for (auto at = text.find(part); at != std::string::npos; at = text.find(part, at + 1)) ++count;
-  return count;
-}
-
-}  // namespace
-
 TEST_CASE("Figure labels show at most two decimals and no trailing zeros", "[figures]") {
   CHECK(short_number(8.0 / 3.0) == "2.67");
   CHECK(short_number(1.2) == "1.2");
@@ -79,17 +69,6 @@ TEST_CASE("clipped_line keeps only the part of a segment over the diagram's pixe
   const std::string before = clipped.svg();
   clipped_line(clipped, {-3, -3}, {-1, 20}, first, last, tri::diagram_colors::black);
   CHECK(clipped.svg() == before);  // wholly outside: nothing drawn
-}
-
-TEST_CASE("without_crowded_x_ticks drops only the x numbers between multiples", "[figures]") {
-  const tri::PixelDiagram diagram({-100, 0}, {100, 10}, "t", 1);
-  const std::string tick = R"(text-anchor="middle" fill="#5a5a5a">)";
-  const std::string all = diagram.svg(), thinned = without_crowded_x_ticks(all, 40);
-  CHECK(occurrences(all, tick + "-20<") == 1);
-  CHECK(occurrences(thinned, tick + "-20<") == 0);
-  CHECK(occurrences(thinned, tick + "-40<") == 1);
-  CHECK(occurrences(thinned, tick + "0<") == 1);
-  CHECK(occurrences(thinned, "<text") == occurrences(all, "<text") - 6);  // ±20, ±60, ±100
 }
 
 TEST_CASE(

@@ -100,11 +100,13 @@ ExternalPeer pixman_peer() {
               const std::vector<pixman_triangle_t> triangles =
                   to_pixman(prepared.triangles, height);
               PixmanMask mask(width, height);
+              // [listing pixman_timed_draw]
               result.timing = time_runs(
                   [&] {
                     for (const pixman_triangle_t& t : triangles) mask.add(t);
                   },
                   plan);
+              // [/listing]
             }
             const WriteCounts drawn = pixman_write_counts(width, height, prepared.triangles);
             result.written_pixels =

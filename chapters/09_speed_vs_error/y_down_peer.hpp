@@ -12,11 +12,13 @@
 
 namespace tri::ch09 {
 
+// [listing to_y_down]
 /// Our pixel centre (i, j), y up, is the point (i + 1/2, H - 1 - j + 1/2) of a library whose
 /// y axis points down from the top edge of the image and whose pixel centres are half-integers.
 inline glm::dvec2 to_y_down(glm::dvec2 p, int height) noexcept {
   return {p.x + 0.5, (height - 1 - p.y) + 0.5};
 }
+// [/listing]
 
 /// The pixels, in our coordinates, that a library could set for one triangle: its bounding box
 /// grown by one pixel on every side (so a pixel set just outside still counts, as an error), cut
