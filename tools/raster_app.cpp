@@ -1,14 +1,20 @@
 #include "raster_app.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdint>
 #include <filesystem>
 #include <numeric>
-#include <optional>
 #include <string>
+
+#include <unistd.h>
+
+#include <iostream>
 
 #include "cli.hpp"
 #include "image_io.hpp"
+#include "output_files.hpp"
+#include "printable_text.hpp"
 #include "registry.hpp"
 #include "render_scene.hpp"
 
@@ -23,13 +29,18 @@ CommandLine raster_command_line() {
       "  raster --algo NAME --scene FILE [--out FILE.png] [--counts FILE.pgm]\n"
       "  raster --algo NAME --scene FILE --bench N\n"
       "Scene format: 'canvas W H [r g b]', 'tri x0 y0 x1 y1 x2 y2 [r g b]',\n"
-      "'line x0 y0 x1 y1 [r g b]', '#' comments; y is up, integers are pixel centres.",
+      "'line x0 y0 x1 y1 [r g b]', '#' comments; y is up, integers are pixel centres.\n"
+      "Limits: lines of at most 65536 bytes, at most 2000000 triangles and lines.\n"
+      "Outputs replace their files only when all were written; an output that is the scene,\n"
+      "two outputs naming one file, devices, FIFOs, read-only and hard-linked files are\n"
+      "refused; a symlinked output is written through to its file. '-' is standard output.",
       {
           {"list", "", "print every algorithm: NAME, CHAPTER, RULE, summary (tab-separated)"},
           {"algo", "NAME", "the triangle algorithm to draw with (see --list)"},
           {"scene", "FILE", "the scene file to draw"},
-          {"out", "FILE.png", "write the picture as PNG"},
-          {"counts", "FILE.pgm", "write per-pixel write counts as binary PGM (saturating at 255)"},
+          {"out", "FILE.png", "write the picture as PNG ('-': standard output)"},
+          {"counts", "FILE.pgm",
+           "write per-pixel write counts as binary PGM, saturating at 255 ('-': standard output)"},
           {"bench", "N", "draw the scene N times after a warm-up and print the speed"},
       });
 }
@@ -65,7 +76,7 @@ void benchmark(const Scene& scene, const TriangleAlgorithm* algorithm, long long
       << '\n';
 }
 
-int run(const CliArguments& args, std::ostream& out) {
+int run(const CliArguments& args, std::ostream& out, std::ostream& err) {
   const auto algorithms = registered_algorithms();
   if (args.has("list")) {
     if (args.has("algo") || args.has("scene") || args.has("out") || args.has("counts") ||
@@ -81,12 +92,26 @@ int run(const CliArguments& args, std::ostream& out) {
   if (const auto name = args.value("algo")) {
     algorithm = find_algorithm(algorithms, *name);
     if (algorithm == nullptr) {
-      throw UsageError("unknown algorithm '" + *name + "' (raster --list shows the names)");
+      throw UsageError("unknown algorithm '" + printable_excerpt(*name) +
+                       "' (raster --list shows the names)");
     }
   }
   const auto frames = args.integer("bench", 1, 1'000'000'000);
   if (frames && (args.has("out") || args.has("counts"))) {
     throw UsageError("--bench writes no image: drop --out and --counts");
+  }
+
+  // Every output is checked before any work, so a bad one costs nothing and destroys nothing.
+  std::vector<std::filesystem::path> outputs;
+  for (const char* option : {"out", "counts"}) {
+    if (const auto path = args.value(option)) outputs.emplace_back(*path);
+  }
+  const std::vector<std::filesystem::path> inputs{*scene_path};
+  check_outputs(outputs, inputs);
+  const bool to_standard_output =
+      std::find(outputs.begin(), outputs.end(), standard_output_name) != outputs.end();
+  if (to_standard_output && &out == &std::cout && ::isatty(STDOUT_FILENO) == 1) {
+    throw UsageError("'-' would write a binary image to the terminal; redirect standard output");
   }
 
   const Scene scene = load_scene(*scene_path);
@@ -105,25 +130,17 @@ int run(const CliArguments& args, std::ostream& out) {
     throw std::runtime_error(std::to_string(stats.rejected_triangles) +
                              " triangle(s) have non-finite or out-of-range vertices");
   }
-  // Encode everything before writing anything, and undo the first file if the second fails.
-  const auto png = args.has("out") ? encode_png(canvas) : std::vector<std::uint8_t>{};
-  const auto pgm = args.has("counts") ? encode_counts_pgm(canvas) : std::vector<std::uint8_t>{};
-  std::optional<std::filesystem::path> written;
-  try {
-    if (const auto path = args.value("out")) {
-      write_file_atomically(*path, png);
-      written = *path;
-    }
-    if (const auto path = args.value("counts")) write_file_atomically(*path, pgm);
-  } catch (...) {
-    std::error_code ignored;
-    if (written) std::filesystem::remove(*written, ignored);
-    throw;
-  }
-  out << "drew " << stats.triangles << " triangle(s) and " << stats.lines << " line(s) on "
-      << scene.width << "x" << scene.height;
-  if (algorithm != nullptr) out << " with " << algorithm->name;
-  out << '\n';
+  // Both outputs replace their files together, or neither does.
+  OutputTransaction files(&out);
+  if (const auto path = args.value("out")) files.stage(*path, encode_png(canvas));
+  if (const auto path = args.value("counts")) files.stage(*path, encode_counts_pgm(canvas));
+  files.commit();
+  // With an image on standard output, the summary goes with the other messages.
+  std::ostream& report = to_standard_output ? err : out;
+  report << "drew " << stats.triangles << " triangle(s) and " << stats.lines << " line(s) on "
+         << scene.width << "x" << scene.height;
+  if (algorithm != nullptr) report << " with " << algorithm->name;
+  report << '\n';
   return 0;
 }
 
@@ -131,7 +148,7 @@ int run(const CliArguments& args, std::ostream& out) {
 
 int run_raster(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
   return run_command_line(raster_command_line(), argc, argv, out, err,
-                          [&](const CliArguments& args) { return run(args, out); });
+                          [&](const CliArguments& args) { return run(args, out, err); });
 }
 
 }  // namespace tri
