@@ -21,6 +21,7 @@
 #include "algorithms.hpp"
 #include "cli.hpp"
 #include "pixel_writers.hpp"
+#include "printable_text.hpp"
 #include "random.hpp"
 #include "registry.hpp"
 #include "scene_generators.hpp"
@@ -262,7 +263,6 @@ void threaded_probe(const BenchScene& scene, Canvas& canvas, int rounds, std::os
 
 int run(const tri::CliArguments& args, std::ostream& out) {
   const int repeats = static_cast<int>(args.integer("repeats", 1, 1000).value_or(7));
-  const std::string only = args.value_or("algos", "");
   const std::string scene_filter = args.value_or("scene", "");
   const auto frames = args.integer("frames", 1, 1000000);
   std::vector<TriangleAlgorithm> algorithms;
@@ -272,6 +272,20 @@ int run(const tri::CliArguments& args, std::ostream& out) {
   for (const auto& a : tri::ch08::triangle_algorithms()) {
     if (tri::find_algorithm(algorithms, a.name) == nullptr) algorithms.push_back(a);
   }
+  // Names and scenes are checked before anything is measured: a typo is an error, not a table
+  // without rows.
+  std::vector<std::string> names;
+  for (const auto& a : algorithms) names.emplace_back(a.name);
+  if (const auto list = args.value("algos")) names = tri::parse_name_list("algos", *list, names);
+  const std::vector<BenchScene> scenes = bench_scenes();
+  if (std::none_of(scenes.begin(), scenes.end(), [&](const BenchScene& scene) {
+        return scene.name.find(scene_filter) != std::string::npos;
+      })) {
+    std::string choices;
+    for (const auto& scene : scenes) choices += (choices.empty() ? "" : "; ") + scene.name;
+    throw tri::UsageError("--scene '" + tri::printable_excerpt(scene_filter) +
+                          "' matches no scene (the scenes: " + choices + ")");
+  }
   Canvas canvas(canvas_side, canvas_side);
   const double pixels_per_canvas = canvas_side * canvas_side;
   const std::array<std::uint32_t, 8> words{};
@@ -280,7 +294,7 @@ int run(const tri::CliArguments& args, std::ostream& out) {
            "| x barycentric_double | Mtriangles/s, wall clock |\n"
            "|---|---|---:|---:|---:|---:|---:|\n";
   }
-  for (const BenchScene& scene : bench_scenes()) {
+  for (const BenchScene& scene : scenes) {
     if (args.has("probes") || scene.name.find(scene_filter) == std::string::npos) continue;
     // The two ceilings, timed in the same rounds: std::fill over the canvas's Color pixels (what
     // Canvas::clear does, and what the targets name) and fill_pixels over the same memory.
@@ -292,10 +306,7 @@ int run(const tri::CliArguments& args, std::ostream& out) {
     });
     std::vector<const TriangleAlgorithm*> timed;
     for (const TriangleAlgorithm& algorithm : algorithms) {
-      if (!only.empty() &&
-          ("," + only + ",").find("," + std::string(algorithm.name) + ",") == std::string::npos) {
-        continue;
-      }
+      if (std::find(names.begin(), names.end(), algorithm.name) == names.end()) continue;
       timed.push_back(&algorithm);
       measurables.emplace_back(
           std::string(algorithm.name),
@@ -332,7 +343,7 @@ int run(const tri::CliArguments& args, std::ostream& out) {
         << "x the speed of one thread (wall clock)\n";
     out << "Two threads sharing integer arithmetic: " << two_thread_arithmetic_speedup(repeats)
         << "x the speed of one thread (wall clock)\n";
-    threaded_probe(bench_scenes().front(), canvas, repeats, out);
+    threaded_probe(scenes.front(), canvas, repeats, out);
   }
   return 0;
 }

@@ -1,21 +1,14 @@
 // Writes the hard-case matrix: CSV (the expected file the tests compare with) and the Markdown
 // page of the docs site.
+#include <filesystem>
 #include <iostream>
+#include <string>
+#include <vector>
 
 #include "cli.hpp"
 #include "hard_cases.hpp"
-#include "image_io.hpp"
+#include "output_files.hpp"
 #include "registry.hpp"
-
-namespace {
-
-void write_text(const std::string& path, const std::string& text) {
-  const auto* bytes = reinterpret_cast<const std::uint8_t*>(text.data());
-  tri::write_file_atomically(path, std::span<const std::uint8_t>(bytes, text.size()));
-  std::cout << "wrote " << path << "\n";
-}
-
-}  // namespace
 
 int main(int argc, char** argv) {
   const tri::CommandLine command_line(
@@ -29,14 +22,24 @@ int main(int argc, char** argv) {
         if (!args.has("out") && !args.has("csv")) {
           throw tri::UsageError("give --out DIR, --csv FILE or both");
         }
+        // Both outputs are checked before the run and replaced together after it.
+        std::vector<std::filesystem::path> outputs;
+        if (const auto dir = args.value("out")) {
+          tri::check_output_folder(*dir);
+          outputs.push_back(std::filesystem::path(*dir) / "hard_cases.md");
+        }
+        if (const auto csv = args.value("csv")) outputs.emplace_back(*csv);
+        tri::check_outputs(outputs);
         const auto cases = tri::hard_cases::all_cases();
         const auto outcomes = tri::hard_cases::run_all(tri::registered_algorithms());
-        if (const auto dir = args.value("out")) {
-          write_text(*dir + "/hard_cases.md", tri::hard_cases::to_markdown(outcomes, cases));
-        }
-        if (const auto csv = args.value("csv")) {
-          write_text(*csv, tri::hard_cases::to_csv(outcomes));
-        }
+        const std::string markdown = tri::hard_cases::to_markdown(outcomes, cases);
+        const std::string csv = tri::hard_cases::to_csv(outcomes);
+        tri::OutputTransaction files;
+        std::size_t next = 0;
+        if (args.has("out")) files.stage(outputs[next++], tri::bytes_of_text(markdown));
+        if (args.has("csv")) files.stage(outputs[next++], tri::bytes_of_text(csv));
+        files.commit();
+        for (const auto& path : outputs) std::cout << "wrote " << path.string() << "\n";
         return 0;
       });
 }
