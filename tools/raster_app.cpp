@@ -15,6 +15,7 @@
 #include "image_io.hpp"
 #include "output_files.hpp"
 #include "printable_text.hpp"
+#include "progress.hpp"
 #include "registry.hpp"
 #include "render_scene.hpp"
 
@@ -33,7 +34,8 @@ CommandLine raster_command_line() {
       "Limits: lines of at most 65536 bytes, at most 2000000 triangles and lines.\n"
       "Outputs replace their files only when all were written; an output that is the scene,\n"
       "two outputs naming one file, devices, FIFOs, read-only and hard-linked files are\n"
-      "refused; a symlinked output is written through to its file. '-' is standard output.",
+      "refused; a symlinked output is written through to its file. '-' is standard output.\n"
+      "Work that runs for more than 2 s prints its progress on standard error.",
       {
           {"list", "", "print every algorithm: NAME, CHAPTER, RULE, summary (tab-separated)"},
           {"algo", "NAME", "the triangle algorithm to draw with (see --list)"},
@@ -42,6 +44,7 @@ CommandLine raster_command_line() {
           {"counts", "FILE.pgm",
            "write per-pixel write counts as binary PGM, saturating at 255 ('-': standard output)"},
           {"bench", "N", "draw the scene N times after a warm-up and print the speed"},
+          {"force", "", "run a --bench estimated to take more than 10 minutes anyway"},
       });
 }
 
@@ -51,9 +54,13 @@ void print_list(const std::vector<TriangleAlgorithm>& algorithms, std::ostream& 
   }
 }
 
-// Draws the scene `frames` times after one warm-up frame and prints DESIGN section 9's line.
+// Roughly how long stb takes per pixel to encode a PNG (16384x16384 took 40-53 s).
+constexpr double png_seconds_per_pixel = 170e-9;
+
+// Draws the scene `frames` times after one warm-up frame and prints DESIGN section 9's line;
+// refuses (unless forced) a run whose estimate from the warm-up is absurd.
 void benchmark(const Scene& scene, const TriangleAlgorithm* algorithm, long long frames,
-               std::ostream& out) {
+               bool forced, std::ostream& out, std::ostream& err) {
   // One counted frame tells how many pixels a frame writes; it doubles as the warm-up.
   Canvas counted = make_canvas(scene);
   counted.enable_write_counts();
@@ -63,9 +70,18 @@ void benchmark(const Scene& scene, const TriangleAlgorithm* algorithm, long long
       std::accumulate(counts.begin(), counts.end(), std::uint64_t{0});
 
   Canvas canvas = make_canvas(scene);
+  const auto warm_up = std::chrono::steady_clock::now();
   render_scene(scene, algorithm, canvas);
+  const double frame_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - warm_up).count();
+  refuse_absurd_run(frame_seconds * static_cast<double>(frames),
+                    "--bench " + std::to_string(frames), forced);
+  Progress progress("raster: --bench", static_cast<std::uint64_t>(frames), err);
   const auto start = std::chrono::steady_clock::now();
-  for (long long i = 0; i < frames; ++i) render_scene(scene, algorithm, canvas);
+  for (long long i = 0; i < frames; ++i) {
+    render_scene(scene, algorithm, canvas);
+    progress.advance(static_cast<std::uint64_t>(i + 1));
+  }
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const auto triangles = count_triangles(scene);
@@ -100,6 +116,7 @@ int run(const CliArguments& args, std::ostream& out, std::ostream& err) {
   if (frames && (args.has("out") || args.has("counts"))) {
     throw UsageError("--bench writes no image: drop --out and --counts");
   }
+  if (args.has("force") && !frames) throw UsageError("--force goes with --bench");
 
   // Every output is checked before any work, so a bad one costs nothing and destroys nothing.
   std::vector<std::filesystem::path> outputs;
@@ -119,20 +136,29 @@ int run(const CliArguments& args, std::ostream& out, std::ostream& err) {
     throw UsageError(*scene_path + " has triangles: choose an algorithm with --algo NAME");
   }
   if (frames) {
-    benchmark(scene, algorithm, *frames, out);
+    benchmark(scene, algorithm, *frames, args.has("force"), out, err);
     return 0;
   }
 
   Canvas canvas = make_canvas(scene);
   if (args.has("counts")) canvas.enable_write_counts();
-  const RenderStats stats = render_scene(scene, algorithm, canvas);
+  Progress drawing("raster: drawing", scene.primitives.size(), err);
+  const RenderStats stats =
+      render_scene(scene, algorithm, canvas, [&](std::size_t done) { drawing.advance(done); });
   if (stats.rejected_triangles > 0) {
     throw std::runtime_error(std::to_string(stats.rejected_triangles) +
                              " triangle(s) have non-finite or out-of-range vertices");
   }
   // Both outputs replace their files together, or neither does.
   OutputTransaction files(&out);
-  if (const auto path = args.value("out")) files.stage(*path, encode_png(canvas));
+  if (const auto path = args.value("out")) {
+    const double pixels = static_cast<double>(canvas.width()) * canvas.height();
+    if (pixels * png_seconds_per_pixel > 2.0) {
+      err << "raster: encoding a " << canvas.width() << "x" << canvas.height() << " PNG, about "
+          << human_duration(pixels * png_seconds_per_pixel) << "\n";
+    }
+    files.stage(*path, encode_png(canvas));
+  }
   if (const auto path = args.value("counts")) files.stage(*path, encode_counts_pgm(canvas));
   files.commit();
   // With an image on standard output, the summary goes with the other messages.

@@ -1,5 +1,6 @@
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -11,6 +12,8 @@
 #include "line_reference.hpp"
 #include "raster_app.hpp"
 #include "registry.hpp"
+#include "render_scene.hpp"
+#include "scene.hpp"
 
 namespace fs = std::filesystem;
 
@@ -286,4 +289,39 @@ TEST_CASE("raster names the system's reason for a scene it cannot open") {
   const Run folder = raster({"--scene", (dir / ".").string()});
   CHECK(folder.status == 1);
   CHECK(folder.err.find("Is a directory") != std::string::npos);
+}
+
+TEST_CASE("raster --bench refuses a count estimated beyond ten minutes unless forced") {
+  TempFolder dir;
+  const auto scene = dir.write("big.scene", "canvas 512 512\ntri -10 -10 600 -10 -10 600\n");
+  Run run = raster({"--algo", "edge_function", "--scene", scene.string(), "--bench", "1000000000"});
+  CHECK(run.status == 2);
+  CHECK(run.err.find("add --force to run it anyway") != std::string::npos);
+  CHECK(run.out.empty());
+  run = raster({"--algo", "edge_function", "--scene", scene.string(), "--force"});
+  CHECK(run.status == 2);
+  CHECK(run.err.find("--force goes with --bench") != std::string::npos);
+}
+
+TEST_CASE("raster draws the same picture with progress pieces as in one batch") {
+  std::string text = "canvas 64 48\n";
+  for (int i = 0; i < 300; ++i) {
+    text += "tri " + std::to_string(i % 50) + " 0 63 " + std::to_string(i % 40) + " 5 47 " +
+            std::to_string(i % 256) + " 7 9\n";
+    if (i % 17 == 0) text += "line 0 0 63 " + std::to_string(i % 48) + "\n";
+  }
+  std::istringstream in(text);
+  const tri::Scene scene = tri::parse_scene(in, "pieces");
+  for (const auto& algorithm : tri::registered_algorithms()) {
+    INFO(algorithm.name);
+    tri::Canvas whole = tri::make_canvas(scene), pieces = tri::make_canvas(scene);
+    tri::render_scene(scene, &algorithm, whole);
+    std::size_t reports = 0;
+    tri::render_scene(scene, &algorithm, pieces, [&](std::size_t) { ++reports; });
+    CHECK(reports > 0);
+    CHECK(std::equal(whole.pixels().begin(), whole.pixels().end(), pieces.pixels().begin(),
+                     [](tri::Color a, tri::Color b) {
+                       return a.r == b.r && a.g == b.g && a.b == b.b && a.a == b.a;
+                     }));
+  }
 }
