@@ -22,6 +22,7 @@
 #include "cli.hpp"
 #include "pixel_writers.hpp"
 #include "printable_text.hpp"
+#include "progress.hpp"
 #include "random.hpp"
 #include "registry.hpp"
 #include "scene_generators.hpp"
@@ -126,11 +127,15 @@ struct Measurable {
   std::vector<double> wall, cpu;  // seconds per call, one entry per round
 };
 
-// Enough calls for about 30 ms per timed run.
-int frames_for(const std::function<void()>& run) {
+// The wall time of one call.
+double seconds_of_one_call(const std::function<void()>& run) {
   const auto start = Clock::now();
   run();
-  const double once = std::chrono::duration<double>(Clock::now() - start).count();
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// Enough calls for about 30 ms per timed run, for a call that took `once` seconds.
+int frames_for(double once) {
   return std::clamp(static_cast<int>(0.03 / std::max(once, 1e-9)), 1, 100000);
 }
 
@@ -141,9 +146,10 @@ double median(std::vector<double> values) {
 
 // Times every measurable once per round, round after round, so that whatever else the machine
 // does slows them all alike; keeps each one's seconds per call by both clocks.
-void measure_in_rounds(std::vector<Measurable>& measurables, int rounds) {
+void measure_in_rounds(std::vector<Measurable>& measurables, int rounds, tri::Progress& progress) {
   for (Measurable& m : measurables) m.run();  // warm-up
   for (int r = 0; r < rounds; ++r) {
+    progress.advance(static_cast<std::uint64_t>(r));
     for (Measurable& m : measurables) {
       const auto start = Clock::now();
       const double cpu_start = thread_cpu_seconds();
@@ -289,11 +295,7 @@ int run(const tri::CliArguments& args, std::ostream& out) {
   Canvas canvas(canvas_side, canvas_side);
   const double pixels_per_canvas = canvas_side * canvas_side;
   const std::array<std::uint32_t, 8> words{};
-  if (!args.has("probes")) {
-    out << "| scene | algorithm | Mtriangles/s | Mpixels/s | % of std::fill "
-           "| x barycentric_double | Mtriangles/s, wall clock |\n"
-           "|---|---|---:|---:|---:|---:|---:|\n";
-  }
+  bool header_written = false;  // written with the first rows, so a refused run prints no table
   for (const BenchScene& scene : scenes) {
     if (args.has("probes") || scene.name.find(scene_filter) == std::string::npos) continue;
     // The two ceilings, timed in the same rounds: std::fill over the canvas's Color pixels (what
@@ -312,8 +314,23 @@ int run(const tri::CliArguments& args, std::ostream& out) {
           std::string(algorithm.name),
           [&, a = &algorithm] { timed_draw(*a, canvas, scene.triangles); }, algorithm.threaded);
     }
-    for (Measurable& m : measurables) m.frames = frames ? *frames : frames_for(m.run);
-    measure_in_rounds(measurables, repeats);
+    // One call each tells how long the rounds will take: an absurd estimate is refused.
+    double estimate = 0;
+    for (Measurable& m : measurables) {
+      const double once = seconds_of_one_call(m.run);
+      m.frames = frames ? static_cast<int>(*frames) : frames_for(once);
+      estimate += once * m.frames * (repeats + 1);
+    }
+    tri::refuse_absurd_run(estimate, "the " + scene.name + " scene", args.has("force"));
+    tri::Progress progress("08_fast_exact_bench: " + scene.name,
+                           static_cast<std::uint64_t>(repeats), std::cerr);
+    measure_in_rounds(measurables, repeats, progress);
+    if (!header_written) {
+      out << "| scene | algorithm | Mtriangles/s | Mpixels/s | % of std::fill "
+             "| x barycentric_double | Mtriangles/s, wall clock |\n"
+             "|---|---|---:|---:|---:|---:|---:|\n";
+      header_written = true;
+    }
     const double std_fill_rate = pixels_per_canvas / median(measurables[0].cpu) / 1e6;
     const double wide_fill_rate = pixels_per_canvas / median(measurables[1].cpu) / 1e6;
     out << "| " << scene.name << " | (std::fill; fill_pixels) | | " << std::fixed
@@ -360,7 +377,8 @@ int main(int argc, char** argv) {
        {"algos", "A,B", "only these algorithms (comma-separated names)"},
        {"scene", "TEXT", "only the scenes whose name contains TEXT (e.g. tiny, mesh)"},
        {"frames", "N", "draw each scene N times per timed run (default: about 30 ms worth)"},
-       {"probes", "", "only the two-thread probes: filling the canvas, and integer arithmetic"}});
+       {"probes", "", "only the two-thread probes: filling the canvas, and integer arithmetic"},
+       {"force", "", "measure even when the estimated time exceeds 10 minutes"}});
   return tri::run_command_line(command_line, argc, argv, std::cout, std::cerr,
                                [&](const tri::CliArguments& args) { return run(args, std::cout); });
 }
