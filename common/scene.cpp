@@ -115,8 +115,8 @@ class LineReader {
 
 enum class LineStatus { line, too_long, end };
 
-// Reads one line into buffer (sized max_scene_line_bytes + 1) without ever holding more than
-// that: a longer line is reported as soon as its first max_scene_line_bytes bytes are read.
+// Reads one line into buffer (sized max_line_bytes + 1) without ever holding more than that: a
+// longer line is reported as soon as its first max_line_bytes bytes are read.
 LineStatus read_line(std::istream& in, std::string& buffer, std::string_view& line) {
   errno = 0;
   in.getline(buffer.data(), static_cast<std::streamsize>(buffer.size()));
@@ -139,10 +139,10 @@ glm::dvec2 point(const LineReader& reader, const std::vector<std::string_view>& 
 
 }  // namespace
 
-Scene parse_scene(std::istream& in, std::string_view source_name) {
+Scene parse_scene(std::istream& in, std::string_view source_name, const SceneLimits& limits) {
   Scene scene;
   bool have_canvas = false;
-  std::string buffer(max_scene_line_bytes + 1, '\0');
+  std::string buffer(limits.max_line_bytes + 1, '\0');
   std::uint64_t line_number = 0;
   std::string_view line;
   while (true) {
@@ -151,7 +151,7 @@ Scene parse_scene(std::istream& in, std::string_view source_name) {
     ++line_number;
     if (status == LineStatus::too_long) {
       LineReader(source_name, line_number)
-          .fail("line longer than " + std::to_string(max_scene_line_bytes) +
+          .fail("line longer than " + std::to_string(limits.max_line_bytes) +
                 " bytes, the limit of a scene line");
     }
     if (line_number == 1 && line.starts_with(utf8_byte_order_mark)) {
@@ -173,8 +173,8 @@ Scene parse_scene(std::istream& in, std::string_view source_name) {
     } else if (directive == "tri" || directive == "line") {
       if (!have_canvas)
         reader.fail("'" + std::string(directive) + "' before the 'canvas' directive");
-      if (scene.primitives.size() == max_scene_primitives) {
-        reader.fail("more than " + std::to_string(max_scene_primitives) +
+      if (scene.primitives.size() == limits.max_primitives) {
+        reader.fail("more than " + std::to_string(limits.max_primitives) +
                     " primitives, the limit of a scene");
       }
       if (directive == "tri") {

@@ -31,6 +31,12 @@ inline constexpr std::size_t max_scene_line_bytes = 64 * 1024;
 /// more than any scene of the book. More is an error rather than an exhausted machine.
 inline constexpr std::size_t max_scene_primitives = 2'000'000;
 
+/// The limits a parse enforces; the defaults are the documented ones (tests use smaller ones).
+struct SceneLimits {
+  std::size_t max_line_bytes = max_scene_line_bytes;
+  std::size_t max_primitives = max_scene_primitives;
+};
+
 /// A UTF-8 byte order mark, accepted (and skipped) at the start of a scene.
 inline constexpr std::string_view utf8_byte_order_mark = "\xEF\xBB\xBF";
 
@@ -71,7 +77,7 @@ class SceneError : public std::runtime_error {
 /// source_name and the line on the first problem, so no scene is ever returned half-read; lines
 /// longer than max_scene_line_bytes and scenes of more than max_scene_primitives are problems.
 /// Words of the scene appear in messages through printable_excerpt (short, escaped).
-Scene parse_scene(std::istream& in, std::string_view source_name);
+Scene parse_scene(std::istream& in, std::string_view source_name, const SceneLimits& limits = {});
 
 /// Reads and parses a scene file (errors name the file and the system's reason).
 Scene load_scene(const std::filesystem::path& path);
