@@ -1,6 +1,9 @@
 #include "cli.hpp"
 
+#include <algorithm>
+#include <cerrno>
 #include <charconv>
+#include <cstring>
 #include <exception>
 #include <sstream>
 
@@ -63,6 +66,10 @@ CliArguments CommandLine::parse(int argc, const char* const* argv) const {
       throw UsageError("option '" + std::string(word) + "' needs a value (" + option->value_name +
                        ")");
     }
+    if (argv[i + 1][0] == '\0') {
+      throw UsageError("option '" + std::string(word) + "' needs a non-empty value (" +
+                       option->value_name + ")");
+    }
     args.values_.emplace(std::string(name), std::string(argv[++i]));
   }
   return args;
@@ -79,26 +86,66 @@ std::string CommandLine::help_text() const {
     for (std::size_t pad = left.size(); pad < 22; ++pad) text << ' ';
     text << "  " << option.help << "\n";
   }
+  text << "\n" << exit_status_help << "\n";
   return text.str();
+}
+
+std::vector<std::string> parse_name_list(std::string_view option, std::string_view list,
+                                         const std::vector<std::string>& valid) {
+  std::vector<std::string> names;
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t comma = std::min(list.find(',', start), list.size());
+    const std::string name(list.substr(start, comma - start));
+    if (name.empty()) {
+      throw UsageError("--" + std::string(option) + " '" + std::string(list) +
+                       "' has an empty name (a leading, trailing or doubled comma)");
+    }
+    if (std::find(valid.begin(), valid.end(), name) == valid.end()) {
+      std::string choices;
+      for (const auto& v : valid) choices += (choices.empty() ? "" : ", ") + v;
+      throw UsageError("--" + std::string(option) + ": unknown name '" + name +
+                       "' (valid: " + choices + ")");
+    }
+    if (std::find(names.begin(), names.end(), name) != names.end()) {
+      throw UsageError("--" + std::string(option) + ": '" + name + "' is named twice");
+    }
+    names.push_back(name);
+    if (comma == list.size()) return names;
+    start = comma + 1;
+  }
+}
+
+int finish_standard_output(std::string_view program, std::ostream& out, std::ostream& err,
+                           int status) {
+  errno = 0;
+  out.flush();
+  if (out) return status;
+  const int error = errno;
+  err << program << ": error: cannot write the results to standard output: "
+      << (error != 0 ? std::strerror(error) : "write failed") << "\n";
+  return status == exit_success ? exit_failure : status;
 }
 
 int run_command_line(const CommandLine& command_line, int argc, const char* const* argv,
                      std::ostream& out, std::ostream& err,
                      const std::function<int(const CliArguments&)>& body) {
-  try {
-    const CliArguments args = command_line.parse(argc, argv);
-    if (args.help_requested()) {
-      out << command_line.help_text();
-      return 0;
+  return finish_standard_output(command_line.program(), out, err, [&] {
+    try {
+      const CliArguments args = command_line.parse(argc, argv);
+      if (args.help_requested()) {
+        out << command_line.help_text();
+        return exit_success;
+      }
+      return body(args);
+    } catch (const UsageError& e) {
+      err << command_line.program() << ": error: " << e.what() << " (see --help)\n";
+      return exit_usage;
+    } catch (const std::exception& e) {
+      err << command_line.program() << ": error: " << e.what() << "\n";
+      return exit_failure;
     }
-    return body(args);
-  } catch (const UsageError& e) {
-    err << command_line.program() << ": error: " << e.what() << " (see --help)\n";
-    return 2;
-  } catch (const std::exception& e) {
-    err << command_line.program() << ": error: " << e.what() << "\n";
-    return 1;
-  }
+  }());
 }
 
 }  // namespace tri

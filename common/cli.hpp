@@ -21,6 +21,13 @@ struct CliOption {
   std::string help;
 };
 
+/// The exit statuses of every program, stated at the end of every --help.
+inline constexpr int exit_success = 0;
+inline constexpr int exit_failure = 1;  ///< unreadable input, failed output, any runtime error
+inline constexpr int exit_usage = 2;    ///< a bad command line: nothing was done
+inline constexpr const char* exit_status_help =
+    "Exit status: 0 success, 1 input, output or runtime error, 2 usage error (nothing done).";
+
 /// A bad command line; what() says what is wrong in one line.
 class UsageError : public std::runtime_error {
  public:
@@ -49,10 +56,10 @@ class CommandLine {
  public:
   CommandLine(std::string program, std::string summary, std::vector<CliOption> options);
 
-  /// Throws UsageError on an unknown option, an option given twice, a missing value (the end of
-  /// the line, or a next word that starts with "--") or a stray argument.
+  /// Throws UsageError on an unknown option, an option given twice, a missing or empty value (the
+  /// end of the line, or a next word that starts with "--") or a stray argument.
   CliArguments parse(int argc, const char* const* argv) const;
-  /// The text --help prints: what the program does and every option.
+  /// The text --help prints: what the program does, every option and the exit statuses.
   std::string help_text() const;
   const std::string& program() const noexcept { return program_; }
 
@@ -64,9 +71,20 @@ class CommandLine {
   std::vector<CliOption> options_;
 };
 
+/// The names of a comma-separated list given to --option: each must be one of valid, none empty
+/// (so a leading, trailing or doubled comma is refused) and none twice. Throws UsageError naming
+/// the valid names otherwise.
+std::vector<std::string> parse_name_list(std::string_view option, std::string_view list,
+                                         const std::vector<std::string>& valid);
+
+/// Flushes out (standard output) and checks it: when the results could not be written, says so
+/// on err with the system's reason and returns exit_failure, else returns status.
+int finish_standard_output(std::string_view program, std::ostream& out, std::ostream& err,
+                           int status);
+
 /// Runs a program body with uniform error handling: prints help and returns 0 for --help, and
 /// turns exceptions into one line on err ("program: error: ...") with exit status 2 for usage
-/// errors and 1 for everything else.
+/// errors and 1 for everything else. Checks out at the end (finish_standard_output).
 int run_command_line(const CommandLine& command_line, int argc, const char* const* argv,
                      std::ostream& out, std::ostream& err,
                      const std::function<int(const CliArguments&)>& body);

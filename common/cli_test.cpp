@@ -1,6 +1,7 @@
 #include <catch2/catch.hpp>
 
 #include <climits>
+#include <fstream>
 #include <functional>
 #include <initializer_list>
 #include <optional>
@@ -152,6 +153,7 @@ TEST_CASE("A bad command line throws a UsageError that says what is wrong", "[cl
   CHECK(usage_error_of({"--list", "--bench"}) == "option '--bench' needs a value (N)");
   CHECK(usage_error_of({"--list", "--list"}) == "option '--list' given twice");
   CHECK(usage_error_of({"--scene", "a", "--scene", "b"}) == "option '--scene' given twice");
+  CHECK(usage_error_of({"--scene", ""}) == "option '--scene' needs a non-empty value (FILE)");
 }
 
 TEST_CASE("An option does not swallow the next option as its value", "[cli][errors]") {
@@ -167,8 +169,8 @@ TEST_CASE("integer reads whole numbers within the bounds and refuses everything 
   CHECK(parse({"--bench", "-7"}).integer("bench", -10, 10) == -7);
   CHECK(parse({"--bench", "9223372036854775807"}).integer("bench", 0, LLONG_MAX) == LLONG_MAX);
 
-  for (const char* bad : {"0", "101", "-1", "", " 5", "5 ", "+5", "1.5", "1e2", "abc", "10x",
-                          "0x10", "99999999999999999999"}) {
+  for (const char* bad : {"0", "101", "-1", " 5", "5 ", "+5", "1.5", "1e2", "abc", "10x", "0x10",
+                          "99999999999999999999"}) {
     INFO("--bench '" << bad << "'");
     const CliArguments args = parse({"--bench", bad});
     CHECK_THROWS_AS(args.integer("bench", 1, 100), UsageError);
@@ -231,6 +233,58 @@ TEST_CASE("run_command_line turns any other exception into one line on err and s
       run({}, [](const CliArguments&) -> int { throw std::logic_error("a bug"); });
   CHECK(logic.status == 1);
   CHECK(logic.err == "raster: error: a bug\n");
+}
+
+TEST_CASE("Every help text ends with the exit statuses all programs share", "[cli]") {
+  const std::string help = raster_like().help_text();
+  CHECK_THAT(help, Catch::EndsWith(std::string(exit_status_help) + "\n"));
+  CHECK_THAT(help, Catch::Contains("0 success") && Catch::Contains("2 usage error"));
+}
+
+TEST_CASE("A name list keeps valid names in order and refuses empty, unknown and repeated names",
+          "[cli][names]") {
+  const std::vector<std::string> valid{"alpha", "beta", "gamma"};
+  CHECK(parse_name_list("only", "beta", valid) == std::vector<std::string>{"beta"});
+  CHECK(parse_name_list("only", "gamma,alpha", valid) ==
+        std::vector<std::string>{"gamma", "alpha"});
+  // A leading comma and a trailing comma are refused alike, as is a doubled one.
+  for (const char* list : {",beta", "beta,", "alpha,,beta", ",", ""}) {
+    INFO("--only '" << list << "'");
+    CHECK_THROWS_AS(parse_name_list("only", list, valid), UsageError);
+    CHECK_THROWS_WITH(parse_name_list("only", list, valid), Catch::Contains("empty name"));
+  }
+  CHECK_THROWS_WITH(parse_name_list("only", "alpha,delta", valid),
+                    "--only: unknown name 'delta' (valid: alpha, beta, gamma)");
+  CHECK_THROWS_WITH(parse_name_list("only", "beta,alpha,beta", valid),
+                    "--only: 'beta' is named twice");
+}
+
+TEST_CASE("run_command_line fails with status 1 and the reason when standard output is full",
+          "[cli][run][standard_output]") {
+  std::ofstream full("/dev/full");
+  REQUIRE(full.is_open());
+  std::ostringstream err;
+  const Argv args({"--list"});
+  const int status = run_command_line(raster_like(), args.argc(), args.argv(), full, err,
+                                      [&](const CliArguments&) {
+                                        full << "results the user asked for\n";
+                                        return 0;
+                                      });
+  CHECK(status == exit_failure);
+  CHECK(err.str() ==
+        "raster: error: cannot write the results to standard output: No space left on device\n");
+}
+
+TEST_CASE("run_command_line keeps a usage error's status when standard output also fails",
+          "[cli][run][standard_output]") {
+  std::ofstream full("/dev/full");
+  std::ostringstream err;
+  const Argv args({"--bogus"});
+  full << "partial";
+  const int status = run_command_line(raster_like(), args.argc(), args.argv(), full, err,
+                                      [](const CliArguments&) { return 0; });
+  CHECK(status == exit_usage);
+  CHECK_THAT(err.str(), Catch::Contains("No space left on device"));
 }
 
 }  // namespace tri

@@ -5,6 +5,7 @@
 
 #include "cli.hpp"
 #include "image_io.hpp"
+#include "output_files.hpp"
 
 namespace tri {
 
@@ -25,8 +26,7 @@ void FigureWriter::save_counts(std::string_view name, const Canvas& canvas) {
 
 void FigureWriter::save_text(std::string_view name, std::string_view text) {
   const auto path = folder_ / std::string(name);
-  const auto* bytes = reinterpret_cast<const std::uint8_t*>(text.data());
-  write_file_atomically(path, std::span<const std::uint8_t>(bytes, text.size()));
+  write_file_safely(path, bytes_of_text(text));
   log_ << "wrote " << path.string() << "\n";
 }
 
@@ -50,7 +50,9 @@ int run_chapter_program(int argc, const char* const* argv, std::string program,
                                  {{"out", "DIR", "folder for the figures (default: out)"}});
   return run_command_line(command_line, argc, argv, std::cout, std::cerr,
                           [&](const CliArguments& args) {
-                            FigureWriter figures(args.value_or("out", "out"), std::cout);
+                            const std::string folder = args.value_or("out", "out");
+                            check_output_folder(folder);  // before any drawing
+                            FigureWriter figures(folder, std::cout);
                             render(figures);
                             return 0;
                           });

@@ -3,11 +3,10 @@
 #include <stb_image_write.h>
 
 #include <algorithm>
-#include <cerrno>
-#include <cstring>
-#include <fstream>
 #include <stdexcept>
 #include <string>
+
+#include "output_files.hpp"
 
 namespace tri {
 namespace {
@@ -62,36 +61,7 @@ std::vector<std::uint8_t> encode_counts_pgm(const Canvas& canvas) {
 }
 
 void write_file_atomically(const std::filesystem::path& path, std::span<const std::uint8_t> bytes) {
-  namespace fs = std::filesystem;
-  std::error_code error;
-  if (path.has_parent_path()) {
-    fs::create_directories(path.parent_path(), error);
-    if (error) {
-      throw std::runtime_error("cannot write " + path.string() + ": cannot create folder " +
-                               path.parent_path().string() + ": " + error.message());
-    }
-  }
-  fs::path temporary = path;
-  temporary += ".tmp";
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    if (!out) {
-      throw std::runtime_error("cannot write " + path.string() + ": " + std::strerror(errno));
-    }
-    out.write(reinterpret_cast<const char*>(bytes.data()),
-              static_cast<std::streamsize>(bytes.size()));
-    out.close();
-    if (!out) {
-      fs::remove(temporary, error);
-      throw std::runtime_error("cannot write " + path.string());
-    }
-  }
-  fs::rename(temporary, path, error);
-  if (error) {
-    const std::string reason = error.message();
-    fs::remove(temporary, error);
-    throw std::runtime_error("cannot write " + path.string() + ": " + reason);
-  }
+  write_file_safely(path, bytes);
 }
 
 void write_png(const Canvas& canvas, const std::filesystem::path& path) {

@@ -1,13 +1,17 @@
 #include "scene.hpp"
 
+#include <cerrno>
 #include <charconv>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <fstream>
 #include <limits>
 #include <locale>
 #include <sstream>
 
 #include "canvas.hpp"
+#include "printable_text.hpp"
 
 namespace tri {
 namespace {
@@ -39,7 +43,8 @@ double magnitude_beyond_double(std::string_view word) {
 // Reads one directive's words, throwing SceneError with the position on the first problem.
 class LineReader {
  public:
-  LineReader(std::string_view source, int line_number) : source_(source), line_(line_number) {}
+  LineReader(std::string_view source, std::uint64_t line_number)
+      : source_(source), line_(line_number) {}
 
   [[noreturn]] void fail(const std::string& problem) const {
     throw SceneError(std::string(source_) + ":" + std::to_string(line_) + ": " + problem);
@@ -53,15 +58,15 @@ class LineReader {
       // from_chars reports 1e-400 (too close to zero for a double) like 1e400 (too large).
       value = magnitude_beyond_double(word);
     } else if (error != std::errc() || !whole_word) {
-      fail("expected a decimal number for " + std::string(what) + ", got '" + std::string(word) +
-           "'");
+      fail("expected a decimal number for " + std::string(what) + ", got '" +
+           printable_excerpt(word) + "'");
     }
     if (std::isnan(value)) fail(std::string(what) + " is NaN; coordinates must be finite numbers");
     if (std::isinf(value)) {
       fail(std::string(what) + " is infinite; coordinates must be finite numbers");
     }
     if (std::abs(value) > max_scene_coordinate) {
-      fail(std::string(what) + " " + std::string(word) + " is outside ±2^30 (1073741824)");
+      fail(std::string(what) + " " + printable_excerpt(word) + " is outside ±2^30 (1073741824)");
     }
     return value;
   }
@@ -71,12 +76,12 @@ class LineReader {
     const auto [end, error] = std::from_chars(word.data(), word.data() + word.size(), value);
     const bool whole_word = end == word.data() + word.size();
     if (error == std::errc::result_out_of_range && whole_word) {
-      fail(std::string(what) + " " + std::string(word) + " is outside " + std::to_string(low) +
-           ".." + std::to_string(high));
+      fail(std::string(what) + " " + printable_excerpt(word) + " is outside " +
+           std::to_string(low) + ".." + std::to_string(high));
     }
     if (error != std::errc() || !whole_word) {
-      fail("expected a whole number for " + std::string(what) + ", got '" + std::string(word) +
-           "'");
+      fail("expected a whole number for " + std::string(what) + ", got '" +
+           printable_excerpt(word) + "'");
     }
     if (value < low || value > high) {
       fail(std::string(what) + " " + std::to_string(value) + " is outside " + std::to_string(low) +
@@ -105,8 +110,25 @@ class LineReader {
 
  private:
   std::string_view source_;
-  int line_;
+  std::uint64_t line_;
 };
+
+enum class LineStatus { line, too_long, end };
+
+// Reads one line into buffer (sized max_line_bytes + 1) without ever holding more than that: a
+// longer line is reported as soon as its first max_line_bytes bytes are read.
+LineStatus read_line(std::istream& in, std::string& buffer, std::string_view& line) {
+  errno = 0;
+  in.getline(buffer.data(), static_cast<std::streamsize>(buffer.size()));
+  const auto count = static_cast<std::size_t>(in.gcount());
+  if (in.bad()) return LineStatus::end;
+  if (in.fail()) {
+    if (in.eof() && count == 0) return LineStatus::end;
+    return LineStatus::too_long;  // the buffer filled before the end of the line
+  }
+  line = std::string_view(buffer.data(), in.eof() ? count : count - 1);  // without the '\n'
+  return LineStatus::line;
+}
 
 glm::dvec2 point(const LineReader& reader, const std::vector<std::string_view>& words,
                  std::size_t first, int index) {
@@ -117,14 +139,24 @@ glm::dvec2 point(const LineReader& reader, const std::vector<std::string_view>& 
 
 }  // namespace
 
-Scene parse_scene(std::istream& in, std::string_view source_name) {
+Scene parse_scene(std::istream& in, std::string_view source_name, const SceneLimits& limits) {
   Scene scene;
   bool have_canvas = false;
-  std::string text;
-  int line_number = 0;
-  while (std::getline(in, text)) {
+  std::string buffer(limits.max_line_bytes + 1, '\0');
+  std::uint64_t line_number = 0;
+  std::string_view line;
+  while (true) {
+    const LineStatus status = read_line(in, buffer, line);
+    if (status == LineStatus::end) break;
     ++line_number;
-    std::string_view line(text);
+    if (status == LineStatus::too_long) {
+      LineReader(source_name, line_number)
+          .fail("line longer than " + std::to_string(limits.max_line_bytes) +
+                " bytes, the limit of a scene line");
+    }
+    if (line_number == 1 && line.starts_with(utf8_byte_order_mark)) {
+      line.remove_prefix(utf8_byte_order_mark.size());
+    }
     if (const auto hash = line.find('#'); hash != std::string_view::npos)
       line = line.substr(0, hash);
     const auto words = split_words(line);
@@ -141,6 +173,10 @@ Scene parse_scene(std::istream& in, std::string_view source_name) {
     } else if (directive == "tri" || directive == "line") {
       if (!have_canvas)
         reader.fail("'" + std::string(directive) + "' before the 'canvas' directive");
+      if (scene.primitives.size() == limits.max_primitives) {
+        reader.fail("more than " + std::to_string(limits.max_primitives) +
+                    " primitives, the limit of a scene");
+      }
       if (directive == "tri") {
         reader.expect_count(words, 7, "tri x0 y0 x1 y1 x2 y2 [r g b]");
         SceneTriangle t;
@@ -155,11 +191,15 @@ Scene parse_scene(std::istream& in, std::string_view source_name) {
         scene.primitives.emplace_back(l);
       }
     } else {
-      reader.fail("unknown directive '" + std::string(directive) +
+      reader.fail("unknown directive '" + printable_excerpt(directive) +
                   "' (expected canvas, tri or line)");
     }
   }
-  if (in.bad()) throw SceneError(std::string(source_name) + ": read error");
+  if (in.bad()) {
+    const int error = errno;
+    throw SceneError(std::string(source_name) + ": read error" +
+                     (error != 0 ? std::string(": ") + std::strerror(error) : std::string()));
+  }
   if (!have_canvas) {
     throw SceneError(std::string(source_name) + ": missing 'canvas W H' directive");
   }
@@ -167,8 +207,18 @@ Scene parse_scene(std::istream& in, std::string_view source_name) {
 }
 
 Scene load_scene(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  if (!in) throw SceneError(path.string() + ": cannot open the scene file");
+  // A folder opens as a stream on Linux and fails only when read: name the reason up front.
+  std::error_code ignored;
+  if (std::filesystem::is_directory(path, ignored)) {
+    throw SceneError(path.string() + ": cannot read the scene file: " + std::strerror(EISDIR));
+  }
+  errno = 0;
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    const int error = errno;
+    throw SceneError(path.string() + ": cannot open the scene file" +
+                     (error != 0 ? std::string(": ") + std::strerror(error) : std::string()));
+  }
   return parse_scene(in, path.string());
 }
 

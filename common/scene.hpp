@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <filesystem>
 #include <istream>
 #include <stdexcept>
@@ -21,6 +22,23 @@ namespace tri {
 /// Coordinates must lie within ±2^30 pixels: far enough to test huge triangles, small enough that
 /// fixed-point rasterizers can reason about their bit budgets.
 inline constexpr double max_scene_coordinate = 1073741824.0;
+
+/// The longest scene line, in bytes (without its end of line): a longer line is an error, so a
+/// stream without line breaks (/dev/zero, a corrupt file) is refused after reading this much.
+inline constexpr std::size_t max_scene_line_bytes = 64 * 1024;
+
+/// The most primitives (triangles and lines) a scene may have: about 128 MB of memory, and far
+/// more than any scene of the book. More is an error rather than an exhausted machine.
+inline constexpr std::size_t max_scene_primitives = 2'000'000;
+
+/// The limits a parse enforces; the defaults are the documented ones (tests use smaller ones).
+struct SceneLimits {
+  std::size_t max_line_bytes = max_scene_line_bytes;
+  std::size_t max_primitives = max_scene_primitives;
+};
+
+/// A UTF-8 byte order mark, accepted (and skipped) at the start of a scene.
+inline constexpr std::string_view utf8_byte_order_mark = "\xEF\xBB\xBF";
 
 /// A filled triangle of a scene; vertices in canvas pixel units (integers are pixel centres).
 struct SceneTriangle {
@@ -55,11 +73,13 @@ class SceneError : public std::runtime_error {
 ///   canvas W H [r g b]              (first directive, exactly once; 1 <= W, H <= 16384)
 ///   tri x0 y0 x1 y1 x2 y2 [r g b]   (decimal coordinates within ±2^30)
 ///   line x0 y0 x1 y1 [r g b]
-/// '#' starts a comment. Throws SceneError naming source_name and the line on the first problem,
-/// so no scene is ever returned half-read.
-Scene parse_scene(std::istream& in, std::string_view source_name);
+/// '#' starts a comment; a UTF-8 byte order mark may start the scene. Throws SceneError naming
+/// source_name and the line on the first problem, so no scene is ever returned half-read; lines
+/// longer than max_scene_line_bytes and scenes of more than max_scene_primitives are problems.
+/// Words of the scene appear in messages through printable_excerpt (short, escaped).
+Scene parse_scene(std::istream& in, std::string_view source_name, const SceneLimits& limits = {});
 
-/// Reads and parses a scene file (errors name the file).
+/// Reads and parses a scene file (errors name the file and the system's reason).
 Scene load_scene(const std::filesystem::path& path);
 
 }  // namespace tri

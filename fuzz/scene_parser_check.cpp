@@ -59,6 +59,16 @@ void check_error_message(const std::string& message, Findings& findings) {
   if (message.find('\n') != std::string::npos) {
     findings.push_back("SceneError message spans more than one line: " + message);
   }
+  // Scene words are shown as short escaped excerpts: no control byte, no runaway length.
+  for (const char c : message) {
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7F) {
+      findings.push_back("SceneError message has a raw control character: " + message);
+      break;
+    }
+  }
+  if (message.size() > 512) {
+    findings.push_back("SceneError message is longer than 512 bytes: " + message.substr(0, 512));
+  }
 }
 
 }  // namespace

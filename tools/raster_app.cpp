@@ -1,14 +1,21 @@
 #include "raster_app.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdint>
 #include <filesystem>
 #include <numeric>
-#include <optional>
 #include <string>
+
+#include <unistd.h>
+
+#include <iostream>
 
 #include "cli.hpp"
 #include "image_io.hpp"
+#include "output_files.hpp"
+#include "printable_text.hpp"
+#include "progress.hpp"
 #include "registry.hpp"
 #include "render_scene.hpp"
 
@@ -23,14 +30,21 @@ CommandLine raster_command_line() {
       "  raster --algo NAME --scene FILE [--out FILE.png] [--counts FILE.pgm]\n"
       "  raster --algo NAME --scene FILE --bench N\n"
       "Scene format: 'canvas W H [r g b]', 'tri x0 y0 x1 y1 x2 y2 [r g b]',\n"
-      "'line x0 y0 x1 y1 [r g b]', '#' comments; y is up, integers are pixel centres.",
+      "'line x0 y0 x1 y1 [r g b]', '#' comments; y is up, integers are pixel centres.\n"
+      "Limits: lines of at most 65536 bytes, at most 2000000 triangles and lines.\n"
+      "Outputs replace their files only when all were written; an output that is the scene,\n"
+      "two outputs naming one file, devices, FIFOs, read-only and hard-linked files are\n"
+      "refused; a symlinked output is written through to its file. '-' is standard output.\n"
+      "Work that runs for more than 2 s prints its progress on standard error.",
       {
           {"list", "", "print every algorithm: NAME, CHAPTER, RULE, summary (tab-separated)"},
           {"algo", "NAME", "the triangle algorithm to draw with (see --list)"},
           {"scene", "FILE", "the scene file to draw"},
-          {"out", "FILE.png", "write the picture as PNG"},
-          {"counts", "FILE.pgm", "write per-pixel write counts as binary PGM (saturating at 255)"},
+          {"out", "FILE.png", "write the picture as PNG ('-': standard output)"},
+          {"counts", "FILE.pgm",
+           "write per-pixel write counts as binary PGM, saturating at 255 ('-': standard output)"},
           {"bench", "N", "draw the scene N times after a warm-up and print the speed"},
+          {"force", "", "run a --bench estimated to take more than 10 minutes anyway"},
       });
 }
 
@@ -40,10 +54,13 @@ void print_list(const std::vector<TriangleAlgorithm>& algorithms, std::ostream& 
   }
 }
 
+// Roughly how long stb takes per pixel to encode a PNG (16384x16384 took 40-53 s).
+constexpr double png_seconds_per_pixel = 170e-9;
+
 // Draws the scene `frames` times after untimed frames and prints the line of docs/DESIGN.md
-// section 9.
+// section 9; refuses (unless forced) a run whose estimate from the warm-up is absurd.
 void benchmark(const Scene& scene, const TriangleAlgorithm* algorithm, long long frames,
-               std::ostream& out) {
+               bool forced, std::ostream& out, std::ostream& err) {
   // One counted frame tells how many pixels a frame writes; it doubles as the warm-up.
   Canvas counted = make_canvas(scene);
   counted.enable_write_counts();
@@ -53,9 +70,18 @@ void benchmark(const Scene& scene, const TriangleAlgorithm* algorithm, long long
       std::accumulate(counts.begin(), counts.end(), std::uint64_t{0});
 
   Canvas canvas = make_canvas(scene);
+  const auto warm_up = std::chrono::steady_clock::now();
   render_scene(scene, algorithm, canvas);
+  const double frame_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - warm_up).count();
+  refuse_absurd_run(frame_seconds * static_cast<double>(frames),
+                    "--bench " + std::to_string(frames), forced);
+  Progress progress("raster: --bench", static_cast<std::uint64_t>(frames), err);
   const auto start = std::chrono::steady_clock::now();
-  for (long long i = 0; i < frames; ++i) render_scene(scene, algorithm, canvas);
+  for (long long i = 0; i < frames; ++i) {
+    render_scene(scene, algorithm, canvas);
+    progress.advance(static_cast<std::uint64_t>(i + 1));
+  }
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const auto triangles = count_triangles(scene);
@@ -66,7 +92,7 @@ void benchmark(const Scene& scene, const TriangleAlgorithm* algorithm, long long
       << '\n';
 }
 
-int run(const CliArguments& args, std::ostream& out) {
+int run(const CliArguments& args, std::ostream& out, std::ostream& err) {
   const auto algorithms = registered_algorithms();
   if (args.has("list")) {
     if (args.has("algo") || args.has("scene") || args.has("out") || args.has("counts") ||
@@ -82,12 +108,27 @@ int run(const CliArguments& args, std::ostream& out) {
   if (const auto name = args.value("algo")) {
     algorithm = find_algorithm(algorithms, *name);
     if (algorithm == nullptr) {
-      throw UsageError("unknown algorithm '" + *name + "' (raster --list shows the names)");
+      throw UsageError("unknown algorithm '" + printable_excerpt(*name) +
+                       "' (raster --list shows the names)");
     }
   }
   const auto frames = args.integer("bench", 1, 1'000'000'000);
   if (frames && (args.has("out") || args.has("counts"))) {
     throw UsageError("--bench writes no image: drop --out and --counts");
+  }
+  if (args.has("force") && !frames) throw UsageError("--force goes with --bench");
+
+  // Every output is checked before any work, so a bad one costs nothing and destroys nothing.
+  std::vector<std::filesystem::path> outputs;
+  for (const char* option : {"out", "counts"}) {
+    if (const auto path = args.value(option)) outputs.emplace_back(*path);
+  }
+  const std::vector<std::filesystem::path> inputs{*scene_path};
+  check_outputs(outputs, inputs);
+  const bool to_standard_output =
+      std::find(outputs.begin(), outputs.end(), standard_output_name) != outputs.end();
+  if (to_standard_output && &out == &std::cout && ::isatty(STDOUT_FILENO) == 1) {
+    throw UsageError("'-' would write a binary image to the terminal; redirect standard output");
   }
 
   const Scene scene = load_scene(*scene_path);
@@ -95,36 +136,37 @@ int run(const CliArguments& args, std::ostream& out) {
     throw UsageError(*scene_path + " has triangles: choose an algorithm with --algo NAME");
   }
   if (frames) {
-    benchmark(scene, algorithm, *frames, out);
+    benchmark(scene, algorithm, *frames, args.has("force"), out, err);
     return 0;
   }
 
   Canvas canvas = make_canvas(scene);
   if (args.has("counts")) canvas.enable_write_counts();
-  const RenderStats stats = render_scene(scene, algorithm, canvas);
+  Progress drawing("raster: drawing", scene.primitives.size(), err);
+  const RenderStats stats =
+      render_scene(scene, algorithm, canvas, [&](std::size_t done) { drawing.advance(done); });
   if (stats.rejected_triangles > 0) {
     throw std::runtime_error(std::to_string(stats.rejected_triangles) +
                              " triangle(s) have non-finite or out-of-range vertices");
   }
-  // Encode everything before writing anything, and undo the first file if the second fails.
-  const auto png = args.has("out") ? encode_png(canvas) : std::vector<std::uint8_t>{};
-  const auto pgm = args.has("counts") ? encode_counts_pgm(canvas) : std::vector<std::uint8_t>{};
-  std::optional<std::filesystem::path> written;
-  try {
-    if (const auto path = args.value("out")) {
-      write_file_atomically(*path, png);
-      written = *path;
+  // Both outputs replace their files together, or neither does.
+  OutputTransaction files(&out);
+  if (const auto path = args.value("out")) {
+    const double pixels = static_cast<double>(canvas.width()) * canvas.height();
+    if (pixels * png_seconds_per_pixel > 2.0) {
+      err << "raster: encoding a " << canvas.width() << "x" << canvas.height() << " PNG, about "
+          << human_duration(pixels * png_seconds_per_pixel) << "\n";
     }
-    if (const auto path = args.value("counts")) write_file_atomically(*path, pgm);
-  } catch (...) {
-    std::error_code ignored;
-    if (written) std::filesystem::remove(*written, ignored);
-    throw;
+    files.stage(*path, encode_png(canvas));
   }
-  out << "drew " << stats.triangles << " triangle(s) and " << stats.lines << " line(s) on "
-      << scene.width << "x" << scene.height;
-  if (algorithm != nullptr) out << " with " << algorithm->name;
-  out << '\n';
+  if (const auto path = args.value("counts")) files.stage(*path, encode_counts_pgm(canvas));
+  files.commit();
+  // With an image on standard output, the summary goes with the other messages.
+  std::ostream& report = to_standard_output ? err : out;
+  report << "drew " << stats.triangles << " triangle(s) and " << stats.lines << " line(s) on "
+         << scene.width << "x" << scene.height;
+  if (algorithm != nullptr) report << " with " << algorithm->name;
+  report << '\n';
   return 0;
 }
 
@@ -132,7 +174,7 @@ int run(const CliArguments& args, std::ostream& out) {
 
 int run_raster(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
   return run_command_line(raster_command_line(), argc, argv, out, err,
-                          [&](const CliArguments& args) { return run(args, out); });
+                          [&](const CliArguments& args) { return run(args, out, err); });
 }
 
 }  // namespace tri

@@ -1,5 +1,6 @@
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -11,6 +12,8 @@
 #include "line_reference.hpp"
 #include "raster_app.hpp"
 #include "registry.hpp"
+#include "render_scene.hpp"
+#include "scene.hpp"
 
 namespace fs = std::filesystem;
 
@@ -206,4 +209,119 @@ TEST_CASE("raster --bench prints the one-line speed report") {
       "triangles=0 frames=5 seconds=[0-9.e+-]+ tris_per_s=[0-9.e+-]+ mpix_per_s=[0-9.e+-]+\n");
   CHECK(std::regex_match(run.out, format));
   CHECK(dir.file_count() == 1);
+}
+
+TEST_CASE("raster keeps the earlier picture when a later output fails") {
+  TempFolder dir;
+  const auto scene = dir.write("l.scene", "canvas 8 8\nline 0 0 7 7\n");
+  const auto previous = dir.write("prev.png", "the earlier picture");
+  fs::create_directory(dir / "somedir");
+  const Run run = raster({"--scene", scene.string(), "--out", previous.string(), "--counts",
+                          (dir / "somedir").string()});
+  CHECK(run.status == 1);
+  CHECK(is_one_line(run.err));
+  CHECK(run.err.find((dir / "somedir").string() + ": Is a directory") != std::string::npos);
+  CHECK(read_file(previous) == "the earlier picture");
+  CHECK(dir.file_count() == 3);  // the scene, prev.png, somedir: no temporary left
+}
+
+TEST_CASE("raster refuses its scene as an output before drawing, and the scene survives") {
+  TempFolder dir;
+  const std::string text = "canvas 8 8\nline 0 0 7 7\n";
+  const auto scene = dir.write("s.scene", text);
+  for (const char* option : {"--out", "--counts"}) {
+    const Run run = raster({"--scene", scene.string(), option, scene.string()});
+    CHECK(run.status == 2);
+    CHECK(run.err.find("is the input") != std::string::npos);
+    CHECK(read_file(scene) == text);
+  }
+  fs::create_hard_link(scene, dir / "alias.png");
+  const Run run = raster({"--scene", scene.string(), "--out", (dir / "alias.png").string()});
+  CHECK(run.status == 2);
+  CHECK(read_file(scene) == text);
+}
+
+TEST_CASE("raster refuses two outputs naming one file and empty output paths") {
+  TempFolder dir;
+  const auto scene = dir.write("s.scene", "canvas 8 8\n");
+  const auto same = (dir / "x").string();
+  Run run = raster({"--scene", scene.string(), "--out", same, "--counts", same});
+  CHECK(run.status == 2);
+  CHECK(run.err.find("two outputs name one file") != std::string::npos);
+  run = raster({"--scene", scene.string(), "--out", ""});
+  CHECK(run.status == 2);
+  CHECK(run.err.find("needs a non-empty value") != std::string::npos);
+  CHECK(dir.file_count() == 1);
+}
+
+TEST_CASE("raster refuses to replace a device and leaves it a device") {
+  TempFolder dir;
+  const auto scene = dir.write("s.scene", "canvas 8 8\n");
+  const Run run = raster({"--scene", scene.string(), "--out", "/dev/null"});
+  CHECK(run.status == 1);
+  CHECK(run.err.find("/dev/null: it is a character device") != std::string::npos);
+  CHECK(fs::is_character_file("/dev/null"));
+}
+
+TEST_CASE("raster --out - writes the PNG to standard output and the summary to errors") {
+  TempFolder dir;
+  const auto scene = dir.write("s.scene", "canvas 8 8\nline 0 0 7 7\n");
+  const Run run = raster({"--scene", scene.string(), "--out", "-"});
+  REQUIRE(run.status == 0);
+  CHECK(run.out.substr(1, 3) == "PNG");
+  CHECK(run.err == "drew 0 triangle(s) and 1 line(s) on 8x8\n");
+  CHECK_FALSE(fs::exists("-"));
+}
+
+TEST_CASE("raster --list into a full standard output fails with the system's reason") {
+  std::ofstream full("/dev/full");
+  const char* argv[] = {"raster", "--list"};
+  std::ostringstream err;
+  CHECK(tri::run_raster(2, argv, full, err) == 1);
+  CHECK(err.str().find("No space left on device") != std::string::npos);
+}
+
+TEST_CASE("raster names the system's reason for a scene it cannot open") {
+  TempFolder dir;
+  const Run missing = raster({"--scene", (dir / "none.scene").string()});
+  CHECK(missing.status == 1);
+  CHECK(missing.err.find("No such file or directory") != std::string::npos);
+  const Run folder = raster({"--scene", (dir / ".").string()});
+  CHECK(folder.status == 1);
+  CHECK(folder.err.find("Is a directory") != std::string::npos);
+}
+
+TEST_CASE("raster --bench refuses a count estimated beyond ten minutes unless forced") {
+  TempFolder dir;
+  const auto scene = dir.write("big.scene", "canvas 512 512\ntri -10 -10 600 -10 -10 600\n");
+  Run run = raster({"--algo", "edge_function", "--scene", scene.string(), "--bench", "1000000000"});
+  CHECK(run.status == 2);
+  CHECK(run.err.find("add --force to run it anyway") != std::string::npos);
+  CHECK(run.out.empty());
+  run = raster({"--algo", "edge_function", "--scene", scene.string(), "--force"});
+  CHECK(run.status == 2);
+  CHECK(run.err.find("--force goes with --bench") != std::string::npos);
+}
+
+TEST_CASE("raster draws the same picture with progress pieces as in one batch") {
+  std::string text = "canvas 64 48\n";
+  for (int i = 0; i < 300; ++i) {
+    text += "tri " + std::to_string(i % 50) + " 0 63 " + std::to_string(i % 40) + " 5 47 " +
+            std::to_string(i % 256) + " 7 9\n";
+    if (i % 17 == 0) text += "line 0 0 63 " + std::to_string(i % 48) + "\n";
+  }
+  std::istringstream in(text);
+  const tri::Scene scene = tri::parse_scene(in, "pieces");
+  for (const auto& algorithm : tri::registered_algorithms()) {
+    INFO(algorithm.name);
+    tri::Canvas whole = tri::make_canvas(scene), pieces = tri::make_canvas(scene);
+    tri::render_scene(scene, &algorithm, whole);
+    std::size_t reports = 0;
+    tri::render_scene(scene, &algorithm, pieces, [&](std::size_t) { ++reports; });
+    CHECK(reports > 0);
+    CHECK(std::equal(whole.pixels().begin(), whole.pixels().end(), pieces.pixels().begin(),
+                     [](tri::Color a, tri::Color b) {
+                       return a.r == b.r && a.g == b.g && a.b == b.b && a.a == b.a;
+                     }));
+  }
 }

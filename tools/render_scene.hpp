@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <vector>
 
 #include "canvas.hpp"
@@ -24,8 +25,10 @@ Canvas make_canvas(const Scene& scene);
 /// Draws every primitive in file order: runs of consecutive triangles with the algorithm (through
 /// draw_triangles, so non-finite input is refused and batch algorithms get whole runs), lines with
 /// chapter 01's Bresenham between the nearest pixel centres. The algorithm may be null when the
-/// scene has no triangles.
-RenderStats render_scene(const Scene& scene, const TriangleAlgorithm* algorithm, Canvas& canvas);
+/// scene has no triangles. With on_progress, runs are drawn in pieces sized to take about a tenth
+/// of a second, and on_progress hears how many primitives are done after each piece.
+RenderStats render_scene(const Scene& scene, const TriangleAlgorithm* algorithm, Canvas& canvas,
+                         const std::function<void(std::size_t done)>& on_progress = {});
 
 /// The scene's triangles in order, without its lines.
 std::vector<SceneTriangle> scene_triangles(const Scene& scene);

@@ -21,6 +21,8 @@
 #include "algorithms.hpp"
 #include "cli.hpp"
 #include "pixel_writers.hpp"
+#include "printable_text.hpp"
+#include "progress.hpp"
 #include "random.hpp"
 #include "registry.hpp"
 #include "scene_generators.hpp"
@@ -125,11 +127,15 @@ struct Measurable {
   std::vector<double> wall, cpu;  // seconds per call, one entry per round
 };
 
-// Enough calls for about 30 ms per timed run.
-int frames_for(const std::function<void()>& run) {
+// The wall time of one call.
+double seconds_of_one_call(const std::function<void()>& run) {
   const auto start = Clock::now();
   run();
-  const double once = std::chrono::duration<double>(Clock::now() - start).count();
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// Enough calls for about 30 ms per timed run, for a call that took `once` seconds.
+int frames_for(double once) {
   return std::clamp(static_cast<int>(0.03 / std::max(once, 1e-9)), 1, 100000);
 }
 
@@ -140,9 +146,10 @@ double median(std::vector<double> values) {
 
 // Times every measurable once per round, round after round, so that whatever else the machine
 // does slows them all alike; keeps each one's seconds per call by both clocks.
-void measure_in_rounds(std::vector<Measurable>& measurables, int rounds) {
+void measure_in_rounds(std::vector<Measurable>& measurables, int rounds, tri::Progress& progress) {
   for (Measurable& m : measurables) m.run();  // warm-up
   for (int r = 0; r < rounds; ++r) {
+    progress.advance(static_cast<std::uint64_t>(r));
     for (Measurable& m : measurables) {
       const auto start = Clock::now();
       const double cpu_start = thread_cpu_seconds();
@@ -262,7 +269,6 @@ void threaded_probe(const BenchScene& scene, Canvas& canvas, int rounds, std::os
 
 int run(const tri::CliArguments& args, std::ostream& out) {
   const int repeats = static_cast<int>(args.integer("repeats", 1, 1000).value_or(7));
-  const std::string only = args.value_or("algos", "");
   const std::string scene_filter = args.value_or("scene", "");
   const auto frames = args.integer("frames", 1, 1000000);
   std::vector<TriangleAlgorithm> algorithms;
@@ -272,15 +278,25 @@ int run(const tri::CliArguments& args, std::ostream& out) {
   for (const auto& a : tri::ch08::triangle_algorithms()) {
     if (tri::find_algorithm(algorithms, a.name) == nullptr) algorithms.push_back(a);
   }
+  // Names and scenes are checked before anything is measured: a typo is an error, not a table
+  // without rows.
+  std::vector<std::string> names;
+  for (const auto& a : algorithms) names.emplace_back(a.name);
+  if (const auto list = args.value("algos")) names = tri::parse_name_list("algos", *list, names);
+  const std::vector<BenchScene> scenes = bench_scenes();
+  if (std::none_of(scenes.begin(), scenes.end(), [&](const BenchScene& scene) {
+        return scene.name.find(scene_filter) != std::string::npos;
+      })) {
+    std::string choices;
+    for (const auto& scene : scenes) choices += (choices.empty() ? "" : "; ") + scene.name;
+    throw tri::UsageError("--scene '" + tri::printable_excerpt(scene_filter) +
+                          "' matches no scene (the scenes: " + choices + ")");
+  }
   Canvas canvas(canvas_side, canvas_side);
   const double pixels_per_canvas = canvas_side * canvas_side;
   const std::array<std::uint32_t, 8> words{};
-  if (!args.has("probes")) {
-    out << "| scene | algorithm | Mtriangles/s | Mpixels/s | % of std::fill "
-           "| x barycentric_double | Mtriangles/s, wall clock |\n"
-           "|---|---|---:|---:|---:|---:|---:|\n";
-  }
-  for (const BenchScene& scene : bench_scenes()) {
+  bool header_written = false;  // written with the first rows, so a refused run prints no table
+  for (const BenchScene& scene : scenes) {
     if (args.has("probes") || scene.name.find(scene_filter) == std::string::npos) continue;
     // The two ceilings, timed in the same rounds: std::fill over the canvas's Color pixels (what
     // Canvas::clear does, and what the targets name) and fill_pixels over the same memory.
@@ -292,17 +308,29 @@ int run(const tri::CliArguments& args, std::ostream& out) {
     });
     std::vector<const TriangleAlgorithm*> timed;
     for (const TriangleAlgorithm& algorithm : algorithms) {
-      if (!only.empty() &&
-          ("," + only + ",").find("," + std::string(algorithm.name) + ",") == std::string::npos) {
-        continue;
-      }
+      if (std::find(names.begin(), names.end(), algorithm.name) == names.end()) continue;
       timed.push_back(&algorithm);
       measurables.emplace_back(
           std::string(algorithm.name),
           [&, a = &algorithm] { timed_draw(*a, canvas, scene.triangles); }, algorithm.threaded);
     }
-    for (Measurable& m : measurables) m.frames = frames ? *frames : frames_for(m.run);
-    measure_in_rounds(measurables, repeats);
+    // One call each tells how long the rounds will take: an absurd estimate is refused.
+    double estimate = 0;
+    for (Measurable& m : measurables) {
+      const double once = seconds_of_one_call(m.run);
+      m.frames = frames ? static_cast<int>(*frames) : frames_for(once);
+      estimate += once * m.frames * (repeats + 1);
+    }
+    tri::refuse_absurd_run(estimate, "the " + scene.name + " scene", args.has("force"));
+    tri::Progress progress("08_fast_exact_bench: " + scene.name,
+                           static_cast<std::uint64_t>(repeats), std::cerr);
+    measure_in_rounds(measurables, repeats, progress);
+    if (!header_written) {
+      out << "| scene | algorithm | Mtriangles/s | Mpixels/s | % of std::fill "
+             "| x barycentric_double | Mtriangles/s, wall clock |\n"
+             "|---|---|---:|---:|---:|---:|---:|\n";
+      header_written = true;
+    }
     const double std_fill_rate = pixels_per_canvas / median(measurables[0].cpu) / 1e6;
     const double wide_fill_rate = pixels_per_canvas / median(measurables[1].cpu) / 1e6;
     out << "| " << scene.name << " | (std::fill; fill_pixels) | | " << std::fixed
@@ -332,7 +360,7 @@ int run(const tri::CliArguments& args, std::ostream& out) {
         << "x the speed of one thread (wall clock)\n";
     out << "Two threads sharing integer arithmetic: " << two_thread_arithmetic_speedup(repeats)
         << "x the speed of one thread (wall clock)\n";
-    threaded_probe(bench_scenes().front(), canvas, repeats, out);
+    threaded_probe(scenes.front(), canvas, repeats, out);
   }
   return 0;
 }
@@ -349,7 +377,8 @@ int main(int argc, char** argv) {
        {"algos", "A,B", "only these algorithms (comma-separated names)"},
        {"scene", "TEXT", "only the scenes whose name contains TEXT (e.g. tiny, mesh)"},
        {"frames", "N", "draw each scene N times per timed run (default: about 30 ms worth)"},
-       {"probes", "", "only the two-thread probes: filling the canvas, and integer arithmetic"}});
+       {"probes", "", "only the two-thread probes: filling the canvas, and integer arithmetic"},
+       {"force", "", "measure even when the estimated time exceeds 10 minutes"}});
   return tri::run_command_line(command_line, argc, argv, std::cout, std::cerr,
                                [&](const tri::CliArguments& args) { return run(args, std::cout); });
 }

@@ -1,15 +1,16 @@
 // Chapter 09's report: every registered algorithm on the same scene suites, timed and compared
 // with the exact oracle; writes 09_report.csv, 09_report.md and 09_speed_vs_error.svg.
 #include <algorithm>
+#include <filesystem>
 #include <iostream>
-#include <sstream>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "cli.hpp"
 #include "external_peers.hpp"
-#include "figures.hpp"
 #include "measure.hpp"
+#include "output_files.hpp"
 #include "registry.hpp"
 #include "report.hpp"
 #include "suites.hpp"
@@ -22,29 +23,30 @@ struct Selection {
   std::vector<tri::ch09::ExternalPeer> peers;
 };
 
-// The algorithms and peers named in a comma-separated list (all of them for an empty list).
-Selection selected(const std::string& names) {
+// The algorithms and peers named in a comma-separated list (all of them without --only).
+Selection selected(const std::optional<std::string>& names) {
   Selection all{tri::registered_algorithms(), tri::ch09::external_peers()};
-  if (names.empty()) return all;
+  if (!names) return all;
+  std::vector<std::string> valid;
+  for (const auto& a : all.algorithms) valid.emplace_back(a.name);
+  for (const auto& p : all.peers) valid.push_back(p.name);
+  std::vector<std::string> chosen_names;
+  try {
+    chosen_names = tri::parse_name_list("only", *names, valid);
+  } catch (const tri::UsageError& e) {
+    if (!all.peers.empty()) throw;
+    throw tri::UsageError(std::string(e.what()) +
+                          "; external peers: " + tri::ch09::external_peer_status({}));
+  }
   Selection chosen;
-  std::istringstream list(names);
-  std::string name;
-  while (std::getline(list, name, ',')) {
+  for (const std::string& name : chosen_names) {
     if (const tri::TriangleAlgorithm* algorithm = tri::find_algorithm(all.algorithms, name)) {
       chosen.algorithms.push_back(*algorithm);
-      continue;
+    } else {
+      chosen.peers.push_back(
+          *std::find_if(all.peers.begin(), all.peers.end(),
+                        [&](const tri::ch09::ExternalPeer& p) { return p.name == name; }));
     }
-    const auto peer =
-        std::find_if(all.peers.begin(), all.peers.end(),
-                     [&](const tri::ch09::ExternalPeer& p) { return p.name == name; });
-    if (peer == all.peers.end()) {
-      std::string peers;
-      for (const auto& p : all.peers) peers += (peers.empty() ? "" : ", ") + p.name;
-      throw tri::UsageError("no registered algorithm is named '" + name +
-                            "' (see raster --list); external peers: " +
-                            (peers.empty() ? tri::ch09::external_peer_status({}) : peers));
-    }
-    chosen.peers.push_back(*peer);
   }
   return chosen;
 }
@@ -67,7 +69,11 @@ int main(int argc, char** argv) {
       command_line, argc, argv, std::cout, std::cerr, [](const tri::CliArguments& args) {
         const auto size =
             args.has("full") ? tri::ch09::SuiteSize::full : tri::ch09::SuiteSize::quick;
-        const Selection selection = selected(args.value_or("only", ""));
+        const Selection selection = selected(args.value("only"));
+        // The report's folder and files are checked before minutes of measuring, not after.
+        const std::filesystem::path folder = args.value_or("out", "out");
+        tri::check_output_folder(folder);
+        tri::check_outputs(tri::ch09::report_paths(folder));
         const tri::ch09::BenchSettings settings = tri::ch09::bench_settings(size);
         std::cout << "09_speed_vs_error: " << selection.algorithms.size() << " algorithms and "
                   << selection.peers.size() << " external peers x " << settings.scenes.size()
@@ -75,8 +81,7 @@ int main(int argc, char** argv) {
         const tri::ch09::BenchReport report =
             tri::ch09::run_benchmark(selection.algorithms, selection.peers, settings,
                                      tri::ch09::describe_machine(selection.peers), std::cout);
-        tri::FigureWriter figures(args.value_or("out", "out"), std::cout);
-        tri::ch09::save_report(figures, report);
+        tri::ch09::save_report(folder, report, std::cout);
         return 0;
       });
 }

@@ -1,5 +1,6 @@
 #include "report.hpp"
 
+#include "output_files.hpp"
 #include "plot_svg.hpp"
 #include "report_csv.hpp"
 #include "report_markdown.hpp"
@@ -12,11 +13,20 @@ ReportFiles render_report(const BenchReport& report) {
   return {to_csv(report.rows), to_markdown(report, summaries), to_svg(report, summaries)};
 }
 
-void save_report(FigureWriter& figures, const BenchReport& report) {
+std::vector<std::filesystem::path> report_paths(const std::filesystem::path& folder) {
+  return {folder / csv_file_name, folder / markdown_file_name, folder / svg_file_name};
+}
+
+void save_report(const std::filesystem::path& folder, const BenchReport& report,
+                 std::ostream& log) {
   const ReportFiles files = render_report(report);
-  figures.save_text(csv_file_name, files.csv);
-  figures.save_text(markdown_file_name, files.markdown);
-  figures.save_text(svg_file_name, files.svg);
+  const auto paths = report_paths(folder);
+  OutputTransaction set;
+  set.stage(paths[0], bytes_of_text(files.csv));
+  set.stage(paths[1], bytes_of_text(files.markdown));
+  set.stage(paths[2], bytes_of_text(files.svg));
+  set.commit();
+  for (const auto& path : paths) log << "wrote " << path.string() << "\n";
 }
 
 }  // namespace tri::ch09

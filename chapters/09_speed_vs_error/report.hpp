@@ -2,9 +2,11 @@
 /// The three files of a run, rendered from one BenchReport and saved side by side.
 #pragma once
 
+#include <filesystem>
+#include <ostream>
 #include <string>
+#include <vector>
 
-#include "figures.hpp"
 #include "measure.hpp"
 
 namespace tri::ch09 {
@@ -24,7 +26,11 @@ struct ReportFiles {
 /// Summarizes the report and renders the CSV, the Markdown table and the plot.
 ReportFiles render_report(const BenchReport& report);
 
-/// Writes the three files through the figure writer (which logs each path).
-void save_report(FigureWriter& figures, const BenchReport& report);
+/// The paths of the three files in folder, to check before measuring.
+std::vector<std::filesystem::path> report_paths(const std::filesystem::path& folder);
+
+/// Writes the three files into folder as one set (all replaced, or none when one fails) and logs
+/// each path.
+void save_report(const std::filesystem::path& folder, const BenchReport& report, std::ostream& log);
 
 }  // namespace tri::ch09

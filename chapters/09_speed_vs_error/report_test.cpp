@@ -294,8 +294,7 @@ TEST_CASE("save_report writes the three files the run rendered", "[report]") {
   const auto folder = std::filesystem::temp_directory_path() / "tri_ch09_report_test";
   std::filesystem::remove_all(folder);
   std::ostringstream log;
-  tri::FigureWriter figures(folder, log);
-  tri::ch09::save_report(figures, tiny_run().report);
+  tri::ch09::save_report(folder, tiny_run().report, log);
   const auto read = [&](const char* name) {
     std::ifstream in(folder / name, std::ios::binary);
     return std::string(std::istreambuf_iterator<char>(in), {});
@@ -304,6 +303,23 @@ TEST_CASE("save_report writes the three files the run rendered", "[report]") {
   CHECK(read(tri::ch09::markdown_file_name) == tiny_run().files.markdown);
   CHECK(read(tri::ch09::svg_file_name) == tiny_run().files.svg);
   CHECK(lines_of(log.str()).size() == 3);
+  std::filesystem::remove_all(folder);
+}
+
+TEST_CASE("save_report writes the set whole or not at all: a failing file keeps the earlier set",
+          "[report]") {
+  const auto folder = std::filesystem::temp_directory_path() / "tri_ch09_report_set_test";
+  std::filesystem::remove_all(folder);
+  std::filesystem::create_directories(folder / tri::ch09::svg_file_name);  // cannot be replaced
+  std::ofstream(folder / tri::ch09::csv_file_name) << "earlier csv";
+  std::ostringstream log;
+  CHECK_THROWS_WITH(tri::ch09::save_report(folder, tiny_run().report, log),
+                    Catch::Contains("Is a directory"));
+  std::ifstream csv(folder / tri::ch09::csv_file_name);
+  CHECK(std::string(std::istreambuf_iterator<char>(csv), {}) == "earlier csv");
+  CHECK_FALSE(std::filesystem::exists(folder / tri::ch09::markdown_file_name));
+  CHECK(std::distance(std::filesystem::directory_iterator(folder), {}) == 2);
+  CHECK(log.str().empty());
   std::filesystem::remove_all(folder);
 }
 

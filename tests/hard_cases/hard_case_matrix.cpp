@@ -1,29 +1,23 @@
 // Writes the hard-case matrix: CSV (the expected file the tests compare with) and the docs
 // site's hard-case page, a Markdown file with one SVG diagram per case next to it.
+#include <filesystem>
 #include <iostream>
+#include <string>
+#include <vector>
 
 #include "cli.hpp"
 #include "figures.hpp"
 #include "hard_case_diagram.hpp"
 #include "hard_case_page.hpp"
 #include "hard_cases.hpp"
-#include "image_io.hpp"
+#include "output_files.hpp"
 #include "registry.hpp"
-
-namespace {
-
-void write_text(const std::string& path, const std::string& text) {
-  const auto* bytes = reinterpret_cast<const std::uint8_t*>(text.data());
-  tri::write_file_atomically(path, std::span<const std::uint8_t>(bytes, text.size()));
-  std::cout << "wrote " << path << "\n";
-}
-
-}  // namespace
 
 int main(int argc, char** argv) {
   const tri::CommandLine command_line(
       "hard_case_matrix",
-      "Runs every registered algorithm on every hard case (docs/DESIGN.md section 7) against the exact\n"
+      "Runs every registered algorithm on every hard case (docs/DESIGN.md section 7) against the "
+      "exact\n"
       "oracle and writes the matrix: --out DIR writes DIR/hard_cases.md for the docs site and\n"
       "its diagrams DIR/hard_case_NAME.svg,\n"
       "--csv FILE the numbers the tests pin (tests/hard_cases_expected.csv).",
@@ -34,18 +28,34 @@ int main(int argc, char** argv) {
         if (!args.has("out") && !args.has("csv")) {
           throw tri::UsageError("give --out DIR, --csv FILE or both");
         }
+        // Every output is checked before the run and all are replaced together after it.
         const auto cases = tri::hard_cases::all_cases();
-        const auto outcomes = tri::hard_cases::run_all(tri::registered_algorithms());
+        std::vector<std::filesystem::path> outputs;
         if (const auto dir = args.value("out")) {
-          tri::FigureWriter figures(*dir, std::cout);
+          tri::check_output_folder(*dir);
+          outputs.push_back(std::filesystem::path(*dir) / "hard_cases.md");
           for (const auto& c : cases) {
-            figures.save_svg(tri::hard_cases::diagram_name(c), tri::hard_cases::diagram_svg(c));
+            outputs.push_back(std::filesystem::path(*dir) /
+                              (tri::hard_cases::diagram_name(c) + ".svg"));
           }
-          figures.save_text("hard_cases.md", tri::hard_cases::to_markdown(outcomes, cases));
         }
-        if (const auto csv = args.value("csv")) {
-          write_text(*csv, tri::hard_cases::to_csv(outcomes));
+        if (const auto csv = args.value("csv")) outputs.emplace_back(*csv);
+        tri::check_outputs(outputs);
+        const auto outcomes = tri::hard_cases::run_all(tri::registered_algorithms());
+        tri::OutputTransaction files;
+        std::size_t next = 0;
+        if (args.has("out")) {
+          files.stage(outputs[next++],
+                      tri::bytes_of_text(tri::hard_cases::to_markdown(outcomes, cases)));
+          for (const auto& c : cases) {
+            files.stage(outputs[next++], tri::bytes_of_text(tri::hard_cases::diagram_svg(c)));
+          }
         }
+        if (args.has("csv")) {
+          files.stage(outputs[next++], tri::bytes_of_text(tri::hard_cases::to_csv(outcomes)));
+        }
+        files.commit();
+        for (const auto& path : outputs) std::cout << "wrote " << path.string() << "\n";
         return 0;
       });
 }

@@ -1,0 +1,268 @@
+#include "output_files.hpp"
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cli.hpp"
+
+namespace tri {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path fresh_folder(const std::string& name) {
+  const fs::path folder = fs::current_path() / "output_files_test_output" / name;
+  fs::remove_all(folder);
+  fs::create_directories(folder);
+  return folder;
+}
+
+void put(const fs::path& path, const std::string& text) {
+  std::ofstream(path, std::ios::binary) << text;
+}
+
+std::string read(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+std::vector<std::string> names_in(const fs::path& folder) {
+  std::vector<std::string> names;
+  for (const auto& entry : fs::directory_iterator(folder)) {
+    names.push_back(entry.path().filename().string());
+  }
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+bool running_as_root() {
+  return ::geteuid() == 0;
+}
+
+}  // namespace
+
+TEST_CASE("A failing second output leaves the first output's earlier file exactly as it was",
+          "[output_files]") {
+  const fs::path folder = fresh_folder("second_fails");
+  put(folder / "picture.png", "the earlier picture");
+  fs::create_directory(folder / "counts.pgm");  // a folder: this output cannot be written
+  {
+    OutputTransaction outputs;
+    outputs.stage(folder / "picture.png", bytes_of_text("the new picture"));
+    CHECK_THROWS_WITH(outputs.stage(folder / "counts.pgm", bytes_of_text("counts")),
+                      Catch::Contains((folder / "counts.pgm").string()) &&
+                          Catch::Contains("Is a directory"));
+  }
+  CHECK(read(folder / "picture.png") == "the earlier picture");
+  CHECK(names_in(folder) == std::vector<std::string>{"counts.pgm", "picture.png"});
+}
+
+TEST_CASE("Staged outputs replace nothing and leave nothing behind until they are committed",
+          "[output_files]") {
+  const fs::path folder = fresh_folder("uncommitted");
+  put(folder / "a.txt", "old a");
+  {
+    OutputTransaction outputs;
+    outputs.stage(folder / "a.txt", bytes_of_text("new a"));
+    outputs.stage(folder / "b.txt", bytes_of_text("new b"));
+    CHECK(read(folder / "a.txt") == "old a");
+    CHECK_FALSE(fs::exists(folder / "b.txt"));
+  }
+  CHECK(names_in(folder) == std::vector<std::string>{"a.txt"});
+  {
+    OutputTransaction outputs;
+    outputs.stage(folder / "a.txt", bytes_of_text("new a"));
+    outputs.stage(folder / "b.txt", bytes_of_text("new b"));
+    outputs.commit();
+  }
+  CHECK(read(folder / "a.txt") == "new a");
+  CHECK(read(folder / "b.txt") == "new b");
+  CHECK(names_in(folder) == std::vector<std::string>{"a.txt", "b.txt"});
+}
+
+TEST_CASE("The temporary is a new regular file named .NAME.XXXXXX.tmp beside the output",
+          "[output_files]") {
+  const fs::path folder = fresh_folder("temporary_name");
+  OutputTransaction outputs;
+  outputs.stage(folder / "render.png", bytes_of_text("png"));
+  const auto names = names_in(folder);
+  REQUIRE(names.size() == 1);
+  CHECK(std::regex_match(names[0], std::regex(R"(\.render\.png\.[A-Za-z0-9]{6}\.tmp)")));
+  CHECK(fs::is_regular_file(fs::symlink_status(folder / names[0])));
+  CHECK(read(folder / names[0]) == "png");
+}
+
+TEST_CASE("Symlinks planted at temporary-looking names beside the output are not followed",
+          "[output_files][links]") {
+  const fs::path folder = fresh_folder("planted_links");
+  put(folder / "victim", "precious");
+  for (const char* name : {"render.png.tmp", ".render.png.tmp", ".render.png.tmp.tmp"}) {
+    fs::create_symlink(folder / "victim", folder / name);
+  }
+  write_file_safely(folder / "render.png", bytes_of_text("png"));
+  CHECK(read(folder / "victim") == "precious");
+  CHECK(read(folder / "render.png") == "png");
+  CHECK(fs::is_symlink(folder / "render.png.tmp"));
+  CHECK(fs::is_symlink(folder / ".render.png.tmp"));
+  CHECK(names_in(folder).size() == 5);  // victim, three links, render.png: no temporary left
+}
+
+TEST_CASE("A symlinked output is written through: the link stays, its file gets the new bytes",
+          "[output_files][links]") {
+  const fs::path folder = fresh_folder("write_through");
+  fs::create_directory(folder / "real");
+  put(folder / "real" / "picture.png", "old");
+  fs::create_symlink("real/picture.png", folder / "link.png");
+  write_file_safely(folder / "link.png", bytes_of_text("new"));
+  CHECK(fs::is_symlink(folder / "link.png"));
+  CHECK(read(folder / "real" / "picture.png") == "new");
+  CHECK(names_in(folder / "real") == std::vector<std::string>{"picture.png"});
+}
+
+TEST_CASE("An output with several hard links is refused and every link keeps its content",
+          "[output_files][links]") {
+  const fs::path folder = fresh_folder("hard_links");
+  put(folder / "a.png", "shared");
+  fs::create_hard_link(folder / "a.png", folder / "b.png");
+  CHECK_THROWS_WITH(write_file_safely(folder / "a.png", bytes_of_text("new")),
+                    Catch::Contains("hard links"));
+  CHECK(read(folder / "a.png") == "shared");
+  CHECK(fs::hard_link_count(folder / "b.png") == 2);
+}
+
+TEST_CASE("An output that is an input is refused, also through a hard link or a symlink",
+          "[output_files][identity]") {
+  const fs::path folder = fresh_folder("input_as_output");
+  put(folder / "s.scene", "canvas 4 4\n");
+  fs::create_hard_link(folder / "s.scene", folder / "hard.scene");
+  fs::create_symlink(folder / "s.scene", folder / "soft.scene");
+  const std::vector<fs::path> inputs{folder / "s.scene"};
+  for (const char* name : {"s.scene", "hard.scene", "soft.scene"}) {
+    const std::vector<fs::path> outputs{folder / name};
+    CHECK_THROWS_AS(check_outputs(outputs, inputs), UsageError);
+    CHECK_THROWS_WITH(check_outputs(outputs, inputs), Catch::Contains("is the input"));
+  }
+  CHECK(read(folder / "s.scene") == "canvas 4 4\n");
+  const std::vector<fs::path> other{folder / "picture.png"};
+  CHECK_NOTHROW(check_outputs(other, inputs));
+}
+
+TEST_CASE("Two outputs naming one file are refused, whether it exists or not",
+          "[output_files][identity]") {
+  const fs::path folder = fresh_folder("same_file");
+  const std::vector<fs::path> new_file{folder / "x.png", folder / "." / "x.png"};
+  CHECK_THROWS_WITH(check_outputs(new_file), Catch::Contains("two outputs name one file"));
+  put(folder / "y.png", "old");
+  fs::create_symlink("y.png", folder / "alias.png");
+  const std::vector<fs::path> linked{folder / "y.png", folder / "alias.png"};
+  CHECK_THROWS_AS(check_outputs(linked), UsageError);
+  const std::vector<fs::path> twice_standard_output{"-", "-"};
+  CHECK_THROWS_AS(check_outputs(twice_standard_output), UsageError);
+  const std::vector<fs::path> distinct{folder / "x.png", folder / "y.png", "-"};
+  CHECK_NOTHROW(check_outputs(distinct));
+}
+
+TEST_CASE("An empty output path is refused as a usage error", "[output_files]") {
+  const std::vector<fs::path> outputs{""};
+  CHECK_THROWS_AS(check_outputs(outputs), UsageError);
+  CHECK_THROWS_AS(write_file_safely("", bytes_of_text("x")), OutputError);
+  CHECK_THROWS_AS(check_output_folder(""), UsageError);
+}
+
+TEST_CASE("A device or a FIFO as output is refused with a reason and never replaced",
+          "[output_files][special]") {
+  const std::vector<fs::path> device{"/dev/null"};
+  CHECK_THROWS_WITH(check_outputs(device), Catch::Contains("character device"));
+  CHECK_THROWS_WITH(write_file_safely("/dev/null", bytes_of_text("x")),
+                    Catch::Contains("/dev/null") && Catch::Contains("never replaced"));
+  CHECK(fs::is_character_file("/dev/null"));
+
+  const fs::path folder = fresh_folder("fifo");
+  REQUIRE(::mkfifo((folder / "pipe").c_str(), 0666) == 0);
+  CHECK_THROWS_WITH(write_file_safely(folder / "pipe", bytes_of_text("x")),
+                    Catch::Contains("FIFO"));
+  CHECK(fs::is_fifo(folder / "pipe"));
+  CHECK(names_in(folder) == std::vector<std::string>{"pipe"});
+}
+
+TEST_CASE("A read-only existing output is refused with Permission denied and kept",
+          "[output_files][permissions]") {
+  if (running_as_root()) {
+    WARN("skipped: root may write any file, so a read-only file is no obstacle to root");
+    SUCCEED();
+    return;
+  }
+  const fs::path folder = fresh_folder("read_only");
+  put(folder / "keep.png", "keep me");
+  fs::permissions(folder / "keep.png", fs::perms::owner_read | fs::perms::group_read);
+  const std::vector<fs::path> outputs{folder / "keep.png"};
+  CHECK_THROWS_WITH(check_outputs(outputs), Catch::Contains("Permission denied"));
+  CHECK_THROWS_WITH(write_file_safely(folder / "keep.png", bytes_of_text("x")),
+                    Catch::Contains("Permission denied"));
+  CHECK(read(folder / "keep.png") == "keep me");
+  fs::permissions(folder / "keep.png", fs::perms::owner_all);
+}
+
+TEST_CASE("A new output gets mode 0666 less the umask, a replaced one keeps its mode",
+          "[output_files]") {
+  const fs::path folder = fresh_folder("modes");
+  const mode_t previous = ::umask(022);
+  write_file_safely(folder / "new.txt", bytes_of_text("x"));
+  ::umask(previous);
+  struct stat info {};
+  REQUIRE(::stat((folder / "new.txt").c_str(), &info) == 0);
+  CHECK((info.st_mode & 0777) == 0644);
+
+  put(folder / "script.sh", "old");
+  fs::permissions(folder / "script.sh", static_cast<fs::perms>(0750));
+  write_file_safely(folder / "script.sh", bytes_of_text("new"));
+  REQUIRE(::stat((folder / "script.sh").c_str(), &info) == 0);
+  CHECK((info.st_mode & 0777) == 0750);
+}
+
+TEST_CASE("An output name of 255 characters is written, its temporary name is shortened",
+          "[output_files]") {
+  const fs::path folder = fresh_folder("long_name");
+  const std::string name(255, 'n');
+  write_file_safely(folder / name, bytes_of_text("long"));
+  CHECK(read(folder / name) == "long");
+  CHECK(names_in(folder) == std::vector<std::string>{name});
+}
+
+TEST_CASE("An output below a regular file fails, names the system's reason and writes nothing",
+          "[output_files]") {
+  const fs::path folder = fresh_folder("below_file");
+  put(folder / "blocker", "a file");
+  const std::vector<fs::path> outputs{folder / "blocker" / "sub" / "x.png"};
+  CHECK_THROWS_WITH(check_outputs(outputs), Catch::Contains("Not a directory"));
+  CHECK_THROWS_WITH(check_output_folder(folder / "blocker"), Catch::Contains("is not a folder"));
+  CHECK_NOTHROW(check_output_folder(folder / "new" / "folder"));
+  CHECK_FALSE(fs::exists(folder / "new"));  // checking creates nothing
+  CHECK(names_in(folder) == std::vector<std::string>{"blocker"});
+}
+
+TEST_CASE("The output - goes to the given standard output, and is refused without one",
+          "[output_files][standard_output]") {
+  std::ostringstream standard_output;
+  {
+    OutputTransaction outputs(&standard_output);
+    outputs.stage("-", bytes_of_text("bytes"));
+    CHECK(standard_output.str().empty());
+    outputs.commit();
+  }
+  CHECK(standard_output.str() == "bytes");
+  CHECK_THROWS_AS(write_file_safely("-", bytes_of_text("x")), OutputError);
+  CHECK_FALSE(fs::exists("-"));
+}
+
+}  // namespace tri

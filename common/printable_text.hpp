@@ -1,0 +1,20 @@
+/// @file
+/// Showing untrusted text (a word from a scene file, a name from the command line) in a message:
+/// short, on one line, and harmless to a terminal.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <string_view>
+
+namespace tri {
+
+/// How many characters of an untrusted word a message shows at most.
+inline constexpr std::size_t max_excerpt_characters = 32;
+
+/// The text with control characters (C0, DEL, C1), invisible ones (zero-width, bidirectional
+/// controls, byte order mark) and bytes that are not valid UTF-8 written as \xNN, other UTF-8 kept;
+/// cut after max_excerpt_characters with "...(N bytes)" saying how long it was.
+std::string printable_excerpt(std::string_view text);
+
+}  // namespace tri
