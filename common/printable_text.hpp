@@ -13,8 +13,8 @@ namespace tri {
 inline constexpr std::size_t max_excerpt_characters = 32;
 
 /// The text with control characters (C0, DEL, C1), invisible ones (zero-width, bidirectional
-/// controls, byte order mark) and bytes that are not valid UTF-8 written as \xNN, other UTF-8 kept;
-/// cut after max_excerpt_characters with "...(N bytes)" saying how long it was.
+/// controls, byte order mark) and bytes that are not valid UTF-8 written as `\xNN`, other UTF-8
+/// kept; cut after max_excerpt_characters with "...(N bytes)" saying how long it was.
 std::string printable_excerpt(std::string_view text);
 
 }  // namespace tri
