@@ -225,8 +225,14 @@ std::optional<std::array<glm::dvec2, 2>> clip_segment(glm::dvec2 a, glm::dvec2 b
   return std::array<glm::dvec2, 2>{a + t0 * d, a + t1 * d};
 }
 
+std::optional<std::array<glm::dvec2, 2>> clip_to_pixels(glm::dvec2 a, glm::dvec2 b,
+                                                        glm::ivec2 first,
+                                                        glm::ivec2 last) noexcept {
+  return clip_segment(a, b, glm::dvec2(first) - 0.5, glm::dvec2(last) + 0.5);
+}
+
 void PixelDiagram::line(glm::dvec2 a, glm::dvec2 b, Color color, double width, bool dashed) {
-  const auto visible = clip_segment(a, b, glm::dvec2(first_) - 0.5, glm::dvec2(last_) + 0.5);
+  const auto visible = clip_to_pixels(a, b, first_, last_);
   if (!visible) return;
   geometry_ += line_element(to_svg((*visible)[0]), to_svg((*visible)[1]), color, width, dashed);
 }

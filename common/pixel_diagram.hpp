@@ -147,6 +147,11 @@ class PixelDiagram {
 std::optional<std::array<glm::dvec2, 2>> clip_segment(glm::dvec2 a, glm::dvec2 b, glm::dvec2 lo,
                                                       glm::dvec2 hi) noexcept;
 
+/// The part of segment ab over the squares of pixels first..last, i.e. inside the box
+/// [first - 1/2, last + 1/2]: what a diagram of those pixels shows of it.
+std::optional<std::array<glm::dvec2, 2>> clip_to_pixels(glm::dvec2 a, glm::dvec2 b,
+                                                        glm::ivec2 first, glm::ivec2 last) noexcept;
+
 /// Several diagrams side by side in one SVG document, top-aligned, with one title above them.
 std::string side_by_side(std::span<const PixelDiagram> panels, const std::string& title);
 

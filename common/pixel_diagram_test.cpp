@@ -152,3 +152,17 @@ TEST_CASE("clip_segment keeps the part of a segment inside a box", "[pixel_diagr
   REQUIRE(whole);
   CHECK((*whole)[1] == glm::dvec2(1, 1.5));
 }
+
+TEST_CASE("clip_to_pixels keeps the part of a segment over the squares of the chosen pixels",
+          "[pixel_diagram]") {
+  const auto cut = tri::clip_to_pixels({4.5, 4.5}, {24.5, 4.5}, {0, 0}, {9, 9});
+  REQUIRE(cut);
+  CHECK((*cut)[0] == glm::dvec2(4.5, 4.5));
+  CHECK((*cut)[1] == glm::dvec2(9.5, 4.5));
+  const auto both = tri::clip_to_pixels({-10.5, -10.5}, {20.5, 20.5}, {0, 0}, {9, 9});
+  REQUIRE(both);
+  CHECK((*both)[0] == glm::dvec2(-0.5, -0.5));
+  CHECK((*both)[1] == glm::dvec2(9.5, 9.5));
+  CHECK_FALSE(tri::clip_to_pixels({20, 0}, {20, 9}, {0, 0}, {9, 9}));
+  CHECK_FALSE(tri::clip_to_pixels({-5, 0}, {0, -5}, {0, 0}, {9, 9}));
+}

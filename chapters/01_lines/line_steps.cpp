@@ -52,28 +52,4 @@ std::vector<Segment> star_spokes(glm::ivec2 centre, int radius, int count) {
   return spokes;
 }
 
-std::optional<std::array<glm::dvec2, 2>> clip_to_pixels(glm::dvec2 a, glm::dvec2 b,
-                                                        glm::ivec2 first, glm::ivec2 last) {
-  // Liang-Barsky: the segment a + t (b - a), 0 <= t <= 1, cut by the four sides in turn.
-  double t0 = 0, t1 = 1;
-  const glm::dvec2 d = b - a;
-  const std::array<std::pair<double, double>, 4> sides{{
-      {-d.x, a.x - (first.x - 0.5)},
-      {d.x, (last.x + 0.5) - a.x},
-      {-d.y, a.y - (first.y - 0.5)},
-      {d.y, (last.y + 0.5) - a.y},
-  }};
-  for (const auto& [p, q] : sides) {
-    if (p == 0) {
-      if (q < 0) return std::nullopt;
-      continue;
-    }
-    const double t = q / p;
-    if (p < 0) t0 = std::max(t0, t);
-    if (p > 0) t1 = std::min(t1, t);
-  }
-  if (t0 > t1) return std::nullopt;
-  return std::array<glm::dvec2, 2>{a + t0 * d, a + t1 * d};
-}
-
 }  // namespace tri::ch01

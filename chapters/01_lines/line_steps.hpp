@@ -34,9 +34,4 @@ using Segment = std::array<glm::ivec2, 2>;
 /// each ending at the pixel nearest to the point at distance `radius`.
 std::vector<Segment> star_spokes(glm::ivec2 centre, int radius, int count);
 
-/// The part of the segment a-b that lies over the pixels first..last (up to their outer edges),
-/// or nothing if it misses them: a cropped figure draws only that part of an ideal segment.
-std::optional<std::array<glm::dvec2, 2>> clip_to_pixels(glm::dvec2 a, glm::dvec2 b,
-                                                        glm::ivec2 first, glm::ivec2 last);
-
 }  // namespace tri::ch01

@@ -80,20 +80,3 @@ TEST_CASE("the star's 24 spokes have 8 tie steps, and the algorithms split 2 aga
   CHECK(splits ==
         std::vector<std::string>{"UUDD", "UUDD", "UUUU", "DUUD", "DUDU", "DUDU", "DUUD", "UUUU"});
 }
-
-TEST_CASE("clip_to_pixels keeps the part of a segment over the chosen pixels", "[steps]") {
-  // Pixels 0..9 cover [-0.5, 9.5] on both axes.
-  const auto inside = tri::ch01::clip_to_pixels({1, 1}, {4, 3}, {0, 0}, {9, 9});
-  REQUIRE(inside);
-  CHECK((*inside)[0] == glm::dvec2(1, 1));
-  CHECK((*inside)[1] == glm::dvec2(4, 3));
-  const auto cut = tri::ch01::clip_to_pixels({4.5, 4.5}, {24.5, 4.5}, {0, 0}, {9, 9});
-  REQUIRE(cut);
-  CHECK((*cut)[1] == glm::dvec2(9.5, 4.5));
-  const auto both = tri::ch01::clip_to_pixels({-10.5, -10.5}, {20.5, 20.5}, {0, 0}, {9, 9});
-  REQUIRE(both);
-  CHECK((*both)[0] == glm::dvec2(-0.5, -0.5));
-  CHECK((*both)[1] == glm::dvec2(9.5, 9.5));
-  CHECK_FALSE(tri::ch01::clip_to_pixels({20, 0}, {20, 9}, {0, 0}, {9, 9}));
-  CHECK_FALSE(tri::ch01::clip_to_pixels({-5, 0}, {0, -5}, {0, 0}, {9, 9}));
-}

@@ -132,12 +132,12 @@ std::string star_differences_figure(const std::vector<StarTie>& ties) {
     diagram.pixel_text(tie.other, tie.drew_other);
   }
   for (const Segment& spoke : tri::ch01::star_spokes(star_centre, star_radius, star_spoke_count)) {
-    if (const auto part = tri::ch01::clip_to_pixels(spoke[0], spoke[1], zoom_first, zoom_last)) {
+    if (const auto part = tri::clip_to_pixels(spoke[0], spoke[1], zoom_first, zoom_last)) {
       diagram.line((*part)[0], (*part)[1], dc::dark_gray, 1);
     }
   }
   for (const StarTie& tie : ties) {
-    const auto part = tri::ch01::clip_to_pixels(tie.spoke[0], tie.spoke[1], zoom_first, zoom_last);
+    const auto part = tri::clip_to_pixels(tie.spoke[0], tie.spoke[1], zoom_first, zoom_last);
     diagram.line((*part)[0], (*part)[1], dc::black, 2);
     const glm::dvec2 out = (*part)[1];
     const bool right = out.x > star_centre.x, top = out.y > star_centre.y;

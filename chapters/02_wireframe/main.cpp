@@ -150,7 +150,7 @@ std::string edges_diagram(const Vertices& v, glm::ivec2 first, glm::ivec2 last,
       diagram.mark(exact.pixel, PixelMark::ring);
       diagram.mark(exact.pixel - (x_major ? glm::ivec2(0, 1) : glm::ivec2(1, 0)), PixelMark::ring);
     }
-    if (const auto part = tri::ch01::clip_to_pixels(a, b, first, last)) {
+    if (const auto part = tri::clip_to_pixels(a, b, first, last)) {
       diagram.line((*part)[0], (*part)[1], dc::black, 2);
     }
   }

@@ -53,24 +53,9 @@ PixelDiagram hand_diagram(std::string title, bool edges) {
 
 void clipped_line(PixelDiagram& diagram, glm::dvec2 a, glm::dvec2 b, glm::ivec2 first,
                   glm::ivec2 last, Color color, double width) {
-  const glm::dvec2 lo = glm::dvec2(first) - 0.5, hi = glm::dvec2(last) + 0.5, d = b - a;
-  double t0 = 0, t1 = 1;
-  // Each side of the box cuts the parameter range [t0, t1] of a + t d.
-  const std::array<std::pair<double, double>, 4> sides{
-      {{-d.x, a.x - lo.x}, {d.x, hi.x - a.x}, {-d.y, a.y - lo.y}, {d.y, hi.y - a.y}}};
-  for (const auto& [p, q] : sides) {
-    if (p == 0) {
-      if (q < 0) return;  // parallel to this side and outside it
-      continue;
-    }
-    const double r = q / p;
-    if (p < 0) {
-      t0 = std::max(t0, r);
-    } else {
-      t1 = std::min(t1, r);
-    }
+  if (const auto part = tri::clip_to_pixels(a, b, first, last)) {
+    diagram.line((*part)[0], (*part)[1], color, width);
   }
-  if (t0 < t1) diagram.line(a + t0 * d, a + t1 * d, color, width);
 }
 
 }  // namespace tri::ch03::figures

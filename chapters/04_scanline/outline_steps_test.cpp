@@ -95,9 +95,8 @@ TEST_CASE("Steps 1 and 2 draw a triangle lying on one row as a segment", "[step1
   CHECK(pixels_coloured(canvas, tri::colors::green) == PixelSet{{4, 2}, {5, 2}});
 }
 
-TEST_CASE(
-    "Outline steps far off the canvas stay bounded and write nothing outside it",
-    "[safety]") {
+TEST_CASE("Outline steps far off the canvas stay bounded and write nothing outside it",
+          "[safety]") {
   // Chapter 01's Bresenham walks only the canvas columns (or rows) of the major axis and skips
   // the steps whose minor coordinate is off the canvas.
   constexpr int far = 10'000'000;

@@ -6,7 +6,6 @@
 #include <vector>
 
 #include "bounding_box.hpp"
-#include "clip_segment.hpp"
 #include "cross_product.hpp"
 #include "edge_function_fill.hpp"
 #include "figures.hpp"
@@ -205,8 +204,8 @@ void draw_slid_lines(PixelDiagram& d, const Vertices& v, glm::ivec2 first, glm::
       {{b + bc_shift, c + bc_shift}, {c + ca_shift, a + ca_shift}}};
   for (const auto& [p, q] : lines) {
     // Extended far beyond the edge's length, then cut to the diagram.
-    if (const auto seg = tri::ch05::clip_segment_to_pixels(p - 100.0 * (q - p), q + 100.0 * (q - p),
-                                                           first, last)) {
+    if (const auto seg =
+            tri::clip_to_pixels(p - 100.0 * (q - p), q + 100.0 * (q - p), first, last)) {
       d.line((*seg)[0], (*seg)[1], color, 1.5, true);
     }
   }

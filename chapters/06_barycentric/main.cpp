@@ -7,7 +7,6 @@
 
 #include "barycentric.hpp"
 #include "bounding_box.hpp"
-#include "clip_segment.hpp"
 #include "examples.hpp"
 #include "figures.hpp"
 #include "fill.hpp"
@@ -74,7 +73,7 @@ PixelDiagram scene_diagram(const std::string& title) {
 // An edge drawn across the shown pixels, wherever its vertices are.
 void clipped_line(PixelDiagram& d, glm::dvec2 a, glm::dvec2 b, glm::ivec2 first, glm::ivec2 last,
                   Color color, bool dashed = false) {
-  if (const auto s = tri::ch05::clip_segment_to_pixels(a, b, first, last)) {
+  if (const auto s = tri::clip_to_pixels(a, b, first, last)) {
     d.line((*s)[0], (*s)[1], color, 2, dashed);
   }
 }
@@ -247,7 +246,7 @@ std::string float_versus_double_figure() {
   d.legend_mark("float rounds wA below 0 here", PixelMark::ring);
   if (!float_only.empty()) d.legend_fill("drawn by float only", dc::sky_blue);
   for (std::size_t k = 0; k < 3; ++k) {
-    if (tri::ch05::clip_segment_to_pixels(at(t[k]), at(t[(k + 1) % 3]), first, last)) {
+    if (tri::clip_to_pixels(at(t[k]), at(t[(k + 1) % 3]), first, last)) {
       d.legend_line(std::string("edge ") + edge_names[k], edge_colors[k]);
     }
   }

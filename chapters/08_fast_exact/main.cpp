@@ -6,7 +6,6 @@
 #include <vector>
 
 #include "blocks.hpp"
-#include "clip_segment.hpp"
 #include "figures.hpp"
 #include "pixel_diagram.hpp"
 #include "random.hpp"
@@ -53,7 +52,7 @@ void outline(PixelDiagram& d, const PixelRange& r, Color color, double width, bo
 void clipped_triangle(PixelDiagram& d, const Triangle& t, glm::ivec2 first, glm::ivec2 last,
                       double width) {
   for (std::size_t k = 0; k < 3; ++k) {
-    if (const auto s = tri::ch05::clip_segment_to_pixels(t[k], t[(k + 1) % 3], first, last)) {
+    if (const auto s = tri::clip_to_pixels(t[k], t[(k + 1) % 3], first, last)) {
       d.line((*s)[0], (*s)[1], dc::black, width);
     }
   }
