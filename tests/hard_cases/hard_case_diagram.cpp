@@ -37,29 +37,6 @@ std::string number(double value) {
   return std::string(buffer.data(), result.ptr);
 }
 
-// The part of segment a-b inside the rectangle [low, high] (Liang-Barsky), if any.
-std::optional<std::array<glm::dvec2, 2>> clipped(glm::dvec2 a, glm::dvec2 b, glm::dvec2 low,
-                                                 glm::dvec2 high) {
-  double t0 = 0, t1 = 1;
-  const glm::dvec2 d = b - a;
-  const std::array<std::array<double, 2>, 4> sides{
-      {{-d.x, a.x - low.x}, {d.x, high.x - a.x}, {-d.y, a.y - low.y}, {d.y, high.y - a.y}}};
-  for (const auto& [p, q] : sides) {
-    if (p == 0) {
-      if (q < 0) return std::nullopt;
-      continue;
-    }
-    const double t = q / p;
-    if (p < 0) {
-      t0 = std::max(t0, t);
-    } else {
-      t1 = std::min(t1, t);
-    }
-    if (t0 > t1) return std::nullopt;
-  }
-  return std::array<glm::dvec2, 2>{a + t0 * d, a + t1 * d};
-}
-
 // Whether the pixel centre p lies exactly on the closed segment a-b (exact arithmetic).
 bool on_segment(glm::dvec2 a, glm::dvec2 b, glm::dvec2 p) {
   if (ch07::exact_orientation(a, b, p) != 0) return false;
@@ -169,7 +146,7 @@ std::string diagram_svg(const HardCase& hard_case) {
     for (int i = 0; i < 3; ++i) {
       const glm::dvec2 a = t[i], b = t[(i + 1) % 3];
       if (!finite(a) || !finite(b)) continue;
-      if (const auto part = clipped(a, b, low, high)) {
+      if (const auto part = tri::clip_segment(a, b, low, high)) {
         diagram.line((*part)[0], (*part)[1], colors::blue, width);
       }
     }
