@@ -56,11 +56,21 @@ void fill(Canvas& canvas, SubpixelPoint a, SubpixelPoint b, SubpixelPoint c, int
 
 }  // namespace
 
+namespace {
+
+// The nearest integer, halves up. Not floor(v + 0.5): that sum rounds 0.49999999999999994 up to 1.
+// v - floor(v) is exact, so the comparison with one half is too.
+std::int64_t nearest_half_up(double v) noexcept {
+  const double below = std::floor(v);
+  return static_cast<std::int64_t>(v - below >= 0.5 ? below + 1.0 : below);
+}
+
+}  // namespace
+
 // [listing snap_to_subpixel]
 SubpixelPoint snap_to_subpixel(glm::dvec2 p, int bits) noexcept {
-  const double scale = std::ldexp(1.0, bits);
-  return {static_cast<std::int64_t>(std::floor(p.x * scale + 0.5)),
-          static_cast<std::int64_t>(std::floor(p.y * scale + 0.5))};
+  const double scale = std::ldexp(1.0, bits);  // exact: scaling by 2^bits only moves the exponent
+  return {nearest_half_up(p.x * scale), nearest_half_up(p.y * scale)};
 }
 // [/listing]
 

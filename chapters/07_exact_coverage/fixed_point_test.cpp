@@ -54,6 +54,11 @@ TEST_CASE("snapping rounds to the nearest 1/256 with halves rounding up") {
   CHECK(snap_to_subpixel({0.49 / 256, 0.51 / 256}, 8).y == 1);
   CHECK(snap_to_subpixel({1073741824.0, -1073741824.0}, 8).x == std::int64_t{1} << 38);
   CHECK(snap_to_subpixel({2.5, 0}, 0).x == 3);
+  // The largest double below one half rounds down: floor(v + 0.5) would give 1, because the sum
+  // itself rounds to 1.0.
+  CHECK(snap_to_subpixel({0.49999999999999994 / 256, 0.49999999999999994}, 8).x == 0);
+  CHECK(snap_to_subpixel({0.49999999999999994, -0.5000000000000001}, 0).x == 0);
+  CHECK(snap_to_subpixel({0.49999999999999994, -0.5000000000000001}, 0).y == -1);
 }
 
 TEST_CASE("64-bit edge functions are used only while every snapped coordinate is within 2^29") {

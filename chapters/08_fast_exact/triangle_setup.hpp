@@ -23,12 +23,18 @@ inline std::int64_t floor_to_integer(double x) noexcept {
   return static_cast<double>(truncated) > x ? truncated - 1 : truncated;
 }
 
-/// Chapter 07's snap_to_subpixel(p, 8), the same arithmetic (floor(p * 256 + 0.5)) with the
-/// scale a constant: chapter 07 forms 2^bits with std::ldexp and rounds with std::floor, two
-/// library calls that cost more than the rest of a small triangle's setup. A test pins that
-/// both agree.
+/// The nearest integer to x, halves up, for |x| < 2^52 (x - floor(x) is exact there; adding one
+/// half first would round 0.49999999999999994 up to 1).
+inline std::int64_t nearest_integer_half_up(double x) noexcept {
+  const std::int64_t below = floor_to_integer(x);
+  return x - static_cast<double>(below) >= 0.5 ? below + 1 : below;
+}
+
+/// Chapter 07's snap_to_subpixel(p, 8), the same rounding with the scale a constant: chapter 07
+/// forms 2^bits with std::ldexp and rounds with std::floor, two library calls that cost more than
+/// the rest of a small triangle's setup. A test pins that both agree.
 inline ch07::SubpixelPoint snap_to_256ths(glm::dvec2 p) noexcept {
-  return {floor_to_integer(p.x * 256.0 + 0.5), floor_to_integer(p.y * 256.0 + 0.5)};
+  return {nearest_integer_half_up(p.x * 256.0), nearest_integer_half_up(p.y * 256.0)};
 }
 
 /// Edge values at origin pixels are clamped to ±edge_value_limit. Across any canvas (at most

@@ -58,7 +58,8 @@ TEST_CASE("snap_to_256ths gives exactly chapter 07's snap_to_subpixel with 8 bit
   };
   // Exact halves of a 1/256 step round up on both sides of zero, as chapter 07 does.
   for (const double v : {0.5 / 256, -0.5 / 256, 1.5 / 256, -1.5 / 256, 0.49999999 / 256,
-                         -0.50000001 / 256, 1073741824.0, -1073741824.0, 0.0, -0.0}) {
+                         -0.50000001 / 256, 0.49999999999999994 / 256, -0.5000000000000001 / 256,
+                         1073741824.0, -1073741824.0, 0.0, -0.0}) {
     INFO(v);
     CHECK(same({v, -v}));
   }

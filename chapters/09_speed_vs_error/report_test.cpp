@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <random>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -24,6 +25,13 @@ using tri::ch09::BenchReport;
 using tri::ch09::Measurement;
 
 namespace {
+
+// A folder name of its own under the temporary folder, so two builds testing at once never share
+// it.
+std::filesystem::path unique_temporary_folder(const std::string& stem) {
+  return std::filesystem::temp_directory_path() /
+         (stem + "_" + std::to_string(std::random_device{}()));
+}
 
 const std::vector<std::string> tiny_algorithms{"edge_function", "fixed_point_0", "fixed_point_8"};
 
@@ -291,7 +299,7 @@ TEST_CASE("Table speeds are whole numbers from 100 Mpix/s up", "[report]") {
 }
 
 TEST_CASE("save_report writes the three files the run rendered", "[report]") {
-  const auto folder = std::filesystem::temp_directory_path() / "tri_ch09_report_test";
+  const auto folder = unique_temporary_folder("tri_ch09_report_test");
   std::filesystem::remove_all(folder);
   std::ostringstream log;
   tri::ch09::save_report(folder, tiny_run().report, log);
@@ -308,7 +316,7 @@ TEST_CASE("save_report writes the three files the run rendered", "[report]") {
 
 TEST_CASE("save_report writes the set whole or not at all: a failing file keeps the earlier set",
           "[report]") {
-  const auto folder = std::filesystem::temp_directory_path() / "tri_ch09_report_set_test";
+  const auto folder = unique_temporary_folder("tri_ch09_report_set_test");
   std::filesystem::remove_all(folder);
   std::filesystem::create_directories(folder / tri::ch09::svg_file_name);  // cannot be replaced
   std::ofstream(folder / tri::ch09::csv_file_name) << "earlier csv";
