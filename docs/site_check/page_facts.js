@@ -5,6 +5,14 @@
   const objects = () => [...document.querySelectorAll('object[data]')];
   // The load event already waited for images; this only covers late additions, for 5 s at most.
   for (let i = 0; i < 50 && images().some((image) => !image.complete); ++i) await pause(100);
+  // An embedded SVG's document can still be parsing on a busy machine: give it the same 5 s. A
+  // figure that failed to load is recorded by record_failed_loads.js and is not waited for.
+  const svgReady = (object) => object.contentDocument !== null &&
+      object.contentDocument.documentElement !== null &&
+      object.contentDocument.documentElement.localName === 'svg';
+  const pending = () => objects().filter(
+      (object) => !svgReady(object) && !(window.__siteCheckFailedLoads || []).includes(object.data));
+  for (let i = 0; i < 50 && pending().length > 0; ++i) await pause(100);
   // Doxygen builds the visible tree from NAVTREE once the document is ready.
   const hasTree = typeof NAVTREE !== 'undefined';
   for (let i = 0; i < 50 && hasTree && !document.querySelector('#nav-tree-contents a'); ++i) {
@@ -25,9 +33,7 @@
     objects: objects().map((object) => ({
       src: object.data,
       type: object.type,
-      loaded: !failed.includes(object.data) && object.contentDocument !== null &&
-          object.contentDocument.documentElement !== null &&
-          object.contentDocument.documentElement.localName === 'svg',
+      loaded: !failed.includes(object.data) && svgReady(object),
       inContents: object.closest('div.contents') !== null,
     })),
     // Code listings: Doxygen highlights C++ in a fragment with keyword spans (span.keyword,
