@@ -28,11 +28,27 @@ std::vector<ExternalPeer> external_peers() {
 
 namespace {
 
-// "llvmpipe: measured (mesa_llvmpipe_1_thread, …)", "… not selected by --only" or "… not built
-// (reason)" for one library.
-std::string library_status(const std::string& library, bool built, const std::string& why_not,
+// Why a library's peer was not built (CMake's reason), or nullptr when it was.
+#if TUTORIAL_WITH_OSMESA
+constexpr const char* llvmpipe_not_built = nullptr;
+#else
+constexpr const char* llvmpipe_not_built = TUTORIAL_LLVMPIPE_SKIPPED_BECAUSE;
+#endif
+#if TUTORIAL_WITH_PIXMAN
+constexpr const char* pixman_not_built = nullptr;
+#else
+constexpr const char* pixman_not_built = TUTORIAL_PIXMAN_SKIPPED_BECAUSE;
+#endif
+#if TUTORIAL_WITH_CAIRO
+constexpr const char* cairo_not_built = nullptr;
+#else
+constexpr const char* cairo_not_built = TUTORIAL_CAIRO_SKIPPED_BECAUSE;
+#endif
+
+// "pixman: measured (pixman_a1)", "… built, not selected by --only" or "… not built (reason)".
+std::string library_status(const std::string& library, const char* not_built,
                            const std::string& name_prefix, std::span<const ExternalPeer> measured) {
-  if (!built) return library + ": not built (" + why_not + ")";
+  if (not_built != nullptr) return library + ": not built (" + not_built + ")";
   std::string names;
   for (const ExternalPeer& peer : measured) {
     if (peer.name.starts_with(name_prefix)) names += (names.empty() ? "" : ", ") + peer.name;
@@ -44,30 +60,9 @@ std::string library_status(const std::string& library, bool built, const std::st
 }  // namespace
 
 std::string external_peer_status(std::span<const ExternalPeer> measured) {
-#if TUTORIAL_WITH_OSMESA
-  const bool llvmpipe = true;
-  const std::string llvmpipe_why_not;
-#else
-  const bool llvmpipe = false;
-  const std::string llvmpipe_why_not = TUTORIAL_LLVMPIPE_SKIPPED_BECAUSE;
-#endif
-#if TUTORIAL_WITH_PIXMAN
-  const bool pixman = true;
-  const std::string pixman_why_not;
-#else
-  const bool pixman = false;
-  const std::string pixman_why_not = TUTORIAL_PIXMAN_SKIPPED_BECAUSE;
-#endif
-#if TUTORIAL_WITH_CAIRO
-  const bool cairo = true;
-  const std::string cairo_why_not;
-#else
-  const bool cairo = false;
-  const std::string cairo_why_not = TUTORIAL_CAIRO_SKIPPED_BECAUSE;
-#endif
-  return library_status("Mesa llvmpipe", llvmpipe, llvmpipe_why_not, "mesa_llvmpipe", measured) +
-         "; " + library_status("pixman", pixman, pixman_why_not, "pixman", measured) + "; " +
-         library_status("cairo", cairo, cairo_why_not, "cairo", measured);
+  return library_status("Mesa llvmpipe", llvmpipe_not_built, "mesa_llvmpipe", measured) + "; " +
+         library_status("pixman", pixman_not_built, "pixman", measured) + "; " +
+         library_status("cairo", cairo_not_built, "cairo", measured);
 }
 
 }  // namespace tri::ch09
