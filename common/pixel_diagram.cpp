@@ -237,6 +237,15 @@ void PixelDiagram::line(glm::dvec2 a, glm::dvec2 b, Color color, double width, b
   geometry_ += line_element(to_svg((*visible)[0]), to_svg((*visible)[1]), color, width, dashed);
 }
 
+void PixelDiagram::frame(glm::ivec2 first, glm::ivec2 last, Color color, double width,
+                         bool dashed) {
+  const glm::dvec2 lo = glm::dvec2(first) - 0.5, hi = glm::dvec2(last) + 0.5;
+  line(lo, {hi.x, lo.y}, color, width, dashed);
+  line({hi.x, lo.y}, hi, color, width, dashed);
+  line(hi, {lo.x, hi.y}, color, width, dashed);
+  line({lo.x, hi.y}, lo, color, width, dashed);
+}
+
 void PixelDiagram::triangle(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, Color color, double width) {
   const glm::dvec2 lo = glm::dvec2(first_) - 0.5, hi = glm::dvec2(last_) + 0.5;
   const auto inside = [&](glm::dvec2 p) {

@@ -80,6 +80,9 @@ class PixelDiagram {
   /// A straight segment of the ideal geometry, in pixel coordinates, cut to the diagram's pixels
   /// (so a far-away vertex still gives the right direction inside the grid).
   void line(glm::dvec2 a, glm::dvec2 b, Color color, double width = 2, bool dashed = false);
+  /// The outer border of the squares of pixels first..last (a region the text points at).
+  void frame(glm::ivec2 first, glm::ivec2 last, Color color, double width = 1.5,
+             bool dashed = false);
   /// The three edges of a triangle, cut to the diagram's pixels.
   void triangle(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, Color color, double width = 2);
   /// A filled dot at a point, radius in SVG units.

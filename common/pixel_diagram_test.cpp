@@ -166,3 +166,16 @@ TEST_CASE("clip_to_pixels keeps the part of a segment over the squares of the ch
   CHECK_FALSE(tri::clip_to_pixels({20, 0}, {20, 9}, {0, 0}, {9, 9}));
   CHECK_FALSE(tri::clip_to_pixels({-5, 0}, {0, -5}, {0, 0}, {9, 9}));
 }
+
+TEST_CASE("A pixel diagram frames a region along the outer border of its pixels",
+          "[pixel_diagram]") {
+  // Pixels 1..2 x 0..1 of a 4x2 grid at 10 units: the border runs from x 44 to 64, y 34 to 54.
+  PixelDiagram diagram({0, 0}, {3, 1}, "t", 10);
+  diagram.frame({1, 0}, {2, 1}, dc::black);
+  const std::string svg = diagram.svg();
+  CHECK(occurrences(svg, "<line") == 4);
+  CHECK(svg.find("x1=\"44\" y1=\"54\" x2=\"64\" y2=\"54\"") != std::string::npos);
+  CHECK(svg.find("x1=\"64\" y1=\"54\" x2=\"64\" y2=\"34\"") != std::string::npos);
+  CHECK(svg.find("x1=\"64\" y1=\"34\" x2=\"44\" y2=\"34\"") != std::string::npos);
+  CHECK(svg.find("x1=\"44\" y1=\"34\" x2=\"44\" y2=\"54\"") != std::string::npos);
+}

@@ -101,11 +101,7 @@ std::string star_figure(const std::vector<StarTie>& ties) {
   for (const Segment& spoke : tri::ch01::star_spokes(star_centre, star_radius, star_spoke_count)) {
     diagram.line(spoke[0], spoke[1], dc::black, 0.8);
   }
-  const glm::dvec2 lo = glm::dvec2(zoom_first) - 0.5, hi = glm::dvec2(zoom_last) + 0.5;
-  for (const auto& [a, b] : std::array<std::pair<glm::dvec2, glm::dvec2>, 4>{
-           {{lo, {hi.x, lo.y}}, {{hi.x, lo.y}, hi}, {hi, {lo.x, hi.y}}, {{lo.x, hi.y}, lo}}}) {
-    diagram.line(a, b, dc::vermillion, 1.5, true);
-  }
+  diagram.frame(zoom_first, zoom_last, dc::vermillion, 1.5, true);
   diagram.vertex(star_centre, "centre", tri::LabelPlace::below_right);
   diagram.legend_fill("drawn by all four algorithms (spokes alternate two blues)", dc::blue);
   diagram.legend_fill("tie step where they differ: each of the two pixels is drawn by some",
@@ -132,9 +128,7 @@ std::string star_differences_figure(const std::vector<StarTie>& ties) {
     diagram.pixel_text(tie.other, tie.drew_other);
   }
   for (const Segment& spoke : tri::ch01::star_spokes(star_centre, star_radius, star_spoke_count)) {
-    if (const auto part = tri::clip_to_pixels(spoke[0], spoke[1], zoom_first, zoom_last)) {
-      diagram.line((*part)[0], (*part)[1], dc::dark_gray, 1);
-    }
+    diagram.line(spoke[0], spoke[1], dc::dark_gray, 1);
   }
   for (const StarTie& tie : ties) {
     const auto part = tri::clip_to_pixels(tie.spoke[0], tie.spoke[1], zoom_first, zoom_last);

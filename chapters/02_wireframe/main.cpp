@@ -32,15 +32,6 @@ std::size_t drawn_count(const Canvas& canvas, tri::Color background) {
                                                 [&](tri::Color c) { return c != background; }));
 }
 
-// A dashed rectangle around pixels first..last: the region a companion diagram zooms on.
-void outline_region(PixelDiagram& diagram, glm::ivec2 first, glm::ivec2 last, tri::Color color) {
-  const glm::dvec2 lo = glm::dvec2(first) - 0.5, hi = glm::dvec2(last) + 0.5;
-  diagram.line(lo, {hi.x, lo.y}, color, 1.5, true);
-  diagram.line({hi.x, lo.y}, hi, color, 1.5, true);
-  diagram.line(hi, {lo.x, hi.y}, color, 1.5, true);
-  diagram.line({lo.x, hi.y}, lo, color, 1.5, true);
-}
-
 // Figure 7-1: (-200,-250), (200,50), (20,250) in Gambetta's centred coordinates.
 std::string gambetta_figure_7_1() {
   Canvas canvas(600, 600, tri::colors::white);
@@ -111,7 +102,7 @@ std::string tinyrenderer_figure() {
       diagram.label(p, point_text(p), places[t][i], dc::dark_gray);
     }
   }
-  outline_region(diagram, apex_first, apex_last, dc::blue);
+  diagram.frame(apex_first, apex_last, dc::blue, 1.5, true);
   for (const auto& t : tinyrenderer_triangles) diagram.legend_fill(t.name, t.color);
   diagram.legend_line("the sharp top zoomed in 02_wireframe_tinyrenderer_apex", dc::blue, true);
   diagram.legend_note("Outlines of " + sizes +
@@ -150,9 +141,7 @@ std::string edges_diagram(const Vertices& v, glm::ivec2 first, glm::ivec2 last,
       diagram.mark(exact.pixel, PixelMark::ring);
       diagram.mark(exact.pixel - (x_major ? glm::ivec2(0, 1) : glm::ivec2(1, 0)), PixelMark::ring);
     }
-    if (const auto part = tri::clip_to_pixels(a, b, first, last)) {
-      diagram.line((*part)[0], (*part)[1], dc::black, 2);
-    }
+    diagram.line(a, b, dc::black, 2);
   }
   for (std::size_t i = 0; i < 3; ++i) {
     if (v[i].x >= first.x && v[i].x <= last.x && v[i].y >= first.y && v[i].y <= last.y) {

@@ -83,7 +83,7 @@ PixelDiagram close_up_panel(int flip) {
   const glm::ivec2 first = close_up_first(flip);
   PixelDiagram panel(first, first + close_up_extent, flip_name(flip), 24);
   panel.fill_from(categories, dc::empty, to_centred);
-  clipped_line(panel, v[0], v[1], first, first + close_up_extent, dc::black);
+  panel.line(v[0], v[1], dc::black, 1.5);
   for (int x = first.x; x <= first.x + close_up_extent.x; ++x) {
     glm::ivec2 tie;
     if (halfway_tie(v[0], v[1], x, tie)) panel.mark(tie, PixelMark::ring);
@@ -127,12 +127,9 @@ std::string figure_7_3(int flip) {
   const std::array<LabelPlace, 3> places{LabelPlace::right, LabelPlace::left, LabelPlace::right};
   for (int i = 0; i < 3; ++i) diagram.vertex(v[i], names[i], places[i]);
   // The close-up's window, so the zoomed figure can be found here.
-  const glm::dvec2 lo = glm::dvec2(close_up_first(flip)) - 0.5;
-  const glm::dvec2 hi = lo + glm::dvec2(close_up_extent) + 1.0;
-  diagram.line(lo, {hi.x, lo.y}, dc::black, 1.5);
-  diagram.line({hi.x, lo.y}, hi, dc::black, 1.5);
-  diagram.line(hi, {lo.x, hi.y}, dc::black, 1.5);
-  diagram.line({lo.x, hi.y}, lo, dc::black, 1.5);
+  const glm::ivec2 window = close_up_first(flip);
+  diagram.frame(window, window + close_up_extent, dc::black);
+  const glm::dvec2 lo = glm::dvec2(window) - 0.5, hi = glm::dvec2(window + close_up_extent) + 0.5;
   diagram.label({hi.x, flip > 0 ? lo.y : hi.y}, "close-up",
                 flip > 0 ? LabelPlace::below_right : LabelPlace::above_right);
   legend_categories(diagram);

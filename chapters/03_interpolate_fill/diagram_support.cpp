@@ -51,11 +51,4 @@ PixelDiagram hand_diagram(std::string title, bool edges) {
   return diagram;
 }
 
-void clipped_line(PixelDiagram& diagram, glm::dvec2 a, glm::dvec2 b, glm::ivec2 first,
-                  glm::ivec2 last, Color color, double width) {
-  if (const auto part = tri::clip_to_pixels(a, b, first, last)) {
-    diagram.line((*part)[0], (*part)[1], color, width);
-  }
-}
-
 }  // namespace tri::ch03::figures

@@ -31,9 +31,4 @@ bool halfway_tie(glm::ivec2 a, glm::ivec2 b, int x, glm::ivec2& pixel) noexcept;
 /// its sorted vertices labelled P0, P1, P2 with their coordinates.
 PixelDiagram hand_diagram(std::string title, bool edges = true);
 
-/// Draws the part of segment a b over the pixels first..last: a close-up shows only a stretch of
-/// an edge, narrower than the diagram.
-void clipped_line(PixelDiagram& diagram, glm::dvec2 a, glm::dvec2 b, glm::ivec2 first,
-                  glm::ivec2 last, Color color, double width = 1.5);
-
 }  // namespace tri::ch03::figures

@@ -60,17 +60,6 @@ TEST_CASE("A half-way tie is found on edges given either way round", "[figures]"
   CHECK_FALSE(halfway_tie({0, 0}, {4, 3}, 1, forward));  // y = 0.75
 }
 
-TEST_CASE("clipped_line keeps only the part of a segment over the diagram's pixels", "[figures]") {
-  const glm::ivec2 first{0, 0}, last{9, 9};
-  tri::PixelDiagram clipped(first, last, "t"), expected(first, last, "t");
-  clipped_line(clipped, {-10.5, 4}, {20, 4}, first, last, tri::diagram_colors::black);
-  expected.line({-0.5, 4}, {9.5, 4}, tri::diagram_colors::black, 1.5);
-  CHECK(clipped.svg() == expected.svg());
-  const std::string before = clipped.svg();
-  clipped_line(clipped, {-3, -3}, {-1, 20}, first, last, tri::diagram_colors::black);
-  CHECK(clipped.svg() == before);  // wholly outside: nothing drawn
-}
-
 TEST_CASE(
     "tinyrenderer's green triangle: its 30 outline pixels outside the fill are on the wide "
     "edges",

@@ -157,7 +157,7 @@ std::string truncation_close_up() {
     diagram.point({exact, y}, dc::blue, 3.5);
   }
   for (const auto& [p, q] : {std::pair{a, b}, std::pair{b, c}, std::pair{c, a}}) {
-    clipped_line(diagram, p, q, first, last, dc::black);
+    diagram.line(p, q, dc::black, 1.5);
   }
   diagram.vertex(t.t0, "t0", LabelPlace::below_right);
   const glm::ivec2 named{10, 72};

@@ -30,9 +30,4 @@ const ArticleTriangle& diagram_triangle() noexcept;
 /// t0, t1, t2 (sorted by y) with their coordinates.
 PixelDiagram green_diagram(std::string title);
 
-/// Draws the part of segment a b over the pixels first..last: a close-up shows only a stretch of
-/// an edge, narrower than the diagram.
-void clipped_line(PixelDiagram& diagram, glm::dvec2 a, glm::dvec2 b, glm::ivec2 first,
-                  glm::ivec2 last, Color color, double width = 1.5);
-
 }  // namespace tri::ch04::figures

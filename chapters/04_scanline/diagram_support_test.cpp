@@ -52,14 +52,3 @@ TEST_CASE("centre_in_triangle counts centres on an edge as inside, in either win
     CHECK_FALSE(centre_in_triangle(t, {-1, 0}));
   }
 }
-
-TEST_CASE("clipped_line keeps only the part of a segment over the diagram's pixels", "[figures]") {
-  const glm::ivec2 first{0, 0}, last{9, 9};
-  tri::PixelDiagram clipped(first, last, "t"), expected(first, last, "t");
-  clipped_line(clipped, {4, -10.5}, {4, 20}, first, last, tri::diagram_colors::black);
-  expected.line({4, -0.5}, {4, 9.5}, tri::diagram_colors::black, 1.5);
-  CHECK(clipped.svg() == expected.svg());
-  const std::string before = clipped.svg();
-  clipped_line(clipped, {20, -3}, {30, 20}, first, last, tri::diagram_colors::black);
-  CHECK(clipped.svg() == before);  // wholly outside: nothing drawn
-}

@@ -196,18 +196,14 @@ BugComparison compare_published_bug() {
 
 // The lines the published test really uses for BC and CA: each slid vertically to A's height,
 // drawn across the shown pixels.
-void draw_slid_lines(PixelDiagram& d, const Vertices& v, glm::ivec2 first, glm::ivec2 last,
-                     Color color) {
+void draw_slid_lines(PixelDiagram& d, const Vertices& v, Color color) {
   const glm::dvec2 a = at(v[0]), b = at(v[1]), c = at(v[2]);
   const glm::dvec2 bc_shift(0, a.y - b.y), ca_shift(0, a.y - c.y);
   const std::array<std::array<glm::dvec2, 2>, 2> lines{
       {{b + bc_shift, c + bc_shift}, {c + ca_shift, a + ca_shift}}};
   for (const auto& [p, q] : lines) {
     // Extended far beyond the edge's length, then cut to the diagram.
-    if (const auto seg =
-            tri::clip_to_pixels(p - 100.0 * (q - p), q + 100.0 * (q - p), first, last)) {
-      d.line((*seg)[0], (*seg)[1], color, 1.5, true);
-    }
+    d.line(p - 100.0 * (q - p), q + 100.0 * (q - p), color, 1.5, true);
   }
 }
 
@@ -245,7 +241,7 @@ std::string published_bug_zoom_figure(const BugComparison& cmp) {
   for (const auto p : pixels_of(cmp.extra, marked)) d.mark(p, PixelMark::cross, dc::black);
   for (const auto p : pixels_of(cmp.both, marked)) d.mark(p, PixelMark::square, dc::black);
   d.triangle(at(v[0]), at(v[1]), at(v[2]), dc::black);
-  draw_slid_lines(d, v, zoom_first, zoom_last, dc::purple);
+  draw_slid_lines(d, v, dc::purple);
   d.vertex(at(v[0]), "A", LabelPlace::below_left);
   d.vertex(at(v[1]), "B", LabelPlace::right);
   d.vertex(at(v[2]), "C", LabelPlace::right);

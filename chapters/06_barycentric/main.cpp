@@ -70,14 +70,6 @@ PixelDiagram scene_diagram(const std::string& title) {
   return d;
 }
 
-// An edge drawn across the shown pixels, wherever its vertices are.
-void clipped_line(PixelDiagram& d, glm::dvec2 a, glm::dvec2 b, glm::ivec2 first, glm::ivec2 last,
-                  Color color, bool dashed = false) {
-  if (const auto s = tri::clip_to_pixels(a, b, first, last)) {
-    d.line((*s)[0], (*s)[1], color, 2, dashed);
-  }
-}
-
 // Step 1: each triangle over its bounding box, the pixels the loop visits.
 std::string bounding_boxes_figure() {
   PixelDiagram d = scene_diagram("Every pixel of each bounding box is tested; few are drawn");
@@ -236,7 +228,7 @@ std::string float_versus_double_figure() {
   const std::array<Color, 3> edge_colors{dc::orange, dc::blue, dc::purple};
   const std::array<const char*, 3> edge_names{"AB", "BC", "CA"};
   for (std::size_t k = 0; k < 3; ++k) {
-    clipped_line(d, at(t[k]), at(t[(k + 1) % 3]), first, last, edge_colors[k]);
+    d.line(at(t[k]), at(t[(k + 1) % 3]), edge_colors[k], 2);
   }
   for (const auto p : double_only) {
     d.label(at(p), "midpoint of BC " + point_text(p), LabelPlace::below_left);
@@ -278,7 +270,7 @@ std::string float_zero_area_far_away_figure() {
   d.fill(off_line, dc::vermillion);
   for (const auto p : on_line) d.mark(p, PixelMark::ring);
   for (const auto p : off_line) d.mark(p, PixelMark::cross);
-  clipped_line(d, at(t[0]), at(t[1]), first, last, dc::blue);
+  d.line(at(t[0]), at(t[1]), dc::blue, 2);
   d.vertex(at(t[2]), "C", LabelPlace::right);
   d.legend_fill("drawn by float, centre on the line", dc::sky_blue);
   d.legend_mark("on the line", PixelMark::ring);

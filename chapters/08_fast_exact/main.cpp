@@ -39,23 +39,14 @@ Color mix(Color a, Color b, int percent_b) {
   return {channel(0), channel(1), channel(2), 255};
 }
 
-// The outline of a rectangle of pixels (their squares' outer border).
+// The outer border of a rectangle of pixels.
 void outline(PixelDiagram& d, const PixelRange& r, Color color, double width, bool dashed = false) {
-  const glm::dvec2 low(r.first_x - 0.5, r.first_y - 0.5), high(r.last_x + 0.5, r.last_y + 0.5);
-  d.line(low, {high.x, low.y}, color, width, dashed);
-  d.line({high.x, low.y}, high, color, width, dashed);
-  d.line(high, {low.x, high.y}, color, width, dashed);
-  d.line({low.x, high.y}, low, color, width, dashed);
+  d.frame({r.first_x, r.first_y}, {r.last_x, r.last_y}, color, width, dashed);
 }
 
-// A triangle's ideal edges, cut to the pixels first..last of a whole-scene diagram.
-void clipped_triangle(PixelDiagram& d, const Triangle& t, glm::ivec2 first, glm::ivec2 last,
-                      double width) {
-  for (std::size_t k = 0; k < 3; ++k) {
-    if (const auto s = tri::clip_to_pixels(t[k], t[(k + 1) % 3], first, last)) {
-      d.line((*s)[0], (*s)[1], dc::black, width);
-    }
-  }
+// A triangle's ideal edges as three segments (the writer cuts them to the diagram).
+void edges(PixelDiagram& d, const Triangle& t, double width) {
+  for (std::size_t k = 0; k < 3; ++k) d.line(t[k], t[(k + 1) % 3], dc::black, width);
 }
 
 // The triangle's ideal edges and its three labelled vertices (A, B, C counter-clockwise).
@@ -213,7 +204,7 @@ std::string hybrid_paths_figure() {
   PixelDiagram d({0, 0}, {159, 119}, "The hybrid's path per triangle: lanes or spans", 4);
   d.show_centres(false);
   d.fill_from(canvas, tri::colors::black);
-  for (const auto& t : triangles) clipped_triangle(d, t, {0, 0}, {159, 119}, 0.75);
+  for (const auto& t : triangles) edges(d, t, 0.75);
   d.legend_fill("fits one 8x8 block: lane test (" + std::to_string(lanes) + " triangles)",
                 dc::purple);
   d.legend_fill("larger: spans (" + std::to_string(spans) + " triangles)", dc::sky_blue);
@@ -300,7 +291,7 @@ std::string bands_figure() {
   for (int y = bands.rows; y < canvas.height(); y += bands.rows) {
     d.line({-0.5, y - 0.5}, {127.5, y - 0.5}, dc::black, 1.5);
   }
-  for (const auto& t : scene) clipped_triangle(d, t.vertices, {0, 0}, {127, 95}, 0.75);
+  for (const auto& t : scene) edges(d, t.vertices, 0.75);
   d.legend_fill("empty, row of thread 0", mix(tints[0], dc::empty, 80));
   d.legend_fill("drawn by thread 0", mix(Color{190, 190, 190, 255}, tints[0], 55));
   d.legend_fill("empty, row of thread 1", mix(tints[1], dc::empty, 80));
