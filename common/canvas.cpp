@@ -1,4 +1,4 @@
-#include "canvas.hpp"
+#include "common/canvas.hpp"
 
 #include <algorithm>
 #include <stdexcept>

@@ -8,7 +8,7 @@
 
 #include <glm/vec2.hpp>
 
-#include "color.hpp"
+#include "common/color.hpp"
 
 namespace tri {
 

@@ -9,9 +9,9 @@
 #include <utility>
 #include <vector>
 
-#include "canvas.hpp"
-#include "centered_view.hpp"
-#include "pixels.hpp"
+#include "common/canvas.hpp"
+#include "common/centered_view.hpp"
+#include "tests/support/pixels.hpp"
 
 namespace tri {
 namespace {

@@ -4,7 +4,7 @@
 
 #include <glm/vec2.hpp>
 
-#include "canvas.hpp"
+#include "common/canvas.hpp"
 
 namespace tri {
 

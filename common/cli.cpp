@@ -1,4 +1,4 @@
-#include "cli.hpp"
+#include "common/cli.hpp"
 
 #include <algorithm>
 #include <cerrno>

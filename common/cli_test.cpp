@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "cli.hpp"
+#include "common/cli.hpp"
 
 namespace tri {
 namespace {

@@ -1,11 +1,11 @@
-#include "figures.hpp"
+#include "common/figures.hpp"
 
 #include <iostream>
 #include <stdexcept>
 
-#include "cli.hpp"
-#include "image_io.hpp"
-#include "output_files.hpp"
+#include "common/cli.hpp"
+#include "common/image_io.hpp"
+#include "common/output_files.hpp"
 
 namespace tri {
 
@@ -56,6 +56,17 @@ int run_chapter_program(int argc, const char* const* argv, std::string program,
                             render(figures);
                             return 0;
                           });
+}
+
+int run_chapter_program(int argc, const char* const* argv, std::string program,
+                        std::string what_it_draws, std::vector<SvgFigureFunction> figures) {
+  return run_chapter_program(argc, argv, std::move(program), std::move(what_it_draws),
+                             [&](FigureWriter& writer) {
+                               for (const auto& draw : figures) {
+                                 const SvgFigure figure = draw();
+                                 writer.save_svg(figure.name, figure.svg);
+                               }
+                             });
 }
 
 }  // namespace tri

@@ -7,8 +7,9 @@
 #include <ostream>
 #include <string>
 #include <string_view>
+#include <vector>
 
-#include "canvas.hpp"
+#include "common/canvas.hpp"
 
 namespace tri {
 
@@ -37,10 +38,25 @@ class FigureWriter {
 /// are visible in the figures (factor >= 1).
 Canvas magnified(const Canvas& canvas, int factor);
 
+/// One figure as a chapter draws it: the file name it is saved under (without ".svg") and the
+/// SVG document. A figure function returns it, so the name stands beside the drawing code.
+struct SvgFigure {
+  std::string name;
+  std::string svg;
+};
+
+/// A function that draws one of a chapter's figures.
+using SvgFigureFunction = std::function<SvgFigure()>;
+
 /// The main() of a chapter executable: parses --help and --out DIR (default "out"), then calls
 /// render with a FigureWriter on that folder. Returns the process exit status.
 int run_chapter_program(int argc, const char* const* argv, std::string program,
                         std::string what_it_draws,
                         const std::function<void(FigureWriter& figures)>& render);
+
+/// The same for a chapter whose figures are all SVG diagrams: draws each in order and saves it
+/// as folder/NAME.svg.
+int run_chapter_program(int argc, const char* const* argv, std::string program,
+                        std::string what_it_draws, std::vector<SvgFigureFunction> figures);
 
 }  // namespace tri

@@ -1,4 +1,4 @@
-#include "image_io.hpp"
+#include "common/image_io.hpp"
 
 #include <stb_image_write.h>
 
@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "output_files.hpp"
+#include "common/output_files.hpp"
 
 namespace tri {
 namespace {

@@ -7,7 +7,7 @@
 #include <span>
 #include <vector>
 
-#include "canvas.hpp"
+#include "common/canvas.hpp"
 
 namespace tri {
 

@@ -16,8 +16,8 @@
 #include <stb/stb_image.h>
 #endif
 
-#include "canvas.hpp"
-#include "image_io.hpp"
+#include "common/canvas.hpp"
+#include "common/image_io.hpp"
 
 namespace tri {
 namespace {

@@ -1,4 +1,4 @@
-#include "output_files.hpp"
+#include "common/output_files.hpp"
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -11,7 +11,7 @@
 #include <random>
 #include <string>
 
-#include "cli.hpp"
+#include "common/cli.hpp"
 
 namespace tri {
 namespace {

@@ -1,4 +1,4 @@
-#include "output_files.hpp"
+#include "common/output_files.hpp"
 
 #include <sys/stat.h>
 #include <unistd.h>
@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "cli.hpp"
+#include "common/cli.hpp"
 
 namespace tri {
 namespace {
@@ -59,9 +59,9 @@ TEST_CASE("A failing second output leaves the first output's earlier file exactl
   {
     OutputTransaction outputs;
     outputs.stage(folder / "picture.png", bytes_of_text("the new picture"));
-    CHECK_THROWS_WITH(outputs.stage(folder / "counts.pgm", bytes_of_text("counts")),
-                      Catch::Contains((folder / "counts.pgm").string()) &&
-                          Catch::Contains("Is a directory"));
+    CHECK_THROWS_WITH(
+        outputs.stage(folder / "counts.pgm", bytes_of_text("counts")),
+        Catch::Contains((folder / "counts.pgm").string()) && Catch::Contains("Is a directory"));
   }
   CHECK(read(folder / "picture.png") == "the earlier picture");
   CHECK(names_in(folder) == std::vector<std::string>{"counts.pgm", "picture.png"});

@@ -1,4 +1,4 @@
-#include "pixel_diagram.hpp"
+#include "common/pixel_diagram.hpp"
 
 #include <algorithm>
 #include <array>

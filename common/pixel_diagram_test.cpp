@@ -1,5 +1,5 @@
 // The pixel diagram writer: where things land in the SVG, and that the output is stable.
-#include "pixel_diagram.hpp"
+#include "common/pixel_diagram.hpp"
 
 #include <catch2/catch.hpp>
 

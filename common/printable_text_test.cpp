@@ -1,4 +1,4 @@
-#include "printable_text.hpp"
+#include "common/printable_text.hpp"
 
 #include <catch2/catch.hpp>
 

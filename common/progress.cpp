@@ -1,9 +1,9 @@
-#include "progress.hpp"
+#include "common/progress.hpp"
 
 #include <cmath>
 #include <sstream>
 
-#include "cli.hpp"
+#include "common/cli.hpp"
 
 namespace tri {
 

@@ -1,4 +1,4 @@
-#include "progress.hpp"
+#include "common/progress.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -6,7 +6,7 @@
 #include <sstream>
 #include <thread>
 
-#include "cli.hpp"
+#include "common/cli.hpp"
 
 namespace tri {
 

@@ -1,4 +1,4 @@
-#include "scene.hpp"
+#include "common/scene.hpp"
 
 #include <cerrno>
 #include <charconv>
@@ -10,8 +10,8 @@
 #include <locale>
 #include <sstream>
 
-#include "canvas.hpp"
-#include "printable_text.hpp"
+#include "common/canvas.hpp"
+#include "common/printable_text.hpp"
 
 namespace tri {
 namespace {

@@ -15,7 +15,7 @@
 
 #include <glm/vec2.hpp>
 
-#include "color.hpp"
+#include "common/color.hpp"
 
 namespace tri {
 

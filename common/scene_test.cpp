@@ -10,7 +10,7 @@
 #include <utility>
 #include <variant>
 
-#include "scene.hpp"
+#include "common/scene.hpp"
 
 namespace tri {
 namespace {

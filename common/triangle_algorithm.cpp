@@ -1,9 +1,9 @@
-#include "triangle_algorithm.hpp"
+#include "common/triangle_algorithm.hpp"
 
 #include <cmath>
 #include <vector>
 
-#include "scene.hpp"
+#include "common/scene.hpp"
 
 namespace tri {
 

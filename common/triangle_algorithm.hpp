@@ -10,9 +10,9 @@
 
 #include <glm/vec2.hpp>
 
-#include "canvas.hpp"
-#include "color.hpp"
-#include "scene.hpp"
+#include "common/canvas.hpp"
+#include "common/color.hpp"
+#include "common/scene.hpp"
 
 namespace tri {
 

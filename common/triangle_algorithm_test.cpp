@@ -6,9 +6,9 @@
 #include <utility>
 #include <vector>
 
-#include "pixels.hpp"
-#include "scene.hpp"
-#include "triangle_algorithm.hpp"
+#include "common/scene.hpp"
+#include "common/triangle_algorithm.hpp"
+#include "tests/support/pixels.hpp"
 
 namespace tri {
 namespace {

@@ -7,10 +7,10 @@
 #include <span>
 #include <vector>
 
-#include "findings_abort.hpp"
-#include "rasterizer_check.hpp"
-#include "rasterizer_input.hpp"
-#include "registry.hpp"
+#include "fuzz/findings_abort.hpp"
+#include "fuzz/rasterizer_check.hpp"
+#include "fuzz/rasterizer_input.hpp"
+#include "measure/registry.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   // Read once: the registry is the same for every input.

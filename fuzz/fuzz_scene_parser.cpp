@@ -5,8 +5,8 @@
 #include <cstdint>
 #include <string_view>
 
-#include "findings_abort.hpp"
-#include "scene_parser_check.hpp"
+#include "fuzz/findings_abort.hpp"
+#include "fuzz/scene_parser_check.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);

@@ -3,9 +3,9 @@
 #include <filesystem>
 #include <iostream>
 
-#include "cli.hpp"
-#include "output_files.hpp"
-#include "rasterizer_seeds.hpp"
+#include "common/cli.hpp"
+#include "common/output_files.hpp"
+#include "fuzz/rasterizer_seeds.hpp"
 
 int main(int argc, char** argv) {
   const tri::CommandLine command_line(

@@ -1,11 +1,11 @@
-#include "rasterizer_check.hpp"
+#include "fuzz/rasterizer_check.hpp"
 
 #include <cmath>
 #include <cstddef>
 #include <locale>
 #include <sstream>
 
-#include "coverage_oracle.hpp"
+#include "chapters/07_exact_coverage/coverage_oracle.hpp"
 
 namespace tri::fuzz {
 namespace {

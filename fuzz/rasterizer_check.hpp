@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "rasterizer_input.hpp"
-#include "triangle_algorithm.hpp"
+#include "common/triangle_algorithm.hpp"
+#include "fuzz/rasterizer_input.hpp"
 
 namespace tri::fuzz {
 

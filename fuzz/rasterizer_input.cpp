@@ -1,4 +1,4 @@
-#include "rasterizer_input.hpp"
+#include "fuzz/rasterizer_input.hpp"
 
 #include <bit>
 #include <limits>

@@ -22,8 +22,8 @@
 #include <span>
 #include <vector>
 
-#include "scene.hpp"
-#include "triangle_algorithm.hpp"
+#include "common/scene.hpp"
+#include "common/triangle_algorithm.hpp"
 
 namespace tri::fuzz {
 

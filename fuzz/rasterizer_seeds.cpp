@@ -1,8 +1,8 @@
-#include "rasterizer_seeds.hpp"
+#include "fuzz/rasterizer_seeds.hpp"
 
 #include <limits>
 
-#include "rasterizer_input.hpp"
+#include "fuzz/rasterizer_input.hpp"
 
 namespace tri::fuzz {
 namespace {

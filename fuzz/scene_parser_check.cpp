@@ -1,12 +1,12 @@
-#include "scene_parser_check.hpp"
+#include "fuzz/scene_parser_check.hpp"
 
 #include <cmath>
 #include <exception>
 #include <sstream>
 #include <variant>
 
-#include "canvas.hpp"
-#include "triangle_algorithm.hpp"
+#include "common/canvas.hpp"
+#include "common/triangle_algorithm.hpp"
 
 namespace tri::fuzz {
 namespace {

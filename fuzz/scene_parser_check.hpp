@@ -7,7 +7,7 @@
 #include <string_view>
 #include <vector>
 
-#include "scene.hpp"
+#include "common/scene.hpp"
 
 namespace tri::fuzz {
 

@@ -4,9 +4,9 @@
 
 #include <string>
 
-#include "error_metrics.hpp"
-#include "registry.hpp"
-#include "scene_generators.hpp"
+#include "measure/error_metrics.hpp"
+#include "measure/registry.hpp"
+#include "measure/scene_generators.hpp"
 
 namespace {
 

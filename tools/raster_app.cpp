@@ -1,4 +1,4 @@
-#include "raster_app.hpp"
+#include "tools/raster_app.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -11,13 +11,13 @@
 
 #include <iostream>
 
-#include "cli.hpp"
-#include "image_io.hpp"
-#include "output_files.hpp"
-#include "printable_text.hpp"
-#include "progress.hpp"
-#include "registry.hpp"
-#include "render_scene.hpp"
+#include "common/cli.hpp"
+#include "common/image_io.hpp"
+#include "common/output_files.hpp"
+#include "common/printable_text.hpp"
+#include "common/progress.hpp"
+#include "measure/registry.hpp"
+#include "measure/render_scene.hpp"
 
 namespace tri {
 namespace {

@@ -9,11 +9,11 @@
 #include <string>
 #include <vector>
 
-#include "line_reference.hpp"
-#include "raster_app.hpp"
-#include "registry.hpp"
-#include "render_scene.hpp"
-#include "scene.hpp"
+#include "chapters/01_lines/line_reference.hpp"
+#include "common/scene.hpp"
+#include "measure/registry.hpp"
+#include "measure/render_scene.hpp"
+#include "tools/raster_app.hpp"
 
 namespace fs = std::filesystem;
 

@@ -1,4 +1,4 @@
-#include "interpolate.hpp"
+#include "chapters/01_lines/interpolate.hpp"
 
 #include <cstdint>
 

@@ -6,8 +6,8 @@
 #include <cstddef>
 #include <vector>
 
-#include "interpolate.hpp"
-#include "pixels.hpp"
+#include "chapters/01_lines/interpolate.hpp"
+#include "tests/support/pixels.hpp"
 
 using tri::ch01::interpolate;
 

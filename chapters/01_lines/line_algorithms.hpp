@@ -5,7 +5,7 @@
 #include <array>
 #include <string_view>
 
-#include "lines.hpp"
+#include "chapters/01_lines/lines.hpp"
 
 namespace tri::ch01 {
 

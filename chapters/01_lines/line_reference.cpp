@@ -1,4 +1,4 @@
-#include "line_reference.hpp"
+#include "chapters/01_lines/line_reference.hpp"
 
 #include <cstdlib>
 #include <utility>

@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "line_reference.hpp"
-#include "pixels.hpp"
+#include "chapters/01_lines/line_reference.hpp"
+#include "tests/support/pixels.hpp"
 
 using tri::ch01::exact_line_pixel_at;
 using tri::ch01::exact_line_pixels;

@@ -1,4 +1,4 @@
-#include "line_steps.hpp"
+#include "chapters/01_lines/line_steps.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,8 +7,8 @@
 #include <stdexcept>
 #include <utility>
 
-#include "canvas.hpp"
-#include "color.hpp"
+#include "common/canvas.hpp"
+#include "common/color.hpp"
 
 namespace tri::ch01 {
 

@@ -9,8 +9,8 @@
 
 #include <glm/vec2.hpp>
 
-#include "line_algorithms.hpp"
-#include "line_reference.hpp"
+#include "chapters/01_lines/line_algorithms.hpp"
+#include "chapters/01_lines/line_reference.hpp"
 
 namespace tri::ch01 {
 

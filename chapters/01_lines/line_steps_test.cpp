@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "line_steps.hpp"
+#include "chapters/01_lines/line_steps.hpp"
 
 using tri::ch01::line_algorithms;
 using tri::ch01::star_spokes;

@@ -1,4 +1,4 @@
-#include "lines.hpp"
+#include "chapters/01_lines/lines.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 #include <cstdlib>
 #include <utility>
 
-#include "interpolate.hpp"
+#include "chapters/01_lines/interpolate.hpp"
 
 namespace tri::ch01 {
 namespace {

@@ -10,9 +10,9 @@
 #include <utility>
 #include <vector>
 
-#include "line_algorithms.hpp"
-#include "line_reference.hpp"
-#include "pixels.hpp"
+#include "chapters/01_lines/line_algorithms.hpp"
+#include "chapters/01_lines/line_reference.hpp"
+#include "tests/support/pixels.hpp"
 
 using tri::Canvas;
 using tri::ch01::exact_line_pixel_at;

@@ -7,10 +7,10 @@
 #include <utility>
 #include <vector>
 
-#include "figures.hpp"
-#include "line_algorithms.hpp"
-#include "line_steps.hpp"
-#include "pixel_diagram.hpp"
+#include "chapters/01_lines/line_algorithms.hpp"
+#include "chapters/01_lines/line_steps.hpp"
+#include "common/figures.hpp"
+#include "common/pixel_diagram.hpp"
 
 namespace {
 

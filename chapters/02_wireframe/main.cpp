@@ -7,12 +7,12 @@
 #include <utility>
 #include <vector>
 
-#include "centered_view.hpp"
-#include "figures.hpp"
-#include "line_reference.hpp"
-#include "line_steps.hpp"
-#include "pixel_diagram.hpp"
-#include "wireframe.hpp"
+#include "chapters/01_lines/line_reference.hpp"
+#include "chapters/01_lines/line_steps.hpp"
+#include "chapters/02_wireframe/wireframe.hpp"
+#include "common/centered_view.hpp"
+#include "common/figures.hpp"
+#include "common/pixel_diagram.hpp"
 
 namespace {
 

@@ -1,9 +1,9 @@
-#include "wireframe.hpp"
+#include "chapters/02_wireframe/wireframe.hpp"
 
 #include <algorithm>
 #include <stdexcept>
 
-#include "lines.hpp"
+#include "chapters/01_lines/lines.hpp"
 
 namespace tri::ch02 {
 

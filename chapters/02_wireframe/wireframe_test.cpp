@@ -7,10 +7,10 @@
 
 #include <catch2/catch.hpp>
 
-#include "centered_view.hpp"
-#include "lines.hpp"
-#include "pixels.hpp"
-#include "wireframe.hpp"
+#include "chapters/01_lines/lines.hpp"
+#include "chapters/02_wireframe/wireframe.hpp"
+#include "common/centered_view.hpp"
+#include "tests/support/pixels.hpp"
 
 namespace {
 

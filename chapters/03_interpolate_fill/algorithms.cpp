@@ -1,8 +1,8 @@
-#include "algorithms.hpp"
+#include "chapters/03_interpolate_fill/algorithms.hpp"
 
 #include <array>
 
-#include "filled_triangle.hpp"
+#include "chapters/03_interpolate_fill/filled_triangle.hpp"
 
 namespace tri::ch03 {
 namespace {

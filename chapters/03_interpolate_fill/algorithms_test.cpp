@@ -5,8 +5,8 @@
 
 #include <catch2/catch.hpp>
 
-#include "algorithms.hpp"
-#include "test_helpers.hpp"
+#include "chapters/03_interpolate_fill/algorithms.hpp"
+#include "chapters/03_interpolate_fill/test_helpers.hpp"
 
 using namespace tri::ch03;
 using namespace tri::ch03::testing;

@@ -1,15 +1,15 @@
-#include "check_figures.hpp"
+#include "chapters/03_interpolate_fill/check_figures.hpp"
 
 #include <array>
 #include <cstdint>
 #include <vector>
 
-#include "canvas.hpp"
-#include "centered_view.hpp"
-#include "diagram_support.hpp"
-#include "fill_steps.hpp"
-#include "filled_triangle.hpp"
-#include "wireframe.hpp"
+#include "chapters/02_wireframe/wireframe.hpp"
+#include "chapters/03_interpolate_fill/diagram_support.hpp"
+#include "chapters/03_interpolate_fill/fill_steps.hpp"
+#include "chapters/03_interpolate_fill/filled_triangle.hpp"
+#include "common/canvas.hpp"
+#include "common/centered_view.hpp"
 
 namespace tri::ch03::figures {
 namespace {

@@ -1,4 +1,4 @@
-#include "diagram_support.hpp"
+#include "chapters/03_interpolate_fill/diagram_support.hpp"
 
 #include <algorithm>
 #include <array>

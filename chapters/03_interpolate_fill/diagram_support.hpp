@@ -8,7 +8,7 @@
 
 #include <glm/vec2.hpp>
 
-#include "pixel_diagram.hpp"
+#include "common/pixel_diagram.hpp"
 
 namespace tri::ch03::figures {
 

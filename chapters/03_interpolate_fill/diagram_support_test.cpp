@@ -3,10 +3,10 @@
 
 #include <catch2/catch.hpp>
 
-#include "diagram_support.hpp"
-#include "lines.hpp"
-#include "test_helpers.hpp"
-#include "wireframe.hpp"
+#include "chapters/01_lines/lines.hpp"
+#include "chapters/02_wireframe/wireframe.hpp"
+#include "chapters/03_interpolate_fill/diagram_support.hpp"
+#include "chapters/03_interpolate_fill/test_helpers.hpp"
 
 using namespace tri::ch03;
 using namespace tri::ch03::testing;

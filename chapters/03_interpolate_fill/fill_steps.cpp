@@ -1,4 +1,4 @@
-#include "fill_steps.hpp"
+#include "chapters/03_interpolate_fill/fill_steps.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <utility>
 
-#include "interpolate.hpp"
+#include "chapters/01_lines/interpolate.hpp"
 
 namespace tri::ch03 {
 namespace {

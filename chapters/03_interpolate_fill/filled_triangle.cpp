@@ -1,9 +1,9 @@
-#include "filled_triangle.hpp"
+#include "chapters/03_interpolate_fill/filled_triangle.hpp"
 
 #include <algorithm>
 #include <utility>
 
-#include "fill_steps.hpp"
+#include "chapters/03_interpolate_fill/fill_steps.hpp"
 
 namespace tri::ch03 {
 

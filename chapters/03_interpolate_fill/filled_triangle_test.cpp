@@ -6,7 +6,7 @@
 
 #include <catch2/catch.hpp>
 
-#include "test_helpers.hpp"
+#include "chapters/03_interpolate_fill/test_helpers.hpp"
 
 using namespace tri::ch03;
 using namespace tri::ch03::testing;

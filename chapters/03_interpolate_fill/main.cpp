@@ -1,8 +1,8 @@
 // Chapter 03's figures: each step of Gambetta's DrawFilledTriangle on the hand triangle, his
 // Figure 7-3 (the fill with the outline on top), and the traps of the C++ port, as diagrams.
-#include "check_figures.hpp"
-#include "figures.hpp"
-#include "step_figures.hpp"
+#include "chapters/03_interpolate_fill/check_figures.hpp"
+#include "chapters/03_interpolate_fill/step_figures.hpp"
+#include "common/figures.hpp"
 
 int main(int argc, char** argv) {
   using namespace tri::ch03::figures;

@@ -4,10 +4,10 @@
 
 #include <catch2/catch.hpp>
 
-#include "centered_view.hpp"
-#include "lines.hpp"
-#include "test_helpers.hpp"
-#include "wireframe.hpp"
+#include "chapters/01_lines/lines.hpp"
+#include "chapters/02_wireframe/wireframe.hpp"
+#include "chapters/03_interpolate_fill/test_helpers.hpp"
+#include "common/centered_view.hpp"
 
 using namespace tri::ch03;
 using namespace tri::ch03::testing;

@@ -1,12 +1,12 @@
-#include "step_figures.hpp"
+#include "chapters/03_interpolate_fill/step_figures.hpp"
 
 #include <array>
 #include <cstddef>
 #include <utility>
 #include <vector>
 
-#include "diagram_support.hpp"
-#include "fill_steps.hpp"
+#include "chapters/03_interpolate_fill/diagram_support.hpp"
+#include "chapters/03_interpolate_fill/fill_steps.hpp"
 
 namespace tri::ch03::figures {
 namespace {

@@ -7,9 +7,9 @@
 #include <iterator>
 #include <utility>
 
-#include "fill_steps.hpp"
-#include "filled_triangle.hpp"
-#include "pixels.hpp"
+#include "chapters/03_interpolate_fill/fill_steps.hpp"
+#include "chapters/03_interpolate_fill/filled_triangle.hpp"
+#include "tests/support/pixels.hpp"
 
 namespace tri::ch03::testing {
 

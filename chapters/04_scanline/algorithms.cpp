@@ -1,8 +1,8 @@
-#include "algorithms.hpp"
+#include "chapters/04_scanline/algorithms.hpp"
 
 #include <array>
 
-#include "scanline_fills.hpp"
+#include "chapters/04_scanline/scanline_fills.hpp"
 
 namespace tri::ch04 {
 namespace {

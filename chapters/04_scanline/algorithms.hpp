@@ -5,7 +5,7 @@
 
 #include <span>
 
-#include "triangle_algorithm.hpp"
+#include "common/triangle_algorithm.hpp"
 
 namespace tri::ch04 {
 

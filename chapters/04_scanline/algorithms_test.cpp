@@ -1,8 +1,8 @@
-#include "algorithms.hpp"
+#include "chapters/04_scanline/algorithms.hpp"
 
 #include <catch2/catch.hpp>
 
-#include "pixels.hpp"
+#include "tests/support/pixels.hpp"
 
 namespace {
 

@@ -1,4 +1,4 @@
-#include "boundaries.hpp"
+#include "chapters/04_scanline/boundaries.hpp"
 
 #include <utility>
 

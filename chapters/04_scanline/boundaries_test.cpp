@@ -1,11 +1,11 @@
-#include "boundaries.hpp"
+#include "chapters/04_scanline/boundaries.hpp"
 
 #include <catch2/catch.hpp>
 
-#include "article_triangles.hpp"
-#include "lower_half.hpp"
-#include "scanline_fills.hpp"
-#include "scanline_test_support.hpp"
+#include "chapters/04_scanline/article_triangles.hpp"
+#include "chapters/04_scanline/lower_half.hpp"
+#include "chapters/04_scanline/scanline_fills.hpp"
+#include "chapters/04_scanline/scanline_test_support.hpp"
 
 namespace {
 

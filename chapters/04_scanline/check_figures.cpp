@@ -1,13 +1,13 @@
-#include "check_figures.hpp"
+#include "chapters/04_scanline/check_figures.hpp"
 
 #include <array>
 #include <cstdint>
 #include <utility>
 #include <vector>
 
-#include "boundaries.hpp"
-#include "diagram_support.hpp"
-#include "scanline_fills.hpp"
+#include "chapters/04_scanline/boundaries.hpp"
+#include "chapters/04_scanline/diagram_support.hpp"
+#include "chapters/04_scanline/scanline_fills.hpp"
 
 namespace tri::ch04::figures {
 namespace {

@@ -1,4 +1,4 @@
-#include "diagram_support.hpp"
+#include "chapters/04_scanline/diagram_support.hpp"
 
 #include <algorithm>
 #include <array>
@@ -6,7 +6,7 @@
 
 #include <cstdint>
 
-#include "boundaries.hpp"
+#include "chapters/04_scanline/boundaries.hpp"
 
 namespace tri::ch04::figures {
 

@@ -8,9 +8,9 @@
 
 #include <glm/vec2.hpp>
 
-#include "article_triangles.hpp"
-#include "canvas.hpp"
-#include "pixel_diagram.hpp"
+#include "chapters/04_scanline/article_triangles.hpp"
+#include "common/canvas.hpp"
+#include "common/pixel_diagram.hpp"
 
 namespace tri::ch04::figures {
 

@@ -1,9 +1,9 @@
 // The pixel claims the README reads off the step diagrams of the green triangle.
 #include <catch2/catch.hpp>
 
-#include "boundaries.hpp"
-#include "diagram_support.hpp"
-#include "lower_half.hpp"
+#include "chapters/04_scanline/boundaries.hpp"
+#include "chapters/04_scanline/diagram_support.hpp"
+#include "chapters/04_scanline/lower_half.hpp"
 
 using namespace tri::ch04;
 using namespace tri::ch04::figures;

@@ -1,6 +1,6 @@
-#include "lower_half.hpp"
+#include "chapters/04_scanline/lower_half.hpp"
 
-#include "spans.hpp"
+#include "chapters/04_scanline/spans.hpp"
 
 namespace tri::ch04 {
 

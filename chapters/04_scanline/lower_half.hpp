@@ -7,9 +7,9 @@
 
 #include <glm/vec2.hpp>
 
-#include "boundaries.hpp"
-#include "canvas.hpp"
-#include "color.hpp"
+#include "chapters/04_scanline/boundaries.hpp"
+#include "common/canvas.hpp"
+#include "common/color.hpp"
 
 namespace tri::ch04 {
 

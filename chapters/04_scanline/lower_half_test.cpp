@@ -1,12 +1,12 @@
-#include "lower_half.hpp"
+#include "chapters/04_scanline/lower_half.hpp"
 
 #include <cstdlib>
 #include <map>
 
 #include <catch2/catch.hpp>
 
-#include "article_triangles.hpp"
-#include "scanline_test_support.hpp"
+#include "chapters/04_scanline/article_triangles.hpp"
+#include "chapters/04_scanline/scanline_test_support.hpp"
 
 namespace {
 

@@ -1,8 +1,8 @@
 // Chapter 04's figures: each step of tinyrenderer's scanline fill on the article's green
 // triangle, where the loop variants part ways, and the pixels the int casts add, as diagrams.
-#include "check_figures.hpp"
-#include "figures.hpp"
-#include "step_figures.hpp"
+#include "chapters/04_scanline/check_figures.hpp"
+#include "chapters/04_scanline/step_figures.hpp"
+#include "common/figures.hpp"
 
 int main(int argc, char** argv) {
   using namespace tri::ch04::figures;

@@ -1,7 +1,7 @@
-#include "outline_steps.hpp"
+#include "chapters/04_scanline/outline_steps.hpp"
 
-#include "boundaries.hpp"
-#include "lines.hpp"
+#include "chapters/01_lines/lines.hpp"
+#include "chapters/04_scanline/boundaries.hpp"
 
 namespace tri::ch04 {
 

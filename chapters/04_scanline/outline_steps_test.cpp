@@ -1,11 +1,11 @@
-#include "outline_steps.hpp"
+#include "chapters/04_scanline/outline_steps.hpp"
 
 #include <catch2/catch.hpp>
 
-#include "article_triangles.hpp"
-#include "boundaries.hpp"
-#include "lines.hpp"
-#include "scanline_test_support.hpp"
+#include "chapters/01_lines/lines.hpp"
+#include "chapters/04_scanline/article_triangles.hpp"
+#include "chapters/04_scanline/boundaries.hpp"
+#include "chapters/04_scanline/scanline_test_support.hpp"
 
 namespace {
 

@@ -1,6 +1,6 @@
-#include "scanline_fills.hpp"
+#include "chapters/04_scanline/scanline_fills.hpp"
 
-#include "spans.hpp"
+#include "chapters/04_scanline/spans.hpp"
 
 namespace tri::ch04 {
 namespace {

@@ -7,10 +7,10 @@
 
 #include <glm/vec2.hpp>
 
-#include "boundaries.hpp"
-#include "canvas.hpp"
-#include "color.hpp"
-#include "lower_half.hpp"
+#include "chapters/04_scanline/boundaries.hpp"
+#include "chapters/04_scanline/lower_half.hpp"
+#include "common/canvas.hpp"
+#include "common/color.hpp"
 
 namespace tri::ch04 {
 

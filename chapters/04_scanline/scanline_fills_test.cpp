@@ -1,9 +1,9 @@
-#include "scanline_fills.hpp"
+#include "chapters/04_scanline/scanline_fills.hpp"
 
 #include <catch2/catch.hpp>
 
-#include "article_triangles.hpp"
-#include "scanline_test_support.hpp"
+#include "chapters/04_scanline/article_triangles.hpp"
+#include "chapters/04_scanline/scanline_test_support.hpp"
 
 namespace {
 

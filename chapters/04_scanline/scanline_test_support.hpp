@@ -9,8 +9,8 @@
 
 #include <glm/vec2.hpp>
 
-#include "canvas.hpp"
-#include "pixels.hpp"
+#include "common/canvas.hpp"
+#include "tests/support/pixels.hpp"
 
 namespace tri::ch04::testing {
 

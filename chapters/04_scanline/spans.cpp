@@ -1,4 +1,4 @@
-#include "spans.hpp"
+#include "chapters/04_scanline/spans.hpp"
 
 #include <algorithm>
 #include <utility>

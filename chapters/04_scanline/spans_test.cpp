@@ -1,8 +1,8 @@
-#include "spans.hpp"
+#include "chapters/04_scanline/spans.hpp"
 
 #include <catch2/catch.hpp>
 
-#include "pixels.hpp"
+#include "tests/support/pixels.hpp"
 
 using tri::testing::PixelSet;
 using tri::testing::written_pixels;

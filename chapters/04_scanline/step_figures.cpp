@@ -1,14 +1,14 @@
-#include "step_figures.hpp"
+#include "chapters/04_scanline/step_figures.hpp"
 
 #include <cstdint>
 #include <cstdlib>
 #include <vector>
 
-#include "boundaries.hpp"
-#include "diagram_support.hpp"
-#include "lower_half.hpp"
-#include "outline_steps.hpp"
-#include "scanline_fills.hpp"
+#include "chapters/04_scanline/boundaries.hpp"
+#include "chapters/04_scanline/diagram_support.hpp"
+#include "chapters/04_scanline/lower_half.hpp"
+#include "chapters/04_scanline/outline_steps.hpp"
+#include "chapters/04_scanline/scanline_fills.hpp"
 
 namespace tri::ch04::figures {
 namespace {

@@ -1,8 +1,8 @@
-#include "algorithms.hpp"
+#include "chapters/05_edge_function/algorithms.hpp"
 
 #include <array>
 
-#include "edge_function_fill.hpp"
+#include "chapters/05_edge_function/edge_function_fill.hpp"
 
 namespace tri::ch05 {
 

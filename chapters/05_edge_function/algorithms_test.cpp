@@ -3,8 +3,8 @@
 
 #include <catch2/catch.hpp>
 
-#include "algorithms.hpp"
-#include "pixels.hpp"
+#include "chapters/05_edge_function/algorithms.hpp"
+#include "tests/support/pixels.hpp"
 
 using tri::Canvas;
 using tri::DrawResult;

@@ -1,4 +1,4 @@
-#include "bounding_box.hpp"
+#include "chapters/05_edge_function/bounding_box.hpp"
 
 #include <algorithm>
 

@@ -2,7 +2,7 @@
 
 #include <catch2/catch.hpp>
 
-#include "bounding_box.hpp"
+#include "chapters/05_edge_function/bounding_box.hpp"
 
 using tri::ch05::bounding_box_on_canvas;
 using tri::ch05::PixelBox;

@@ -1,4 +1,4 @@
-#include "cross_product.hpp"
+#include "chapters/05_edge_function/cross_product.hpp"
 
 namespace tri::ch05 {
 namespace {

@@ -2,8 +2,8 @@
 
 #include <catch2/catch.hpp>
 
-#include "cross_product.hpp"
-#include "pixels.hpp"
+#include "chapters/05_edge_function/cross_product.hpp"
+#include "tests/support/pixels.hpp"
 
 using tri::ch05::cross_2d;
 using tri::ch05::edge_cross;

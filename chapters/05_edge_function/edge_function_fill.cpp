@@ -1,7 +1,7 @@
-#include "edge_function_fill.hpp"
+#include "chapters/05_edge_function/edge_function_fill.hpp"
 
-#include "bounding_box.hpp"
-#include "point_in_triangle.hpp"
+#include "chapters/05_edge_function/bounding_box.hpp"
+#include "chapters/05_edge_function/point_in_triangle.hpp"
 
 namespace tri::ch05 {
 namespace {

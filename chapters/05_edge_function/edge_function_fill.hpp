@@ -5,8 +5,8 @@
 
 #include <glm/vec2.hpp>
 
-#include "canvas.hpp"
-#include "color.hpp"
+#include "common/canvas.hpp"
+#include "common/color.hpp"
 
 namespace tri::ch05 {
 

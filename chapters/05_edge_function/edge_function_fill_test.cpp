@@ -6,9 +6,9 @@
 
 #include <catch2/catch.hpp>
 
-#include "cross_product.hpp"
-#include "edge_function_fill.hpp"
-#include "pixels.hpp"
+#include "chapters/05_edge_function/cross_product.hpp"
+#include "chapters/05_edge_function/edge_function_fill.hpp"
+#include "tests/support/pixels.hpp"
 
 using tri::Canvas;
 using tri::ch05::fill_triangle_edge_function;

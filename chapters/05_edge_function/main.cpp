@@ -5,13 +5,13 @@
 #include <string>
 #include <vector>
 
-#include "bounding_box.hpp"
-#include "cross_product.hpp"
-#include "edge_function_fill.hpp"
-#include "figures.hpp"
-#include "lines.hpp"
-#include "pixel_diagram.hpp"
-#include "point_in_triangle.hpp"
+#include "chapters/01_lines/lines.hpp"
+#include "chapters/05_edge_function/bounding_box.hpp"
+#include "chapters/05_edge_function/cross_product.hpp"
+#include "chapters/05_edge_function/edge_function_fill.hpp"
+#include "chapters/05_edge_function/point_in_triangle.hpp"
+#include "common/figures.hpp"
+#include "common/pixel_diagram.hpp"
 
 namespace {
 

@@ -1,6 +1,6 @@
-#include "point_in_triangle.hpp"
+#include "chapters/05_edge_function/point_in_triangle.hpp"
 
-#include "cross_product.hpp"
+#include "chapters/05_edge_function/cross_product.hpp"
 
 namespace tri::ch05 {
 

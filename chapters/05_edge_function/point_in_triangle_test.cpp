@@ -3,9 +3,9 @@
 
 #include <catch2/catch.hpp>
 
-#include "cross_product.hpp"
-#include "pixels.hpp"
-#include "point_in_triangle.hpp"
+#include "chapters/05_edge_function/cross_product.hpp"
+#include "chapters/05_edge_function/point_in_triangle.hpp"
+#include "tests/support/pixels.hpp"
 
 using tri::ch05::edge_cross;
 using tri::ch05::edge_crosses;

@@ -1,8 +1,8 @@
-#include "algorithms.hpp"
+#include "chapters/06_barycentric/algorithms.hpp"
 
 #include <array>
 
-#include "fill.hpp"
+#include "chapters/06_barycentric/fill.hpp"
 
 namespace tri::ch06 {
 namespace {

@@ -2,9 +2,9 @@
 
 #include <catch2/catch.hpp>
 
-#include "algorithms.hpp"
-#include "fill.hpp"
-#include "random_triangles.hpp"
+#include "chapters/06_barycentric/algorithms.hpp"
+#include "chapters/06_barycentric/fill.hpp"
+#include "chapters/06_barycentric/random_triangles.hpp"
 
 using tri::Canvas;
 using tri::CoverageRule;

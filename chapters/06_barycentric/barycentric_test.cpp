@@ -4,10 +4,10 @@
 
 #include <catch2/catch.hpp>
 
-#include "barycentric.hpp"
-#include "examples.hpp"
-#include "pixels.hpp"
-#include "random_triangles.hpp"
+#include "chapters/06_barycentric/barycentric.hpp"
+#include "chapters/06_barycentric/examples.hpp"
+#include "chapters/06_barycentric/random_triangles.hpp"
+#include "tests/support/pixels.hpp"
 
 using tri::ch06::barycentric;
 using tri::ch06::barycentric_unguarded;

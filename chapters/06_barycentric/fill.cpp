@@ -1,10 +1,10 @@
-#include "fill.hpp"
+#include "chapters/06_barycentric/fill.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "barycentric.hpp"
-#include "bounding_box.hpp"
+#include "chapters/05_edge_function/bounding_box.hpp"
+#include "chapters/06_barycentric/barycentric.hpp"
 
 namespace tri::ch06 {
 namespace {

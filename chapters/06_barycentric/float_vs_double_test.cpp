@@ -5,11 +5,11 @@
 
 #include <catch2/catch.hpp>
 
-#include "barycentric.hpp"
-#include "examples.hpp"
-#include "fill.hpp"
-#include "pixels.hpp"
-#include "random_triangles.hpp"
+#include "chapters/06_barycentric/barycentric.hpp"
+#include "chapters/06_barycentric/examples.hpp"
+#include "chapters/06_barycentric/fill.hpp"
+#include "chapters/06_barycentric/random_triangles.hpp"
+#include "tests/support/pixels.hpp"
 
 using tri::Canvas;
 using tri::ch06::fill_triangle_barycentric;

@@ -5,12 +5,12 @@
 #include <string>
 #include <vector>
 
-#include "barycentric.hpp"
-#include "bounding_box.hpp"
-#include "examples.hpp"
-#include "figures.hpp"
-#include "fill.hpp"
-#include "pixel_diagram.hpp"
+#include "chapters/05_edge_function/bounding_box.hpp"
+#include "chapters/06_barycentric/barycentric.hpp"
+#include "chapters/06_barycentric/examples.hpp"
+#include "chapters/06_barycentric/fill.hpp"
+#include "common/figures.hpp"
+#include "common/pixel_diagram.hpp"
 
 namespace {
 

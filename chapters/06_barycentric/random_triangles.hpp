@@ -2,9 +2,9 @@
 /// Seeded random triangles for chapter 06's tests, and the fill they test (tests only).
 #pragma once
 
-#include "examples.hpp"
-#include "fill.hpp"
-#include "pixels.hpp"
+#include "chapters/06_barycentric/examples.hpp"
+#include "chapters/06_barycentric/fill.hpp"
+#include "tests/support/pixels.hpp"
 
 namespace tri::ch06::testing {
 

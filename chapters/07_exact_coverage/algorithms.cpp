@@ -1,9 +1,9 @@
-#include "algorithms.hpp"
+#include "chapters/07_exact_coverage/algorithms.hpp"
 
 #include <array>
 
-#include "coverage_oracle.hpp"
-#include "fixed_point.hpp"
+#include "chapters/07_exact_coverage/coverage_oracle.hpp"
+#include "chapters/07_exact_coverage/fixed_point.hpp"
 
 namespace tri::ch07 {
 

@@ -4,7 +4,7 @@
 
 #include <span>
 
-#include "triangle_algorithm.hpp"
+#include "common/triangle_algorithm.hpp"
 
 namespace tri::ch07 {
 

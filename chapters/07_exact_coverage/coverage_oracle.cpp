@@ -1,10 +1,10 @@
-#include "coverage_oracle.hpp"
+#include "chapters/07_exact_coverage/coverage_oracle.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <utility>
 
-#include "exact_orientation.hpp"
+#include "chapters/07_exact_coverage/exact_orientation.hpp"
 
 namespace tri::ch07 {
 

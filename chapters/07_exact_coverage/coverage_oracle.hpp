@@ -6,9 +6,9 @@
 
 #include <glm/vec2.hpp>
 
-#include "canvas.hpp"
-#include "color.hpp"
-#include "triangle_algorithm.hpp"
+#include "common/canvas.hpp"
+#include "common/color.hpp"
+#include "common/triangle_algorithm.hpp"
 
 namespace tri::ch07 {
 

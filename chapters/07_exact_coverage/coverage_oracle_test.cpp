@@ -1,7 +1,7 @@
 #include <catch2/catch.hpp>
 
-#include "coverage_oracle.hpp"
-#include "pixels.hpp"
+#include "chapters/07_exact_coverage/coverage_oracle.hpp"
+#include "tests/support/pixels.hpp"
 
 using tri::Triangle;
 using tri::testing::PixelSet;

@@ -1,4 +1,4 @@
-#include "exact_orientation.hpp"
+#include "chapters/07_exact_coverage/exact_orientation.hpp"
 
 #include <algorithm>
 #include <array>

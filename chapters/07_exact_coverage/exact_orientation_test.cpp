@@ -3,8 +3,8 @@
 #include <cmath>
 #include <limits>
 
-#include "exact_orientation.hpp"
-#include "pixels.hpp"
+#include "chapters/07_exact_coverage/exact_orientation.hpp"
+#include "tests/support/pixels.hpp"
 
 using tri::ch07::exact_orientation;
 using tri::ch07::exact_orientation_slow_path;

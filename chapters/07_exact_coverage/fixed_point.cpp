@@ -1,4 +1,4 @@
-#include "fixed_point.hpp"
+#include "chapters/07_exact_coverage/fixed_point.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -5,9 +5,9 @@
 
 #include <cstdint>
 
-#include "canvas.hpp"
-#include "color.hpp"
-#include "triangle_algorithm.hpp"
+#include "common/canvas.hpp"
+#include "common/color.hpp"
+#include "common/triangle_algorithm.hpp"
 
 namespace tri::ch07 {
 

@@ -5,10 +5,10 @@
 
 #include <glm/geometric.hpp>
 
-#include "algorithms.hpp"
-#include "coverage_oracle.hpp"
-#include "fixed_point.hpp"
-#include "pixels.hpp"
+#include "chapters/07_exact_coverage/algorithms.hpp"
+#include "chapters/07_exact_coverage/coverage_oracle.hpp"
+#include "chapters/07_exact_coverage/fixed_point.hpp"
+#include "tests/support/pixels.hpp"
 
 using tri::Triangle;
 using tri::ch07::SubpixelPoint;

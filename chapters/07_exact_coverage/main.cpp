@@ -11,14 +11,14 @@
 
 #include <glm/geometric.hpp>
 
-#include "coverage_oracle.hpp"
-#include "edge_function_fill.hpp"
-#include "exact_orientation.hpp"
-#include "figures.hpp"
-#include "fill.hpp"
-#include "fixed_point.hpp"
-#include "pixel_diagram.hpp"
-#include "random.hpp"
+#include "chapters/05_edge_function/edge_function_fill.hpp"
+#include "chapters/06_barycentric/fill.hpp"
+#include "chapters/07_exact_coverage/coverage_oracle.hpp"
+#include "chapters/07_exact_coverage/exact_orientation.hpp"
+#include "chapters/07_exact_coverage/fixed_point.hpp"
+#include "common/figures.hpp"
+#include "common/pixel_diagram.hpp"
+#include "common/random.hpp"
 
 namespace {
 

@@ -7,8 +7,8 @@
 
 #include <array>
 
-#include "coverage_oracle.hpp"
-#include "fixed_point.hpp"
+#include "chapters/07_exact_coverage/coverage_oracle.hpp"
+#include "chapters/07_exact_coverage/fixed_point.hpp"
 
 using tri::Triangle;
 

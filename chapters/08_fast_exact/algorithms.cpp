@@ -1,13 +1,13 @@
-#include "algorithms.hpp"
+#include "chapters/08_fast_exact/algorithms.hpp"
 
 #include <array>
 
-#include "blocks.hpp"
-#include "hybrid.hpp"
-#include "incremental.hpp"
-#include "simd.hpp"
-#include "spans.hpp"
-#include "threaded.hpp"
+#include "chapters/08_fast_exact/blocks.hpp"
+#include "chapters/08_fast_exact/hybrid.hpp"
+#include "chapters/08_fast_exact/incremental.hpp"
+#include "chapters/08_fast_exact/simd.hpp"
+#include "chapters/08_fast_exact/spans.hpp"
+#include "chapters/08_fast_exact/threaded.hpp"
 
 namespace tri::ch08 {
 

@@ -1,9 +1,9 @@
-#include "blocks.hpp"
+#include "chapters/08_fast_exact/blocks.hpp"
 
 #include <algorithm>
 #include <cstdint>
 
-#include "pixel_writers.hpp"
+#include "chapters/08_fast_exact/pixel_writers.hpp"
 
 namespace tri::ch08 {
 

@@ -7,12 +7,12 @@
 #include <algorithm>
 #include <cstdint>
 
-#include "canvas.hpp"
-#include "color.hpp"
-#include "fixed_point.hpp"
-#include "incremental.hpp"
-#include "triangle_algorithm.hpp"
-#include "triangle_setup.hpp"
+#include "chapters/07_exact_coverage/fixed_point.hpp"
+#include "chapters/08_fast_exact/incremental.hpp"
+#include "chapters/08_fast_exact/triangle_setup.hpp"
+#include "common/canvas.hpp"
+#include "common/color.hpp"
+#include "common/triangle_algorithm.hpp"
 
 namespace tri::ch08 {
 

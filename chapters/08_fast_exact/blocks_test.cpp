@@ -3,8 +3,8 @@
 #include <map>
 #include <utility>
 
-#include "blocks.hpp"
-#include "test_triangles.hpp"
+#include "chapters/08_fast_exact/blocks.hpp"
+#include "chapters/08_fast_exact/test_triangles.hpp"
 
 using tri::Triangle;
 using tri::ch07::PixelRange;

@@ -5,10 +5,10 @@
 #include <limits>
 #include <vector>
 
-#include "algorithms.hpp"
-#include "coverage_oracle.hpp"
-#include "fixed_point.hpp"
-#include "test_triangles.hpp"
+#include "chapters/07_exact_coverage/coverage_oracle.hpp"
+#include "chapters/07_exact_coverage/fixed_point.hpp"
+#include "chapters/08_fast_exact/algorithms.hpp"
+#include "chapters/08_fast_exact/test_triangles.hpp"
 
 using tri::Canvas;
 using tri::Triangle;

@@ -1,7 +1,7 @@
-#include "hybrid.hpp"
+#include "chapters/08_fast_exact/hybrid.hpp"
 
-#include "simd.hpp"
-#include "spans.hpp"
+#include "chapters/08_fast_exact/simd.hpp"
+#include "chapters/08_fast_exact/spans.hpp"
 
 namespace tri::ch08 {
 namespace {

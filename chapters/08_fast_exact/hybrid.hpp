@@ -5,12 +5,12 @@
 
 #include <span>
 
-#include "canvas.hpp"
-#include "color.hpp"
-#include "pixel_writers.hpp"
-#include "scene.hpp"
-#include "triangle_algorithm.hpp"
-#include "triangle_setup.hpp"
+#include "chapters/08_fast_exact/pixel_writers.hpp"
+#include "chapters/08_fast_exact/triangle_setup.hpp"
+#include "common/canvas.hpp"
+#include "common/color.hpp"
+#include "common/scene.hpp"
+#include "common/triangle_algorithm.hpp"
 
 namespace tri::ch08 {
 

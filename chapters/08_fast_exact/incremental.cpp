@@ -1,4 +1,4 @@
-#include "incremental.hpp"
+#include "chapters/08_fast_exact/incremental.hpp"
 
 namespace tri::ch08 {
 

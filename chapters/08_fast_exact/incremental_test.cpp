@@ -3,8 +3,8 @@
 #include <cstdint>
 #include <limits>
 
-#include "incremental.hpp"
-#include "test_triangles.hpp"
+#include "chapters/08_fast_exact/incremental.hpp"
+#include "chapters/08_fast_exact/test_triangles.hpp"
 
 using tri::Triangle;
 

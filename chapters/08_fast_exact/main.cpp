@@ -5,14 +5,14 @@
 #include <string>
 #include <vector>
 
-#include "blocks.hpp"
-#include "figures.hpp"
-#include "pixel_diagram.hpp"
-#include "random.hpp"
-#include "simd.hpp"
-#include "spans.hpp"
-#include "threaded.hpp"
-#include "triangle_setup.hpp"
+#include "chapters/08_fast_exact/blocks.hpp"
+#include "chapters/08_fast_exact/simd.hpp"
+#include "chapters/08_fast_exact/spans.hpp"
+#include "chapters/08_fast_exact/threaded.hpp"
+#include "chapters/08_fast_exact/triangle_setup.hpp"
+#include "common/figures.hpp"
+#include "common/pixel_diagram.hpp"
+#include "common/random.hpp"
 
 namespace {
 

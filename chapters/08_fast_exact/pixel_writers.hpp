@@ -11,8 +11,8 @@
 #include <cstdint>
 #include <cstring>
 
-#include "canvas.hpp"
-#include "color.hpp"
+#include "common/canvas.hpp"
+#include "common/color.hpp"
 
 namespace tri::ch08 {
 

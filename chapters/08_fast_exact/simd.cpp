@@ -1,9 +1,9 @@
-#include "simd.hpp"
+#include "chapters/08_fast_exact/simd.hpp"
 
 #include <cstdint>
 #include <cstring>
 
-#include "blocks.hpp"
+#include "chapters/08_fast_exact/blocks.hpp"
 
 namespace tri::ch08 {
 namespace {

@@ -4,8 +4,8 @@
 #include <cstdint>
 #include <limits>
 
-#include "simd.hpp"
-#include "test_triangles.hpp"
+#include "chapters/08_fast_exact/simd.hpp"
+#include "chapters/08_fast_exact/test_triangles.hpp"
 
 using tri::Triangle;
 using tri::ch08::LaneWidth;

@@ -1,4 +1,4 @@
-#include "spans.hpp"
+#include "chapters/08_fast_exact/spans.hpp"
 
 #include <algorithm>
 

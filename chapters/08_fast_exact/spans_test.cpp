@@ -2,8 +2,8 @@
 
 #include <cmath>
 
-#include "spans.hpp"
-#include "test_triangles.hpp"
+#include "chapters/08_fast_exact/spans.hpp"
+#include "chapters/08_fast_exact/test_triangles.hpp"
 
 using tri::Triangle;
 using tri::ch08::RowSpan;

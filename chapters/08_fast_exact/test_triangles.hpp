@@ -5,9 +5,9 @@
 
 #include <cmath>
 
-#include "pixels.hpp"
-#include "triangle_algorithm.hpp"
-#include "triangle_setup.hpp"
+#include "chapters/08_fast_exact/triangle_setup.hpp"
+#include "common/triangle_algorithm.hpp"
+#include "tests/support/pixels.hpp"
 
 namespace tri::ch08::testing {
 

@@ -1,4 +1,4 @@
-#include "threaded.hpp"
+#include "chapters/08_fast_exact/threaded.hpp"
 
 #include <algorithm>
 #include <cstdint>
@@ -6,9 +6,9 @@
 #include <thread>
 #include <vector>
 
-#include "hybrid.hpp"
-#include "pixel_writers.hpp"
-#include "triangle_setup.hpp"
+#include "chapters/08_fast_exact/hybrid.hpp"
+#include "chapters/08_fast_exact/pixel_writers.hpp"
+#include "chapters/08_fast_exact/triangle_setup.hpp"
 
 namespace tri::ch08 {
 namespace {

@@ -6,10 +6,10 @@
 
 #include <span>
 
-#include "canvas.hpp"
-#include "color.hpp"
-#include "scene.hpp"
-#include "triangle_algorithm.hpp"
+#include "common/canvas.hpp"
+#include "common/color.hpp"
+#include "common/scene.hpp"
+#include "common/triangle_algorithm.hpp"
 
 namespace tri::ch08 {
 

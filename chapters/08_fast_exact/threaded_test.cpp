@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <vector>
 
-#include "hybrid.hpp"
-#include "test_triangles.hpp"
-#include "threaded.hpp"
+#include "chapters/08_fast_exact/hybrid.hpp"
+#include "chapters/08_fast_exact/test_triangles.hpp"
+#include "chapters/08_fast_exact/threaded.hpp"
 
 using tri::Canvas;
 using tri::SceneTriangle;

@@ -1,4 +1,4 @@
-#include "triangle_setup.hpp"
+#include "chapters/08_fast_exact/triangle_setup.hpp"
 
 #include <algorithm>
 #include <utility>

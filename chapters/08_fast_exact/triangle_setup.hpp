@@ -7,9 +7,9 @@
 #include <cstdint>
 #include <optional>
 
-#include "canvas.hpp"
-#include "fixed_point.hpp"
-#include "triangle_algorithm.hpp"
+#include "chapters/07_exact_coverage/fixed_point.hpp"
+#include "common/canvas.hpp"
+#include "common/triangle_algorithm.hpp"
 
 namespace tri::ch08 {
 

@@ -3,10 +3,10 @@
 #include <cmath>
 #include <limits>
 
-#include "coverage_oracle.hpp"
-#include "fixed_point.hpp"
-#include "test_triangles.hpp"
-#include "triangle_setup.hpp"
+#include "chapters/07_exact_coverage/coverage_oracle.hpp"
+#include "chapters/07_exact_coverage/fixed_point.hpp"
+#include "chapters/08_fast_exact/test_triangles.hpp"
+#include "chapters/08_fast_exact/triangle_setup.hpp"
 
 using tri::Triangle;
 using tri::ch08::TriangleSetup;

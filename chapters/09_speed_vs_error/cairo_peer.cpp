@@ -1,4 +1,4 @@
-#include "cairo_peer.hpp"
+#include "chapters/09_speed_vs_error/cairo_peer.hpp"
 
 #include <cairo.h>
 
@@ -8,7 +8,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "y_down_peer.hpp"
+#include "chapters/09_speed_vs_error/y_down_peer.hpp"
 
 namespace tri::ch09 {
 namespace {

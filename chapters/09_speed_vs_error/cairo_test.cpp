@@ -4,8 +4,8 @@
 #include <algorithm>
 #include <numeric>
 
-#include "cairo_peer.hpp"
-#include "peer_test_support.hpp"
+#include "chapters/09_speed_vs_error/cairo_peer.hpp"
+#include "chapters/09_speed_vs_error/peer_test_support.hpp"
 
 using namespace tri::ch09::test;
 using Kind = tri::SceneRecipe::Kind;

@@ -1,4 +1,4 @@
-#include "child_process.hpp"
+#include "chapters/09_speed_vs_error/child_process.hpp"
 
 #include <unistd.h>
 

@@ -1,13 +1,13 @@
-#include "external_peers.hpp"
+#include "chapters/09_speed_vs_error/external_peers.hpp"
 
 #if TUTORIAL_WITH_OSMESA
-#include "llvmpipe_peer.hpp"
+#include "chapters/09_speed_vs_error/llvmpipe_peer.hpp"
 #endif
 #if TUTORIAL_WITH_PIXMAN
-#include "pixman_peer.hpp"
+#include "chapters/09_speed_vs_error/pixman_peer.hpp"
 #endif
 #if TUTORIAL_WITH_CAIRO
-#include "cairo_peer.hpp"
+#include "chapters/09_speed_vs_error/cairo_peer.hpp"
 #endif
 
 namespace tri::ch09 {

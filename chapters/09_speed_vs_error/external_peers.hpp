@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "measure.hpp"
+#include "chapters/09_speed_vs_error/measure.hpp"
 
 namespace tri::ch09 {
 

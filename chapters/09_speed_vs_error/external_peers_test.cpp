@@ -1,10 +1,10 @@
-#include "external_peers.hpp"
+#include "chapters/09_speed_vs_error/external_peers.hpp"
 
 #include <catch2/catch.hpp>
 #include <set>
 #include <string>
 
-#include "registry.hpp"
+#include "measure/registry.hpp"
 
 TEST_CASE("External peers have their own names, filed under 'external'", "[external_peers]") {
   const auto peers = tri::ch09::external_peers();

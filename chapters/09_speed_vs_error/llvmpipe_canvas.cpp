@@ -1,4 +1,4 @@
-#include "llvmpipe_canvas.hpp"
+#include "chapters/09_speed_vs_error/llvmpipe_canvas.hpp"
 
 #define GL_GLEXT_PROTOTYPES 1  // glGenBuffers and friends, which OSMesa's library exports
 #include <GL/gl.h>

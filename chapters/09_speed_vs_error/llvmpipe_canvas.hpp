@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "error_metrics.hpp"
-#include "scene.hpp"
+#include "common/scene.hpp"
+#include "measure/error_metrics.hpp"
 
 namespace tri::ch09 {
 

@@ -1,12 +1,12 @@
-#include "llvmpipe_peer.hpp"
+#include "chapters/09_speed_vs_error/llvmpipe_peer.hpp"
 
 #include <cstdlib>
 #include <numeric>
 #include <optional>
 #include <string>
 
-#include "child_process.hpp"
-#include "llvmpipe_canvas.hpp"
+#include "chapters/09_speed_vs_error/child_process.hpp"
+#include "chapters/09_speed_vs_error/llvmpipe_canvas.hpp"
 
 namespace tri::ch09 {
 

@@ -5,7 +5,7 @@
 
 #include <vector>
 
-#include "measure.hpp"
+#include "chapters/09_speed_vs_error/measure.hpp"
 
 namespace tri::ch09 {
 

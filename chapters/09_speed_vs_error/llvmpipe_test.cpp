@@ -5,14 +5,14 @@
 #include <numeric>
 #include <vector>
 
-#include "child_process.hpp"
-#include "error_metrics.hpp"
-#include "llvmpipe_canvas.hpp"
-#include "llvmpipe_peer.hpp"
-#include "peer_test_support.hpp"
-#include "registry.hpp"
-#include "render_scene.hpp"
-#include "scene_generators.hpp"
+#include "chapters/09_speed_vs_error/child_process.hpp"
+#include "chapters/09_speed_vs_error/llvmpipe_canvas.hpp"
+#include "chapters/09_speed_vs_error/llvmpipe_peer.hpp"
+#include "chapters/09_speed_vs_error/peer_test_support.hpp"
+#include "measure/error_metrics.hpp"
+#include "measure/registry.hpp"
+#include "measure/render_scene.hpp"
+#include "measure/scene_generators.hpp"
 
 using tri::ch09::LlvmpipeCanvas;
 using tri::ch09::test::oracle_counts;

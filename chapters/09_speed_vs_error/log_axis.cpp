@@ -1,4 +1,4 @@
-#include "log_axis.hpp"
+#include "chapters/09_speed_vs_error/log_axis.hpp"
 
 #include <algorithm>
 #include <cmath>

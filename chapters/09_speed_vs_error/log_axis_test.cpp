@@ -3,8 +3,8 @@
 
 #include <catch2/catch.hpp>
 
-#include "log_axis.hpp"
-#include "random.hpp"
+#include "chapters/09_speed_vs_error/log_axis.hpp"
+#include "common/random.hpp"
 
 using tri::ch09::DecadeRange;
 using tri::ch09::ErrorAxis;

@@ -1,9 +1,9 @@
-#include "machine.hpp"
+#include "chapters/09_speed_vs_error/machine.hpp"
 
 #include <fstream>
 #include <thread>
 
-#include "external_peers.hpp"
+#include "chapters/09_speed_vs_error/external_peers.hpp"
 
 namespace tri::ch09 {
 namespace {

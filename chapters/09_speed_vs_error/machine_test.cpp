@@ -2,8 +2,8 @@
 
 #include <catch2/catch.hpp>
 
-#include "external_peers.hpp"
-#include "machine.hpp"
+#include "chapters/09_speed_vs_error/external_peers.hpp"
+#include "chapters/09_speed_vs_error/machine.hpp"
 
 TEST_CASE("The CPU model is the first model name line of /proc/cpuinfo", "[machine]") {
   std::istringstream cpuinfo(

@@ -7,13 +7,13 @@
 #include <string>
 #include <vector>
 
-#include "cli.hpp"
-#include "external_peers.hpp"
-#include "measure.hpp"
-#include "output_files.hpp"
-#include "registry.hpp"
-#include "report.hpp"
-#include "suites.hpp"
+#include "chapters/09_speed_vs_error/external_peers.hpp"
+#include "chapters/09_speed_vs_error/measure.hpp"
+#include "chapters/09_speed_vs_error/report.hpp"
+#include "chapters/09_speed_vs_error/suites.hpp"
+#include "common/cli.hpp"
+#include "common/output_files.hpp"
+#include "measure/registry.hpp"
 
 namespace {
 

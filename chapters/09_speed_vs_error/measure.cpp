@@ -1,11 +1,11 @@
-#include "measure.hpp"
+#include "chapters/09_speed_vs_error/measure.hpp"
 
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <numeric>
 
-#include "render_scene.hpp"
+#include "measure/render_scene.hpp"
 
 namespace tri::ch09 {
 

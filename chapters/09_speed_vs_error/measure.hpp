@@ -11,12 +11,12 @@
 #include <string>
 #include <vector>
 
-#include "error_metrics.hpp"
-#include "machine.hpp"
-#include "scene.hpp"
-#include "suites.hpp"
-#include "timing.hpp"
-#include "triangle_algorithm.hpp"
+#include "chapters/09_speed_vs_error/machine.hpp"
+#include "chapters/09_speed_vs_error/suites.hpp"
+#include "chapters/09_speed_vs_error/timing.hpp"
+#include "common/scene.hpp"
+#include "common/triangle_algorithm.hpp"
+#include "measure/error_metrics.hpp"
 
 namespace tri::ch09 {
 

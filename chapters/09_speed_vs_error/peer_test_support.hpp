@@ -5,10 +5,10 @@
 #include <span>
 #include <vector>
 
-#include "error_metrics.hpp"
-#include "registry.hpp"
-#include "render_scene.hpp"
-#include "scene_generators.hpp"
+#include "measure/error_metrics.hpp"
+#include "measure/registry.hpp"
+#include "measure/render_scene.hpp"
+#include "measure/scene_generators.hpp"
 
 namespace tri::ch09::test {
 

@@ -1,4 +1,4 @@
-#include "pixman_peer.hpp"
+#include "chapters/09_speed_vs_error/pixman_peer.hpp"
 
 #include <pixman.h>
 
@@ -9,7 +9,7 @@
 #include <numeric>
 #include <vector>
 
-#include "y_down_peer.hpp"
+#include "chapters/09_speed_vs_error/y_down_peer.hpp"
 
 namespace tri::ch09 {
 namespace {

@@ -5,8 +5,8 @@
 
 #include <span>
 
-#include "error_metrics.hpp"
-#include "measure.hpp"
+#include "chapters/09_speed_vs_error/measure.hpp"
+#include "measure/error_metrics.hpp"
 
 namespace tri::ch09 {
 

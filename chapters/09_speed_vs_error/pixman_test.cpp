@@ -7,8 +7,8 @@
 #include <numeric>
 #include <stdexcept>
 
-#include "peer_test_support.hpp"
-#include "pixman_peer.hpp"
+#include "chapters/09_speed_vs_error/peer_test_support.hpp"
+#include "chapters/09_speed_vs_error/pixman_peer.hpp"
 
 using namespace tri::ch09::test;
 using Kind = tri::SceneRecipe::Kind;

@@ -1,4 +1,4 @@
-#include "plot_svg.hpp"
+#include "chapters/09_speed_vs_error/plot_svg.hpp"
 
 #include <algorithm>
 #include <array>
@@ -7,7 +7,7 @@
 #include <sstream>
 #include <vector>
 
-#include "report_csv.hpp"
+#include "chapters/09_speed_vs_error/report_csv.hpp"
 
 namespace tri::ch09 {
 namespace {

@@ -8,9 +8,9 @@
 #include <string>
 #include <string_view>
 
-#include "log_axis.hpp"
-#include "measure.hpp"
-#include "summary.hpp"
+#include "chapters/09_speed_vs_error/log_axis.hpp"
+#include "chapters/09_speed_vs_error/measure.hpp"
+#include "chapters/09_speed_vs_error/summary.hpp"
 
 namespace tri::ch09 {
 

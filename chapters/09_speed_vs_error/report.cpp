@@ -1,10 +1,10 @@
-#include "report.hpp"
+#include "chapters/09_speed_vs_error/report.hpp"
 
-#include "output_files.hpp"
-#include "plot_svg.hpp"
-#include "report_csv.hpp"
-#include "report_markdown.hpp"
-#include "summary.hpp"
+#include "chapters/09_speed_vs_error/plot_svg.hpp"
+#include "chapters/09_speed_vs_error/report_csv.hpp"
+#include "chapters/09_speed_vs_error/report_markdown.hpp"
+#include "chapters/09_speed_vs_error/summary.hpp"
+#include "common/output_files.hpp"
 
 namespace tri::ch09 {
 

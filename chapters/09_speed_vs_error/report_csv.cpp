@@ -1,4 +1,4 @@
-#include "report_csv.hpp"
+#include "chapters/09_speed_vs_error/report_csv.hpp"
 
 #include <array>
 #include <cstdio>

@@ -1,10 +1,10 @@
-#include "report_markdown.hpp"
+#include "chapters/09_speed_vs_error/report_markdown.hpp"
 
 #include <cmath>
 #include <set>
 #include <sstream>
 
-#include "report_csv.hpp"
+#include "chapters/09_speed_vs_error/report_csv.hpp"
 
 namespace tri::ch09 {
 namespace {

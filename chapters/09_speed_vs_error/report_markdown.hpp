@@ -5,8 +5,8 @@
 #include <span>
 #include <string>
 
-#include "measure.hpp"
-#include "summary.hpp"
+#include "chapters/09_speed_vs_error/measure.hpp"
+#include "chapters/09_speed_vs_error/summary.hpp"
 
 namespace tri::ch09 {
 

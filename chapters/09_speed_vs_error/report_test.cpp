@@ -11,15 +11,15 @@
 
 #include <catch2/catch.hpp>
 
-#include "error_metrics.hpp"
-#include "external_peers.hpp"
-#include "plot_svg.hpp"
-#include "registry.hpp"
-#include "render_scene.hpp"
-#include "report.hpp"
-#include "report_csv.hpp"
-#include "report_markdown.hpp"
-#include "summary.hpp"
+#include "chapters/09_speed_vs_error/external_peers.hpp"
+#include "chapters/09_speed_vs_error/plot_svg.hpp"
+#include "chapters/09_speed_vs_error/report.hpp"
+#include "chapters/09_speed_vs_error/report_csv.hpp"
+#include "chapters/09_speed_vs_error/report_markdown.hpp"
+#include "chapters/09_speed_vs_error/summary.hpp"
+#include "measure/error_metrics.hpp"
+#include "measure/registry.hpp"
+#include "measure/render_scene.hpp"
 
 using tri::ch09::BenchReport;
 using tri::ch09::Measurement;

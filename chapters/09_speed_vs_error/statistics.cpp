@@ -1,4 +1,4 @@
-#include "statistics.hpp"
+#include "chapters/09_speed_vs_error/statistics.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -3,7 +3,7 @@
 
 #include <catch2/catch.hpp>
 
-#include "statistics.hpp"
+#include "chapters/09_speed_vs_error/statistics.hpp"
 
 using tri::ch09::geometric_mean;
 using tri::ch09::Spread;

@@ -1,4 +1,4 @@
-#include "suites.hpp"
+#include "chapters/09_speed_vs_error/suites.hpp"
 
 #include <array>
 

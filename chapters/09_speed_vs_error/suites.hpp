@@ -8,7 +8,7 @@
 #include <string_view>
 #include <vector>
 
-#include "scene_generators.hpp"
+#include "measure/scene_generators.hpp"
 
 namespace tri::ch09 {
 

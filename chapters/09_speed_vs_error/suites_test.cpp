@@ -5,8 +5,8 @@
 
 #include <catch2/catch.hpp>
 
-#include "render_scene.hpp"
-#include "suites.hpp"
+#include "chapters/09_speed_vs_error/suites.hpp"
+#include "measure/render_scene.hpp"
 
 using tri::ch09::BenchSettings;
 using tri::ch09::SuiteScene;

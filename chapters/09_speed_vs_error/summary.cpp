@@ -1,9 +1,9 @@
-#include "summary.hpp"
+#include "chapters/09_speed_vs_error/summary.hpp"
 
 #include <algorithm>
 #include <map>
 
-#include "statistics.hpp"
+#include "chapters/09_speed_vs_error/statistics.hpp"
 
 namespace tri::ch09 {
 namespace {

@@ -11,7 +11,7 @@
 #include <string_view>
 #include <vector>
 
-#include "measure.hpp"
+#include "chapters/09_speed_vs_error/measure.hpp"
 
 namespace tri::ch09 {
 

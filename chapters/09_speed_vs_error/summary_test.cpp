@@ -3,7 +3,7 @@
 
 #include <catch2/catch.hpp>
 
-#include "summary.hpp"
+#include "chapters/09_speed_vs_error/summary.hpp"
 
 using tri::ch09::AlgorithmSummary;
 using tri::ch09::Measurement;

@@ -1,4 +1,4 @@
-#include "timing.hpp"
+#include "chapters/09_speed_vs_error/timing.hpp"
 
 #include <algorithm>
 #include <chrono>

@@ -5,9 +5,9 @@
 
 #include <functional>
 
-#include "canvas.hpp"
-#include "statistics.hpp"
-#include "suites.hpp"
+#include "chapters/09_speed_vs_error/statistics.hpp"
+#include "chapters/09_speed_vs_error/suites.hpp"
+#include "common/canvas.hpp"
 
 namespace tri::ch09 {
 

@@ -3,7 +3,7 @@
 
 #include <catch2/catch.hpp>
 
-#include "timing.hpp"
+#include "chapters/09_speed_vs_error/timing.hpp"
 
 using tri::Canvas;
 using tri::ch09::next_repetitions;

@@ -1,4 +1,4 @@
-#include "y_down_peer.hpp"
+#include "chapters/09_speed_vs_error/y_down_peer.hpp"
 
 #include <algorithm>
 #include <cmath>

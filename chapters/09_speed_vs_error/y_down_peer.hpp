@@ -8,7 +8,7 @@
 
 #include <glm/vec2.hpp>
 
-#include "scene.hpp"
+#include "common/scene.hpp"
 
 namespace tri::ch09 {
 

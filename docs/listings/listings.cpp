@@ -1,4 +1,4 @@
-#include "listings.hpp"
+#include "docs/listings/listings.hpp"
 
 #include <algorithm>
 #include <cctype>

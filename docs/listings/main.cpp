@@ -4,7 +4,7 @@
 #include <iostream>
 #include <string_view>
 
-#include "listings.hpp"
+#include "docs/listings/listings.hpp"
 
 namespace {
 

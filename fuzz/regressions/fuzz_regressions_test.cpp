@@ -13,11 +13,11 @@
 #include <string>
 #include <vector>
 
-#include "rasterizer_check.hpp"
-#include "rasterizer_input.hpp"
-#include "rasterizer_seeds.hpp"
-#include "registry.hpp"
-#include "scene_parser_check.hpp"
+#include "fuzz/rasterizer_check.hpp"
+#include "fuzz/rasterizer_input.hpp"
+#include "fuzz/rasterizer_seeds.hpp"
+#include "fuzz/scene_parser_check.hpp"
+#include "measure/registry.hpp"
 
 namespace tri::fuzz {
 namespace {

@@ -1,4 +1,4 @@
-#include "figure_comparison.hpp"
+#include "tests/figures/figure_comparison.hpp"
 
 #include <stb_image.h>
 

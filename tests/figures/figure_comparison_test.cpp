@@ -1,14 +1,14 @@
 // The golden-figure check itself: it must catch one changed pixel, one changed byte, a figure
 // nobody committed, a committed figure nobody renders, and a README image that is not a file.
-#include "figure_comparison.hpp"
+#include "tests/figures/figure_comparison.hpp"
 
 #include <catch2/catch.hpp>
 
 #include <fstream>
 #include <random>
 
-#include "canvas.hpp"
-#include "image_io.hpp"
+#include "common/canvas.hpp"
+#include "common/image_io.hpp"
 
 namespace {
 namespace fs = std::filesystem;

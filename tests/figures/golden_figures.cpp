@@ -13,7 +13,7 @@
 #include <string_view>
 #include <vector>
 
-#include "figure_comparison.hpp"
+#include "tests/figures/figure_comparison.hpp"
 
 namespace {
 namespace fs = std::filesystem;

@@ -7,7 +7,7 @@
 #include <iterator>
 #include <string>
 
-#include "registry.hpp"
+#include "measure/registry.hpp"
 
 TEST_CASE(
     "The committed speed-vs-error snapshot is a whole SVG that names every registered "

@@ -1,4 +1,4 @@
-#include "hard_case_diagram.hpp"
+#include "tests/hard_cases/hard_case_diagram.hpp"
 
 #include <algorithm>
 #include <array>
@@ -10,9 +10,9 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
-#include "coverage_oracle.hpp"
-#include "exact_orientation.hpp"
-#include "pixel_diagram.hpp"
+#include "chapters/07_exact_coverage/coverage_oracle.hpp"
+#include "chapters/07_exact_coverage/exact_orientation.hpp"
+#include "common/pixel_diagram.hpp"
 
 namespace tri::hard_cases {
 namespace {

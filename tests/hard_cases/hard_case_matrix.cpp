@@ -5,13 +5,13 @@
 #include <string>
 #include <vector>
 
-#include "cli.hpp"
-#include "figures.hpp"
-#include "hard_case_diagram.hpp"
-#include "hard_case_page.hpp"
-#include "hard_cases.hpp"
-#include "output_files.hpp"
-#include "registry.hpp"
+#include "common/cli.hpp"
+#include "common/figures.hpp"
+#include "common/output_files.hpp"
+#include "measure/registry.hpp"
+#include "tests/hard_cases/hard_case_diagram.hpp"
+#include "tests/hard_cases/hard_case_page.hpp"
+#include "tests/hard_cases/hard_cases.hpp"
 
 int main(int argc, char** argv) {
   const tri::CommandLine command_line(

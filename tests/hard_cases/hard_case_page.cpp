@@ -1,11 +1,11 @@
-#include "hard_case_page.hpp"
+#include "tests/hard_cases/hard_case_page.hpp"
 
 #include <algorithm>
 #include <iterator>
 #include <map>
 #include <sstream>
 
-#include "hard_case_diagram.hpp"
+#include "tests/hard_cases/hard_case_diagram.hpp"
 
 namespace tri::hard_cases {
 namespace {

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "hard_cases.hpp"
+#include "tests/hard_cases/hard_cases.hpp"
 
 namespace tri::hard_cases {
 

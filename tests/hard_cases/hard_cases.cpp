@@ -1,4 +1,4 @@
-#include "hard_cases.hpp"
+#include "tests/hard_cases/hard_cases.hpp"
 
 #include <cmath>
 #include <limits>

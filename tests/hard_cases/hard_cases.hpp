@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
-#include "error_metrics.hpp"
-#include "scene.hpp"
-#include "triangle_algorithm.hpp"
+#include "common/scene.hpp"
+#include "common/triangle_algorithm.hpp"
+#include "measure/error_metrics.hpp"
 
 namespace tri::hard_cases {
 

@@ -6,10 +6,10 @@
 #include <regex>
 #include <sstream>
 
-#include "hard_case_diagram.hpp"
-#include "hard_case_page.hpp"
-#include "hard_cases.hpp"
-#include "registry.hpp"
+#include "measure/registry.hpp"
+#include "tests/hard_cases/hard_case_diagram.hpp"
+#include "tests/hard_cases/hard_case_page.hpp"
+#include "tests/hard_cases/hard_cases.hpp"
 
 using namespace tri::hard_cases;
 

@@ -1,4 +1,4 @@
-#include "pixels.hpp"
+#include "tests/support/pixels.hpp"
 
 #include <algorithm>
 #include <stdexcept>

@@ -8,8 +8,8 @@
 
 #include <glm/vec2.hpp>
 
-#include "canvas.hpp"
-#include "random.hpp"
+#include "common/canvas.hpp"
+#include "common/random.hpp"
 
 namespace tri::testing {
 

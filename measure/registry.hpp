@@ -6,7 +6,7 @@
 #include <string_view>
 #include <vector>
 
-#include "triangle_algorithm.hpp"
+#include "common/triangle_algorithm.hpp"
 
 namespace tri {
 

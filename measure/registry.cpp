@@ -1,13 +1,13 @@
-#include "registry.hpp"
+#include "measure/registry.hpp"
 
 #include <algorithm>
 
-#include "03_interpolate_fill/algorithms.hpp"
-#include "04_scanline/algorithms.hpp"
-#include "05_edge_function/algorithms.hpp"
-#include "06_barycentric/algorithms.hpp"
-#include "07_exact_coverage/algorithms.hpp"
-#include "08_fast_exact/algorithms.hpp"
+#include "chapters/03_interpolate_fill/algorithms.hpp"
+#include "chapters/04_scanline/algorithms.hpp"
+#include "chapters/05_edge_function/algorithms.hpp"
+#include "chapters/06_barycentric/algorithms.hpp"
+#include "chapters/07_exact_coverage/algorithms.hpp"
+#include "chapters/08_fast_exact/algorithms.hpp"
 
 namespace tri {
 

@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <string>
 
-#include "scene.hpp"
+#include "common/scene.hpp"
 
 namespace tri {
 

@@ -6,9 +6,9 @@
 #include <functional>
 #include <vector>
 
-#include "canvas.hpp"
-#include "scene.hpp"
-#include "triangle_algorithm.hpp"
+#include "common/canvas.hpp"
+#include "common/scene.hpp"
+#include "common/triangle_algorithm.hpp"
 
 namespace tri {
 

@@ -2,8 +2,8 @@
 // that `ctest -R 08_fast_exact` alone shows whether a change to the chapter broke one.
 #include <catch2/catch.hpp>
 
-#include "algorithms.hpp"
-#include "hard_cases.hpp"
+#include "chapters/08_fast_exact/algorithms.hpp"
+#include "tests/hard_cases/hard_cases.hpp"
 
 TEST_CASE("every variant of the chapter is safe and exact on every hard case") {
   for (const auto& algorithm : tri::ch08::triangle_algorithms()) {

@@ -1,9 +1,9 @@
-#include "render_scene.hpp"
+#include "measure/render_scene.hpp"
 
 #include <chrono>
 #include <stdexcept>
 
-#include "lines.hpp"
+#include "chapters/01_lines/lines.hpp"
 
 namespace tri {
 

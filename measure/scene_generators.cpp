@@ -1,10 +1,10 @@
-#include "scene_generators.hpp"
+#include "measure/scene_generators.hpp"
 
 #include <cmath>
 #include <numbers>
 #include <vector>
 
-#include "random.hpp"
+#include "common/random.hpp"
 
 namespace tri {
 namespace {

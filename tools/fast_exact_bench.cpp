@@ -18,15 +18,15 @@
 #include <utility>
 #include <vector>
 
-#include "algorithms.hpp"
-#include "cli.hpp"
-#include "pixel_writers.hpp"
-#include "printable_text.hpp"
-#include "progress.hpp"
-#include "random.hpp"
-#include "registry.hpp"
-#include "scene_generators.hpp"
-#include "threaded.hpp"
+#include "chapters/08_fast_exact/algorithms.hpp"
+#include "chapters/08_fast_exact/pixel_writers.hpp"
+#include "chapters/08_fast_exact/threaded.hpp"
+#include "common/cli.hpp"
+#include "common/printable_text.hpp"
+#include "common/progress.hpp"
+#include "common/random.hpp"
+#include "measure/registry.hpp"
+#include "measure/scene_generators.hpp"
 
 namespace {
 

@@ -1,4 +1,4 @@
-#include "error_metrics.hpp"
+#include "measure/error_metrics.hpp"
 
 #include <algorithm>
 #include <array>
@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "canvas.hpp"
-#include "coverage_oracle.hpp"
+#include "chapters/07_exact_coverage/coverage_oracle.hpp"
+#include "common/canvas.hpp"
 
 namespace tri {
 namespace {
