@@ -63,6 +63,12 @@ function(tutorial_tests target prefix)
   if(ARG_LABELS)
     list(APPEND properties LABELS "${ARG_LABELS}")
   endif()
+  # The test-name check (tests/conventions) reads every folder's sources with their prefix.
+  set(sources --prefix ${prefix})
+  foreach(source IN LISTS ARG_SOURCES)
+    list(APPEND sources "${CMAKE_CURRENT_SOURCE_DIR}/${source}")
+  endforeach()
+  set_property(GLOBAL APPEND PROPERTY TUTORIAL_TEST_SOURCES ${sources})
   catch_discover_tests(${target} TEST_PREFIX "${prefix}/"
                        WORKING_DIRECTORY "${CMAKE_CURRENT_BINARY_DIR}"
                        PROPERTIES ${properties})
