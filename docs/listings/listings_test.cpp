@@ -82,7 +82,7 @@ bool any_problem_contains(const Report& report, const std::string& part) {
 
 }  // namespace
 
-TEST_CASE("A README whose listing equals its marked region passes the check") {
+TEST_CASE("A README whose listing equals its marked region passes the check", "[listings]") {
   TempRepo repo;
   repo.write("ch/walk.cpp", kSource);
   repo.write("ch/README.md", kReadme);
@@ -91,7 +91,8 @@ TEST_CASE("A README whose listing equals its marked region passes the check") {
   CHECK(report.listings == 1);
 }
 
-TEST_CASE("A listing shows the region without its marker lines and common indentation") {
+TEST_CASE("A listing shows the region without its marker lines and common indentation",
+          "[listings]") {
   const auto markers = parse_markers(kSource, "walk.cpp");
   REQUIRE(markers.problems.empty());
   REQUIRE(markers.regions.size() == 1);
@@ -102,7 +103,8 @@ TEST_CASE("A listing shows the region without its marker lines and common indent
 
 TEST_CASE(
     "A README whose listing differs from its region fails, naming the README line, the source, "
-    "the region and the refresh command") {
+    "the region and the refresh command",
+    "[listings]") {
   TempRepo repo;
   repo.write("ch/walk.cpp", kSource);
   std::string readme = kReadme;
@@ -120,7 +122,7 @@ TEST_CASE(
   CHECK(message.find(std::string(kRefreshCommand)) != std::string::npos);
 }
 
-TEST_CASE("Changing a marked region without the README makes the check fail") {
+TEST_CASE("Changing a marked region without the README makes the check fail", "[listings]") {
   TempRepo repo;
   repo.write("ch/walk.cpp", kSource);
   repo.write("ch/README.md", kReadme);
@@ -135,7 +137,8 @@ TEST_CASE("Changing a marked region without the README makes the check fail") {
   CHECK(any_problem_contains(report, "differs from ch/walk.cpp region 'walk_loop'"));
 }
 
-TEST_CASE("Update rewrites a listing from its changed region, so the check passes again") {
+TEST_CASE("Update rewrites a listing from its changed region, so the check passes again",
+          "[listings]") {
   TempRepo repo;
   std::string source = kSource;
   source.replace(source.find("++i"), 3, "i += 2");
@@ -153,7 +156,8 @@ TEST_CASE("Update rewrites a listing from its changed region, so the check passe
   CHECK(repo.read("ch/README.md") == expected);
 }
 
-TEST_CASE("Update adds the block after a listing comment that has none, and nothing else") {
+TEST_CASE("Update adds the block after a listing comment that has none, and nothing else",
+          "[listings]") {
   TempRepo repo;
   repo.write("ch/walk.cpp", kSource);
   repo.write("ch/README.md",
@@ -169,7 +173,8 @@ TEST_CASE("Update adds the block after a listing comment that has none, and noth
   CHECK(update_listings(repo.root()).rewritten.empty());
 }
 
-TEST_CASE("A listing that names a missing file fails the check, and update cannot fix it") {
+TEST_CASE("A listing that names a missing file fails the check, and update cannot fix it",
+          "[listings]") {
   TempRepo repo;
   repo.write("ch/README.md", kReadme);
   const auto report = check_listings(repo.root());
@@ -180,7 +185,8 @@ TEST_CASE("A listing that names a missing file fails the check, and update canno
   CHECK(repo.read("ch/README.md") == kReadme);
 }
 
-TEST_CASE("A listing that names a missing region fails the check, and update cannot fix it") {
+TEST_CASE("A listing that names a missing region fails the check, and update cannot fix it",
+          "[listings]") {
   TempRepo repo;
   std::string source = kSource;
   source.replace(source.find("walk_loop"), 9, "other_loop");
@@ -194,7 +200,7 @@ TEST_CASE("A listing that names a missing region fails the check, and update can
   CHECK(repo.read("ch/README.md") == kReadme);
 }
 
-TEST_CASE("A malformed listing comment fails the check") {
+TEST_CASE("A malformed listing comment fails the check", "[listings]") {
   TempRepo repo;
   repo.write("ch/walk.cpp", kSource);
   repo.write("ch/README.md", "<!-- listing: ch/walk.cpp -->\n```cpp\n```\n");
@@ -203,7 +209,8 @@ TEST_CASE("A malformed listing comment fails the check") {
   CHECK(any_problem_contains(check_listings(repo.root()), "malformed listing comment"));
 }
 
-TEST_CASE("A region that is never closed fails the check, even when no README shows it") {
+TEST_CASE("A region that is never closed fails the check, even when no README shows it",
+          "[listings]") {
   TempRepo repo;
   std::string source = kSource;
   source.erase(source.find("  // [/listing]\n"), 16);
@@ -214,14 +221,15 @@ TEST_CASE("A region that is never closed fails the check, even when no README sh
         "ch/walk.cpp:5: region 'walk_loop' is never closed by // [/listing]");
 }
 
-TEST_CASE("A closing marker with no open region fails the check") {
+TEST_CASE("A closing marker with no open region fails the check", "[listings]") {
   const auto markers = parse_markers("int a;\n// [/listing]\n", "a.cpp");
   REQUIRE(markers.problems.size() == 1);
   CHECK(markers.problems[0].line == 2);
   CHECK(markers.problems[0].message.find("closes no region") != std::string::npos);
 }
 
-TEST_CASE("A region opened inside another fails the check: regions may not nest or overlap") {
+TEST_CASE("A region opened inside another fails the check: regions may not nest or overlap",
+          "[listings]") {
   const auto markers = parse_markers(
       "// [listing outer]\nint a;\n// [listing inner]\nint b;\n// [/listing]\n// [/listing]\n",
       "a.cpp");
@@ -230,7 +238,8 @@ TEST_CASE("A region opened inside another fails the check: regions may not nest 
   CHECK(markers.problems[0].message.find("may not nest") != std::string::npos);
 }
 
-TEST_CASE("A region name used twice in one file, an empty region and a malformed marker fail") {
+TEST_CASE("A region name used twice in one file, an empty region and a malformed marker fail",
+          "[listings]") {
   const auto twice = parse_markers(
       "// [listing a]\nint a;\n// [/listing]\n// [listing a]\nint b;\n// [/listing]\n", "a.cpp");
   REQUIRE(twice.problems.size() == 1);
@@ -245,7 +254,7 @@ TEST_CASE("A region name used twice in one file, an empty region and a malformed
   CHECK(malformed.problems[0].message.find("malformed marker") != std::string::npos);
 }
 
-TEST_CASE("A listing comment inside a fenced example is text, not a listing") {
+TEST_CASE("A listing comment inside a fenced example is text, not a listing", "[listings]") {
   TempRepo repo;
   repo.write("README.md", "Write:\n\n```md\n<!-- listing: ch/none.cpp none -->\n```\n");
   const auto report = check_listings(repo.root());
@@ -253,7 +262,7 @@ TEST_CASE("A listing comment inside a fenced example is text, not a listing") {
   CHECK(report.listings == 0);
 }
 
-TEST_CASE("Build folders and hidden folders are not searched") {
+TEST_CASE("Build folders and hidden folders are not searched", "[listings]") {
   TempRepo repo;
   repo.write("build/release/README.md", "<!-- listing: missing.cpp none -->\n");
   repo.write(".git/x.cpp", "// [listing open_forever]\n");
