@@ -75,6 +75,11 @@ const std::string kReadme = "# Walk\n\nThe loop adds every step:\n\n" + kListing
 // The listing comment is on line 5 of kReadme.
 constexpr int kListingLine = 5;
 
+// text with its first `from` replaced by `to`.
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+  return text.replace(text.find(from), from.size(), to);
+}
+
 bool any_problem_contains(const Report& report, const std::string& part) {
   return std::any_of(report.problems.begin(), report.problems.end(),
                      [&](const Problem& p) { return format(p).find(part) != std::string::npos; });
@@ -128,9 +133,7 @@ TEST_CASE("Changing a marked region without the README makes the check fail", "[
   repo.write("ch/README.md", kReadme);
   REQUIRE(check_listings(repo.root()).problems.empty());
 
-  std::string source = kSource;
-  source.replace(source.find("++i"), 3, "i += 2");
-  repo.write("ch/walk.cpp", source);
+  repo.write("ch/walk.cpp", replaced(kSource, "++i", "i += 2"));
   const auto report = check_listings(repo.root());
   REQUIRE(report.problems.size() == 1);
   CHECK(report.problems[0].line == kListingLine);
@@ -140,9 +143,7 @@ TEST_CASE("Changing a marked region without the README makes the check fail", "[
 TEST_CASE("Update rewrites a listing from its changed region, so the check passes again",
           "[listings]") {
   TempRepo repo;
-  std::string source = kSource;
-  source.replace(source.find("++i"), 3, "i += 2");
-  repo.write("ch/walk.cpp", source);
+  repo.write("ch/walk.cpp", replaced(kSource, "++i", "i += 2"));
   repo.write("ch/README.md", kReadme);
   REQUIRE_FALSE(check_listings(repo.root()).problems.empty());
 
@@ -151,9 +152,7 @@ TEST_CASE("Update rewrites a listing from its changed region, so the check passe
   CHECK(report.rewritten == std::vector<std::string>{"ch/README.md"});
   CHECK(check_listings(repo.root()).problems.empty());
 
-  std::string expected = kReadme;
-  expected.replace(expected.find("++i"), 3, "i += 2");
-  CHECK(repo.read("ch/README.md") == expected);
+  CHECK(repo.read("ch/README.md") == replaced(kReadme, "++i", "i += 2"));
 }
 
 TEST_CASE("Update adds the block after a listing comment that has none, and nothing else",
@@ -188,9 +187,7 @@ TEST_CASE("A listing that names a missing file fails the check, and update canno
 TEST_CASE("A listing that names a missing region fails the check, and update cannot fix it",
           "[listings]") {
   TempRepo repo;
-  std::string source = kSource;
-  source.replace(source.find("walk_loop"), 9, "other_loop");
-  repo.write("ch/walk.cpp", source);
+  repo.write("ch/walk.cpp", replaced(kSource, "walk_loop", "other_loop"));
   repo.write("ch/README.md", kReadme);
   const auto report = check_listings(repo.root());
   REQUIRE(report.problems.size() == 1);
@@ -212,9 +209,7 @@ TEST_CASE("A malformed listing comment fails the check", "[listings]") {
 TEST_CASE("A region that is never closed fails the check, even when no README shows it",
           "[listings]") {
   TempRepo repo;
-  std::string source = kSource;
-  source.erase(source.find("  // [/listing]\n"), 16);
-  repo.write("ch/walk.cpp", source);
+  repo.write("ch/walk.cpp", replaced(kSource, "  // [/listing]\n", ""));
   const auto report = check_listings(repo.root());
   REQUIRE(report.problems.size() == 1);
   CHECK(format(report.problems[0]) ==
