@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "chapters/02_wireframe/example_triangles.hpp"
 #include "chapters/02_wireframe/wireframe.hpp"
 #include "chapters/03_interpolate_fill/diagram_support.hpp"
 #include "chapters/03_interpolate_fill/fill_steps.hpp"
@@ -52,10 +53,12 @@ OutlineCount paint_fill_and_outline(Canvas& categories, const Vertices& v) {
 
 // Figure 7-3's vertices in the book's centred coordinates, upside down for flip = -1.
 Vertices figure_7_3_vertices(int flip) {
-  return {{{-200, -250 * flip}, {200, 50 * flip}, {20, 250 * flip}}};
+  Vertices v = tri::ch02::figure_7_1_triangle;
+  for (glm::ivec2& p : v) p.y *= flip;
+  return v;
 }
 
-constexpr int figure_size = 600;
+constexpr int figure_size = tri::ch02::figure_7_1_canvas_size;
 constexpr glm::ivec2 to_centred{-figure_size / 2, -figure_size / 2};
 
 // The close-up's pixels on the wide edge P0-P1, in centred coordinates.
@@ -149,17 +152,13 @@ std::string figure_7_3_close_up() {
 }
 
 std::string tinyrenderer_fill_outline() {
-  constexpr int size = 200;
-  const std::array<Vertices, 3> triangles{{
-      {{{10, 70}, {50, 160}, {70, 80}}},
-      {{{180, 50}, {150, 1}, {70, 180}}},
-      {{{180, 150}, {120, 160}, {130, 180}}},
-  }};
+  constexpr int size = tri::ch02::tinyrenderer_image_size;
+  const auto& triangles = tri::ch02::tinyrenderer_triangles;
   Canvas categories(size, size, dc::empty);
   std::string counts;
   for (const auto& t : triangles) {
     counts += (counts.empty() ? "" : ", ") +
-              std::to_string(paint_fill_and_outline(categories, t).outside);
+              std::to_string(paint_fill_and_outline(categories, t.vertices).outside);
   }
   PixelDiagram diagram({0, 0}, {size - 1, size - 1},
                        "tinyrenderer's triangles: the outline leaves the fill on wide edges", 3);
@@ -172,7 +171,7 @@ std::string tinyrenderer_fill_outline() {
   }
   const std::array<const char*, 3> names{"red", "white", "green"};
   for (std::size_t i = 0; i < triangles.size(); ++i) {
-    const auto& t = triangles[i];
+    const auto& t = triangles[i].vertices;
     diagram.triangle(t[0], t[1], t[2], dc::black, 0.75);
     const glm::dvec2 centroid = (glm::dvec2(t[0]) + glm::dvec2(t[1]) + glm::dvec2(t[2])) / 3.0;
     diagram.label(centroid, names[i], LabelPlace::right);
@@ -187,8 +186,9 @@ std::string tinyrenderer_fill_outline() {
 
 std::string tinyrenderer_fill_outline_close_up() {
   // The green triangle, the one with the most outline pixels outside its fill.
-  const Vertices green{{{180, 150}, {120, 160}, {130, 180}}};
-  Canvas categories(200, 200, dc::empty);
+  const Vertices& green = tri::ch02::tinyrenderer_triangles[2].vertices;
+  const int size = tri::ch02::tinyrenderer_image_size;
+  Canvas categories(size, size, dc::empty);
   const OutlineCount count = paint_fill_and_outline(categories, green);
   PixelDiagram diagram({118, 148}, {182, 182},
                        "tinyrenderer's green triangle zoomed: outline pixels outside the fill", 12);

@@ -2,16 +2,19 @@
 
 #include <catch2/catch.hpp>
 
-#include "chapters/04_scanline/article_triangles.hpp"
+#include "chapters/02_wireframe/example_triangles.hpp"
 #include "chapters/04_scanline/lower_half.hpp"
 #include "chapters/04_scanline/scanline_fills.hpp"
 #include "chapters/04_scanline/scanline_test_support.hpp"
 
 namespace {
 
-using tri::ch04::article_triangles;
+using tri::ch02::tinyrenderer_triangles;
 using tri::ch04::sort_by_y;
 using tri::ch04::truncated_boundary_x;
+
+// tinyrenderer's red triangle, (10, 70), (50, 160), (70, 80).
+constexpr const auto& red = tinyrenderer_triangles[0].vertices;
 
 // The article's arithmetic for one boundary: the fraction in float, the float product cut to an
 // int by Vec2i's constructor.
@@ -23,7 +26,7 @@ int article_float_x(glm::ivec2 start, glm::ivec2 end, int step, int steps) {
 }  // namespace
 
 TEST_CASE("Sorting by y puts the vertices bottom to top for all six orders", "[step2]") {
-  for (const auto& triangle : article_triangles) {
+  for (const auto& triangle : tinyrenderer_triangles) {
     const auto [a, b, c] = triangle.vertices;
     const auto expected = sort_by_y(a, b, c);
     REQUIRE(expected.t0.y < expected.t1.y);
@@ -35,10 +38,10 @@ TEST_CASE("Sorting by y puts the vertices bottom to top for all six orders", "[s
       CHECK(sorted.t2 == expected.t2);
     }
   }
-  const auto red = sort_by_y({10, 70}, {50, 160}, {70, 80});
-  CHECK(red.t0 == glm::ivec2(10, 70));
-  CHECK(red.t1 == glm::ivec2(70, 80));
-  CHECK(red.t2 == glm::ivec2(50, 160));
+  const auto sorted = sort_by_y(red[0], red[1], red[2]);
+  CHECK(sorted.t0 == glm::ivec2(10, 70));
+  CHECK(sorted.t1 == glm::ivec2(70, 80));
+  CHECK(sorted.t2 == glm::ivec2(50, 160));
 }
 
 TEST_CASE("Sorting keeps vertices of equal y in the order they were passed", "[step2]") {
@@ -52,7 +55,7 @@ TEST_CASE("Sorting keeps vertices of equal y in the order they were passed", "[s
 
 TEST_CASE("A boundary's x is truncated toward its start vertex, not rounded", "[int-cast]") {
   // Red triangle, boundary A from (10,70) to (50,160), row 72: exact x = 10 + 80/90 = 10.89.
-  CHECK(truncated_boundary_x({10, 70}, {50, 160}, 2, 90) == 10);  // rounding would give 11
+  CHECK(truncated_boundary_x(red[0], red[1], 2, 90) == 10);  // rounding would give 11
   // White triangle, boundary A from (150,1) to (70,180), row 3: exact x = 150 - 160/179 = 149.11.
   CHECK(truncated_boundary_x({150, 1}, {70, 180}, 2, 179) == 150);  // rounding would give 149
   // A whole quotient is exact, in both directions.
@@ -65,7 +68,7 @@ TEST_CASE(
     "The exact quotient gives the article's float span ends on every row of the test "
     "triangles",
     "[int-cast]") {
-  for (const auto& triangle : article_triangles) {
+  for (const auto& triangle : tinyrenderer_triangles) {
     const auto [a, b, c] = triangle.vertices;
     const auto t = sort_by_y(a, b, c);
     const int total = t.t2.y - t.t0.y, lower = t.t1.y - t.t0.y, upper = t.t2.y - t.t1.y;

@@ -21,7 +21,7 @@ struct Variants {
   Canvas two, one, published;
 };
 
-Variants draw_variants(const ArticleTriangle& t) {
+Variants draw_variants(const ch02::TinyrendererTriangle& t) {
   const auto with = [](void (*fill)(Canvas&, glm::ivec2, glm::ivec2, glm::ivec2, Color)) {
     return [fill](Canvas& canvas, glm::ivec2 a, glm::ivec2 b, glm::ivec2 c) {
       fill(canvas, a, b, c, colors::white);
@@ -80,8 +80,8 @@ std::string counts_note(const Counts& counts) {
          " only in the single loop, " + std::to_string(counts[2]) + " never reached as published";
 }
 
-PixelDiagram whole_triangle_panel(const ArticleTriangle& t, const char* name, glm::ivec2 first,
-                                  glm::ivec2 last, double cell) {
+PixelDiagram whole_triangle_panel(const ch02::TinyrendererTriangle& t, const char* name,
+                                  glm::ivec2 first, glm::ivec2 last, double cell) {
   PixelDiagram panel(first, last, std::string("The ") + name + " triangle", cell);
   panel.show_centres(false);
   const Counts counts = paint_differences(panel, draw_variants(t), false);
@@ -120,15 +120,15 @@ std::string loop_differences() {
 
 std::string loop_differences_red_white() {
   const std::array<PixelDiagram, 2> panels{
-      whole_triangle_panel(article_triangles[0], "red", {6, 66}, {74, 164}, 4),
-      whole_triangle_panel(article_triangles[1], "white", {66, -2}, {184, 184}, 3)};
+      whole_triangle_panel(ch02::tinyrenderer_triangles[0], "red", {6, 66}, {74, 164}, 4),
+      whole_triangle_panel(ch02::tinyrenderer_triangles[1], "white", {66, -2}, {184, 184}, 3)};
   return side_by_side(panels,
                       "The same differences on the red and white triangles (dots: pixels that "
                       "differ)");
 }
 
 std::string truncation_close_up() {
-  const ArticleTriangle& red = article_triangles[0];
+  const ch02::TinyrendererTriangle& red = ch02::tinyrenderer_triangles[0];
   const auto [a, b, c] = red.vertices;
   const SortedTriangle t = sort_by_y(a, b, c);
   const Canvas drawn =

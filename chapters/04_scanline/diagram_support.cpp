@@ -10,14 +10,14 @@
 
 namespace tri::ch04::figures {
 
-Canvas drawn_by(const Step& step, const ArticleTriangle& triangle) {
-  Canvas canvas(article_image_size, article_image_size);
+Canvas drawn_by(const Step& step, const ch02::TinyrendererTriangle& triangle) {
+  Canvas canvas(ch02::tinyrenderer_image_size, ch02::tinyrenderer_image_size);
   canvas.enable_write_counts();
   step(canvas, triangle.vertices[0], triangle.vertices[1], triangle.vertices[2]);
   return canvas;
 }
 
-bool centre_in_triangle(const ArticleTriangle& triangle, glm::ivec2 pixel) noexcept {
+bool centre_in_triangle(const ch02::TinyrendererTriangle& triangle, glm::ivec2 pixel) noexcept {
   const auto [a, b, c] = triangle.vertices;
   // Twice the signed area of (p, q, pixel): which side of the edge p q the centre is on.
   const auto side = [pixel](glm::ivec2 p, glm::ivec2 q) {
@@ -28,8 +28,8 @@ bool centre_in_triangle(const ArticleTriangle& triangle, glm::ivec2 pixel) noexc
   return (ab >= 0 && bc >= 0 && ca >= 0) || (ab <= 0 && bc <= 0 && ca <= 0);
 }
 
-const ArticleTriangle& diagram_triangle() noexcept {
-  return article_triangles[2];
+const ch02::TinyrendererTriangle& diagram_triangle() noexcept {
+  return ch02::tinyrenderer_triangles[2];
 }
 
 PixelDiagram green_diagram(std::string title) {

@@ -42,8 +42,8 @@ TEST_CASE("The green triangle's lower half leaves out 35 centres that lie inside
 
 TEST_CASE("centre_in_triangle counts centres on an edge as inside, in either winding",
           "[figures]") {
-  const ArticleTriangle ccw{{{{0, 0}, {4, 0}, {0, 4}}}, tri::colors::white};
-  const ArticleTriangle cw{{{{0, 0}, {0, 4}, {4, 0}}}, tri::colors::white};
+  const tri::ch02::TinyrendererTriangle ccw{{{{0, 0}, {4, 0}, {0, 4}}}, tri::colors::white};
+  const tri::ch02::TinyrendererTriangle cw{{{{0, 0}, {0, 4}, {4, 0}}}, tri::colors::white};
   for (const auto& t : {ccw, cw}) {
     CHECK(centre_in_triangle(t, {1, 1}));
     CHECK(centre_in_triangle(t, {2, 2}));  // on the hypotenuse

@@ -2,13 +2,13 @@
 
 #include <catch2/catch.hpp>
 
-#include "chapters/04_scanline/article_triangles.hpp"
+#include "chapters/02_wireframe/example_triangles.hpp"
 #include "chapters/04_scanline/scanline_test_support.hpp"
 
 namespace {
 
 using tri::Canvas;
-using tri::ch04::article_triangles;
+using tri::ch02::tinyrenderer_triangles;
 using tri::ch04::fill_single_loop;
 using tri::ch04::fill_single_loop_as_published;
 using tri::ch04::fill_two_loops;
@@ -21,6 +21,9 @@ using tri::ch04::testing::pixels_of;
 using tri::testing::inclusive_pixels;
 using tri::testing::overdrawn_pixels;
 using tri::testing::PixelSet;
+
+// tinyrenderer's red triangle, (10, 70), (50, 160), (70, 80).
+constexpr const auto& red = tinyrenderer_triangles[0].vertices;
 
 // The rows a pixel set touches.
 std::set<int> rows_of(const PixelSet& pixels) {
@@ -78,19 +81,19 @@ TEST_CASE("The int cast puts (10,72) into the red triangle though its centre lie
           "[int-cast][trap]") {
   // Row 72 of the red triangle: boundary A is at x = 10 + 40 * 2/90 = 10.89. Truncation starts
   // the span at 10; rounding would start it at 11, the first centre inside.
-  const PixelSet filled = pixels_of(fill_single_loop, {10, 70}, {50, 160}, {70, 80});
-  const PixelSet inside = inclusive_pixels({10, 70}, {50, 160}, {70, 80}, 200, 200);
+  const PixelSet filled = pixels_of(fill_single_loop, red[0], red[1], red[2]);
+  const PixelSet inside = inclusive_pixels(red[0], red[1], red[2], 200, 200);
   CHECK(filled.count({10, 72}) == 1);
   CHECK(inside.count({10, 72}) == 0);
   CHECK(inside.count({11, 72}) == 1);
-  const auto t = sort_by_y({10, 70}, {50, 160}, {70, 80});
+  const auto t = sort_by_y(red[0], red[1], red[2]);
   CHECK(tri::ch04::single_loop_ends(t, 2).a == 10);
 }
 
 TEST_CASE("The two-loop fill draws row t1.y twice", "[step5]") {
   const std::size_t expected_overdraw[] = {51, 51, 39};
   for (int i = 0; i < 3; ++i) {
-    const auto [a, b, c] = article_triangles[i].vertices;
+    const auto [a, b, c] = tinyrenderer_triangles[i].vertices;
     const PixelSet twice = overdrawn_pixels(drawn_by(fill_two_loops, a, b, c));
     CHECK(twice.size() == expected_overdraw[i]);
     CHECK(rows_of(twice) == std::set<int>{sort_by_y(a, b, c).t1.y});
@@ -101,7 +104,7 @@ TEST_CASE("The published single loop stops one row short and never draws row t2.
           "[step6][trap]") {
   int missing_rows = 0;
   std::size_t missing_pixels = 0;
-  for (const auto& triangle : article_triangles) {
+  for (const auto& triangle : tinyrenderer_triangles) {
     const auto [a, b, c] = triangle.vertices;
     const PixelSet fixed = pixels_of(fill_single_loop, a, b, c);
     const PixelSet published = pixels_of(fill_single_loop_as_published, a, b, c);
@@ -195,7 +198,7 @@ TEST_CASE("The two fills part ways on the article's triangles by these pixels", 
   // {pixels only the two loops draw, pixels only the single loop draws}, per triangle.
   const std::pair<std::size_t, std::size_t> expected[] = {{20, 29}, {60, 10}, {10, 29}};
   for (int i = 0; i < 3; ++i) {
-    const auto [a, b, c] = article_triangles[i].vertices;
+    const auto [a, b, c] = tinyrenderer_triangles[i].vertices;
     const auto t = sort_by_y(a, b, c);
     const PixelSet two = pixels_of(fill_two_loops, a, b, c);
     const PixelSet one = pixels_of(fill_single_loop, a, b, c);

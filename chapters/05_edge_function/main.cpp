@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "chapters/01_lines/lines.hpp"
+#include "chapters/02_wireframe/example_triangles.hpp"
 #include "chapters/05_edge_function/bounding_box.hpp"
 #include "chapters/05_edge_function/cross_product.hpp"
 #include "chapters/05_edge_function/edge_function_fill.hpp"
@@ -32,12 +33,7 @@ constexpr Color light_purple{235, 201, 220, 255};
 // Paints the pixel sets the figures compute on a (black) canvas before they are coloured.
 constexpr Color marked = tri::colors::white;
 
-// tinyrenderer lesson 2's three test triangles on its 200x200 image.
-constexpr std::array<Vertices, 3> tinyrenderer_triangles{{
-    {{{10, 70}, {50, 160}, {70, 80}}},
-    {{{180, 50}, {150, 1}, {70, 180}}},
-    {{{180, 150}, {120, 160}, {130, 180}}},
-}};
+using tri::ch02::tinyrenderer_triangles;
 constexpr std::array<Color, 3> tinyrenderer_colors{dc::vermillion, dc::blue, dc::green};
 constexpr std::array<const char*, 3> tinyrenderer_names{"first", "second", "third"};
 // The pixels of the published-bug zoom: the third triangle and its surroundings.
@@ -66,7 +62,7 @@ std::vector<glm::ivec2> pixels_of(const Canvas& canvas, Color color) {
 std::string tinyrenderer_figure() {
   Canvas canvas(200, 200);
   for (std::size_t i = 0; i < tinyrenderer_triangles.size(); ++i) {
-    const auto& [a, b, c] = tinyrenderer_triangles[i];
+    const auto& [a, b, c] = tinyrenderer_triangles[i].vertices;
     tri::ch05::fill_triangle_edge_function(canvas, a, b, c, tinyrenderer_colors[i]);
   }
   PixelDiagram d({0, 0}, {199, 199},
@@ -74,7 +70,7 @@ std::string tinyrenderer_figure() {
   d.show_centres(false);
   d.fill_from(canvas, tri::colors::black);
   for (std::size_t i = 0; i < tinyrenderer_triangles.size(); ++i) {
-    const auto& [a, b, c] = tinyrenderer_triangles[i];
+    const auto& [a, b, c] = tinyrenderer_triangles[i].vertices;
     d.triangle(at(a), at(b), at(c), dc::black, 1);
     d.legend_fill(std::string(tinyrenderer_names[i]) + " " + point_text(a) + " " + point_text(b) +
                       " " + point_text(c) + ": " +
@@ -178,7 +174,8 @@ struct BugComparison {
 
 BugComparison compare_published_bug() {
   Canvas right(200, 200), published(200, 200);
-  for (const auto& [a, b, c] : tinyrenderer_triangles) {
+  for (const auto& triangle : tinyrenderer_triangles) {
+    const auto& [a, b, c] = triangle.vertices;
     tri::ch05::fill_triangle_edge_function(right, a, b, c, marked);
     tri::ch05::fill_triangle_published_bug(published, a, b, c, marked);
   }
@@ -217,8 +214,10 @@ std::string published_bug_figure(const BugComparison& cmp) {
   PixelDiagram d({0, 0}, {199, 199}, "The published points[0].y test against the right one", 3);
   d.show_centres(false);
   fill_comparison(d, cmp);
-  for (const auto& [a, b, c] : tinyrenderer_triangles)
+  for (const auto& triangle : tinyrenderer_triangles) {
+    const auto& [a, b, c] = triangle.vertices;
     d.triangle(at(a), at(b), at(c), dc::black, 1);
+  }
   const glm::ivec2 first = zoom_first, last = zoom_last;
   d.line(glm::dvec2(first) - 0.5, glm::dvec2(last.x + 0.5, first.y - 0.5), dc::purple, 1.5);
   d.line(glm::dvec2(last) + 0.5, glm::dvec2(last.x + 0.5, first.y - 0.5), dc::purple, 1.5);
@@ -234,7 +233,7 @@ std::string published_bug_figure(const BugComparison& cmp) {
 
 // The zoomed companion: the third triangle, where the lost and the extra pixels sit side by side.
 std::string published_bug_zoom_figure(const BugComparison& cmp) {
-  const Vertices& v = tinyrenderer_triangles[2];
+  const Vertices& v = tinyrenderer_triangles[2].vertices;
   PixelDiagram d(zoom_first, zoom_last,
                  "Zoom on the third triangle: the published test tests against slid edges", 12);
   fill_comparison(d, cmp);

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "chapters/02_wireframe/example_triangles.hpp"
 #include "chapters/05_edge_function/bounding_box.hpp"
 #include "chapters/06_barycentric/barycentric.hpp"
 #include "chapters/06_barycentric/examples.hpp"
@@ -19,6 +20,7 @@ using tri::Color;
 using tri::LabelPlace;
 using tri::PixelDiagram;
 using tri::PixelMark;
+using tri::ch02::tinyrenderer_triangles;
 using tri::ch06::PixelTriangle;
 namespace dc = tri::diagram_colors;
 
@@ -75,11 +77,11 @@ std::string bounding_boxes_figure() {
   PixelDiagram d = scene_diagram("Every pixel of each bounding box is tested; few are drawn");
   Canvas drawn(200, 200);
   for (std::size_t i = 0; i < 3; ++i) {
-    const auto [a, b, c] = tri::ch06::tinyrenderer_triangles[i];
+    const auto [a, b, c] = tinyrenderer_triangles[i].vertices;
     tri::ch06::fill_triangle_barycentric<double>(drawn, a, b, c, tinyrenderer_colors[i]);
   }
   for (std::size_t i = 0; i < 3; ++i) {
-    const auto& t = tri::ch06::tinyrenderer_triangles[i];
+    const auto& t = tinyrenderer_triangles[i].vertices;
     const auto box = box_pixels(t, 200, 200);
     d.fill(box, box_colors[i]);
     d.legend_fill(std::string(tinyrenderer_names[i]) + " box: " + std::to_string(box.size()) +
@@ -90,7 +92,8 @@ std::string bounding_boxes_figure() {
                   tinyrenderer_colors[i]);
   }
   d.fill_from(drawn, tri::colors::black);
-  for (const auto& [a, b, c] : tri::ch06::tinyrenderer_triangles) {
+  for (const auto& triangle : tinyrenderer_triangles) {
+    const auto& [a, b, c] = triangle.vertices;
     d.triangle(at(a), at(b), at(c), dc::black, 1);
   }
   d.legend_line("ideal triangle edges", dc::black);
@@ -102,12 +105,12 @@ std::string tinyrenderer_figure() {
   PixelDiagram d = scene_diagram("tinyrenderer's three triangles filled by barycentric weights");
   Canvas canvas(200, 200);
   for (std::size_t i = 0; i < 3; ++i) {
-    const auto& t = tri::ch06::tinyrenderer_triangles[i];
+    const auto& t = tinyrenderer_triangles[i].vertices;
     tri::ch06::fill_triangle_barycentric<double>(canvas, t[0], t[1], t[2], tinyrenderer_colors[i]);
   }
   d.fill_from(canvas, tri::colors::black);
   for (std::size_t i = 0; i < 3; ++i) {
-    const auto& t = tri::ch06::tinyrenderer_triangles[i];
+    const auto& t = tinyrenderer_triangles[i].vertices;
     d.triangle(at(t[0]), at(t[1]), at(t[2]), dc::black, 1);
     d.legend_fill(std::string(tinyrenderer_names[i]) + " " + triangle_text(t) + ": " +
                       std::to_string(pixels_of(canvas, tinyrenderer_colors[i]).size()) + " pixels",
@@ -121,7 +124,8 @@ std::string tinyrenderer_figure() {
 std::string weights_figure() {
   PixelDiagram d = scene_diagram("Each pixel coloured wA red + wB green + wC blue");
   Canvas canvas(200, 200);
-  for (const auto& [a, b, c] : tri::ch06::tinyrenderer_triangles) {
+  for (const auto& triangle : tinyrenderer_triangles) {
+    const auto& [a, b, c] = triangle.vertices;
     tri::ch06::fill_triangle_with_weights(canvas, a, b, c, tri::colors::red, tri::colors::green,
                                           tri::colors::blue);
   }
@@ -135,7 +139,8 @@ std::string weights_figure() {
     }
   }
   d.fill_from(canvas, tri::colors::black);
-  for (const auto& t : tri::ch06::tinyrenderer_triangles) {
+  for (const auto& triangle : tinyrenderer_triangles) {
+    const auto& t = triangle.vertices;
     d.triangle(at(t[0]), at(t[1]), at(t[2]), dc::black, 1);
     const std::array<const char*, 3> names{"A", "B", "C"};
     for (std::size_t k = 0; k < 3; ++k) {
