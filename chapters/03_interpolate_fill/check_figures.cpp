@@ -248,7 +248,7 @@ std::string trap_no_pop_back() {
   const EdgeXs e = interpolate_edges(t, triangle_rows(t));
   std::vector<double> kept = e.x01;  // the port: pop_back commented out
   kept.insert(kept.end(), e.x12.begin(), e.x12.end());
-  const SpanEnds wrong_ends = choose_left_right(e.x02, kept);
+  const LeftRightXs wrong_ends = choose_left_right(e.x02, kept);
   Canvas right(16, 16), wrong(16, 16);
   right.enable_write_counts();
   wrong.enable_write_counts();

@@ -138,7 +138,7 @@ std::string step4_left_right() {
   const std::string comparison = "x02[" + std::to_string(middle) +
                                  "] = " + short_number(e.x02[middle]) + " < x012[" +
                                  std::to_string(middle) + "] = " + short_number(x012[middle]);
-  const SpanEnds ends = choose_left_right(e.x02, x012);
+  const LeftRightXs ends = choose_left_right(e.x02, x012);
 
   PixelDiagram diagram =
       hand_diagram("Step 4: compared on the middle row, x02 is the left side, x012 the right");
@@ -167,7 +167,7 @@ std::string step4_left_right() {
 std::string step5_spans() {
   const SortedTriangle t = sorted_hand();
   EdgeXs e = interpolate_edges(t, triangle_rows(t));
-  const SpanEnds ends = choose_left_right(e.x02, concatenate_short_sides(e.x01, e.x12));
+  const LeftRightXs ends = choose_left_right(e.x02, concatenate_short_sides(e.x01, e.x12));
   PixelDiagram diagram =
       hand_diagram("Step 5: each row from the column of x_left to that of x_right");
   for (std::size_t i = 0; i < ends.x_left.size(); ++i) {

@@ -5,6 +5,7 @@
 #include <utility>
 #include <vector>
 
+#include "chapters/03_interpolate_fill/diagram_support.hpp"
 #include "chapters/04_scanline/boundaries.hpp"
 #include "chapters/04_scanline/diagram_support.hpp"
 #include "chapters/04_scanline/scanline_fills.hpp"
@@ -88,9 +89,9 @@ PixelDiagram whole_triangle_panel(const ch02::TinyrendererTriangle& t, const cha
   const auto [a, b, c] = t.vertices;
   panel.triangle(a, b, c, dc::black, 0.75);
   const SortedTriangle s = sort_by_y(a, b, c);
-  panel.vertex(s.t0, "t0", LabelPlace::right);
-  panel.vertex(s.t1, "t1", LabelPlace::left);
-  panel.vertex(s.t2, "t2", LabelPlace::right);
+  panel.vertex(s.p0, "t0", LabelPlace::right);
+  panel.vertex(s.p1, "t1", LabelPlace::left);
+  panel.vertex(s.p2, "t2", LabelPlace::right);
   panel.legend_fill("both", dc::covered);
   panel.legend_fill("only two loops", only_two_color);
   panel.legend_fill("only single loop", only_one_color);
@@ -142,7 +143,7 @@ std::string truncation_close_up() {
   for (int y = 67; y <= 84; ++y) {
     for (int x = 6; x <= 25; ++x) {
       if (drawn.write_count(x, y) == 0) continue;
-      const bool inside = centre_in_triangle(red, {x, y});
+      const bool inside = ch03::figures::centre_in_triangle(a, b, c, {x, y});
       diagram.fill({x, y}, inside ? dc::covered : dc::vermillion);
       if (!inside) {
         diagram.mark({x, y}, PixelMark::cross);
@@ -151,15 +152,15 @@ std::string truncation_close_up() {
     }
   }
   // A's exact x on each row, and the column the cast keeps.
-  const std::int64_t height = t.t2.y - t.t0.y;
-  for (int y = t.t0.y; y <= 84; ++y) {
-    const double exact = t.t0.x + double(t.t2.x - t.t0.x) * (y - t.t0.y) / double(height);
+  const std::int64_t height = t.p2.y - t.p0.y;
+  for (int y = t.p0.y; y <= 84; ++y) {
+    const double exact = t.p0.x + double(t.p2.x - t.p0.x) * (y - t.p0.y) / double(height);
     diagram.point({exact, y}, dc::blue, 3.5);
   }
   for (const auto& [p, q] : {std::pair{a, b}, std::pair{b, c}, std::pair{c, a}}) {
     diagram.line(p, q, dc::black, 1.5);
   }
-  diagram.vertex(t.t0, "t0", LabelPlace::below_right);
+  diagram.vertex(t.p0, "t0", LabelPlace::below_right);
   const glm::ivec2 named{10, 72};
   diagram.mark(named, PixelMark::square, dc::blue);
   diagram.legend_fill("drawn, centre inside", dc::covered);

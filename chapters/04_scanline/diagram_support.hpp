@@ -1,6 +1,7 @@
 /// @file
-/// What chapter 04's figures share: a step drawn into a counting canvas, which pixel centres lie
-/// in a triangle, and a zoomed diagram of one of the article's triangles.
+/// What chapter 04's figures share: a step drawn into a counting canvas and a zoomed diagram of
+/// one of the article's triangles (which pixel centres lie in a triangle is chapter 03's
+/// tri::ch03::figures::centre_in_triangle).
 #pragma once
 
 #include <functional>
@@ -19,9 +20,6 @@ using Step = std::function<void(Canvas&, glm::ivec2, glm::ivec2, glm::ivec2)>;
 
 /// The article's 200x200 image with the step drawn on the triangle, counting writes.
 Canvas drawn_by(const Step& step, const ch02::TinyrendererTriangle& triangle);
-
-/// True when the centre of `pixel` lies inside the triangle or on its edges (exact, integers).
-bool centre_in_triangle(const ch02::TinyrendererTriangle& triangle, glm::ivec2 pixel) noexcept;
 
 /// The triangle the step diagrams are drawn on: the article's green one, the smallest.
 const ch02::TinyrendererTriangle& diagram_triangle() noexcept;

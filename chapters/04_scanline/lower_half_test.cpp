@@ -42,7 +42,7 @@ struct Gaps {
 Gaps gaps_along(glm::ivec2 a, glm::ivec2 b, glm::ivec2 c, bool boundary_a) {
   const auto t = sort_by_y(a, b, c);
   Gaps gaps;
-  for (int y = t.t0.y + 1; y <= t.t1.y; ++y) {
+  for (int y = t.p0.y + 1; y <= t.p1.y; ++y) {
     const auto below = lower_half_ends(t, y - 1), here = lower_half_ends(t, y);
     const auto step = std::llabs(boundary_a ? here.a - below.a : here.b - below.b);
     if (step > 1) {
@@ -72,7 +72,7 @@ TEST_CASE("Step 3 draws exactly the two boundary points of every lower-half row"
     const auto [a, b, c] = triangle.vertices;
     const auto t = sort_by_y(a, b, c);
     PixelSet expected;
-    for (int y = t.t0.y; y <= t.t1.y; ++y) {
+    for (int y = t.p0.y; y <= t.p1.y; ++y) {
       const auto ends = lower_half_ends(t, y);
       expected.emplace(static_cast<int>(ends.a), y);
       expected.emplace(static_cast<int>(ends.b), y);
@@ -107,7 +107,7 @@ TEST_CASE("Step 4 fills each lower-half row from boundary A to boundary B", "[st
     const auto [a, b, c] = tinyrenderer_triangles[i].vertices;
     const auto t = sort_by_y(a, b, c);
     PixelSet expected;
-    for (int y = t.t0.y; y <= t.t1.y; ++y) {
+    for (int y = t.p0.y; y <= t.p1.y; ++y) {
       const auto ends = lower_half_ends(t, y);
       add_row(expected, y, static_cast<int>(std::min(ends.a, ends.b)),
               static_cast<int>(std::max(ends.a, ends.b)));

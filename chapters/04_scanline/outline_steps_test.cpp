@@ -72,9 +72,9 @@ TEST_CASE("Step 2 draws boundary A from t0 to t2 in red over boundary B in green
     Canvas canvas(200, 200);
     tri::ch04::draw_sorted_boundaries(canvas, a, b, c);
     const auto t = tri::ch04::sort_by_y(a, b, c);
-    const PixelSet boundary_a = line_pixels(t.t0, t.t2);
-    PixelSet boundary_b = line_pixels(t.t0, t.t1);
-    boundary_b.merge(line_pixels(t.t1, t.t2));
+    const PixelSet boundary_a = line_pixels(t.p0, t.p2);
+    PixelSet boundary_b = line_pixels(t.p0, t.p1);
+    boundary_b.merge(line_pixels(t.p1, t.p2));
     CHECK(pixels_coloured(canvas, tri::colors::red) == boundary_a);
     CHECK(pixels_coloured(canvas, tri::colors::green) ==
           tri::ch04::testing::minus(boundary_b, boundary_a));

@@ -96,7 +96,7 @@ TEST_CASE("The two-loop fill draws row t1.y twice", "[step5]") {
     const auto [a, b, c] = tinyrenderer_triangles[i].vertices;
     const PixelSet twice = overdrawn_pixels(drawn_by(fill_two_loops, a, b, c));
     CHECK(twice.size() == expected_overdraw[i]);
-    CHECK(rows_of(twice) == std::set<int>{sort_by_y(a, b, c).t1.y});
+    CHECK(rows_of(twice) == std::set<int>{sort_by_y(a, b, c).p1.y});
   }
 }
 
@@ -110,7 +110,7 @@ TEST_CASE("The published single loop stops one row short and never draws row t2.
     const PixelSet published = pixels_of(fill_single_loop_as_published, a, b, c);
     const PixelSet lost = minus(fixed, published);
     CHECK(minus(published, fixed).empty());
-    const glm::ivec2 top = sort_by_y(a, b, c).t2;
+    const glm::ivec2 top = sort_by_y(a, b, c).p2;
     CHECK(lost == PixelSet{{top.x, top.y}});  // a pointed top: just the vertex
     missing_rows += static_cast<int>(rows_of(lost).size());
     missing_pixels += lost.size();
@@ -206,8 +206,8 @@ TEST_CASE("The two fills part ways on the article's triangles by these pixels", 
     CHECK(std::pair(only_two.size(), only_one.size()) == expected[i]);
     // The bent B of the lower loop loses pixels below t1; the bent B of the upper loop adds
     // pixels above it.
-    for (const int y : rows_of(only_one)) CHECK((y > t.t0.y && y < t.t1.y));
-    for (const int y : rows_of(only_two)) CHECK((y > t.t1.y && y <= t.t2.y));
+    for (const int y : rows_of(only_one)) CHECK((y > t.p0.y && y < t.p1.y));
+    for (const int y : rows_of(only_two)) CHECK((y > t.p1.y && y <= t.p2.y));
   }
 }
 

@@ -4,6 +4,7 @@
 #include <cstdlib>
 #include <vector>
 
+#include "chapters/03_interpolate_fill/diagram_support.hpp"
 #include "chapters/04_scanline/boundaries.hpp"
 #include "chapters/04_scanline/diagram_support.hpp"
 #include "chapters/04_scanline/lower_half.hpp"
@@ -94,14 +95,14 @@ std::string lower_half_points() {
       green_diagram("Step 3: one point per row on each boundary leaves gaps where it is shallow");
   fill_boundaries(diagram, drawn);
   std::vector<std::int64_t> xs_a, xs_b;
-  for (int y = t.t0.y; y <= t.t1.y; ++y) {
+  for (int y = t.p0.y; y <= t.p1.y; ++y) {
     const SpanEnds ends = lower_half_ends(t, y);
     xs_a.push_back(ends.a);
     xs_b.push_back(ends.b);
   }
-  const auto [breaks_a, missing_a] = hatch_gaps(diagram, t.t0.y, xs_a);
-  const auto [breaks_b, missing_b] = hatch_gaps(diagram, t.t0.y, xs_b);
-  const glm::ivec2 b_at_t1{static_cast<int>(xs_b.back()), t.t1.y};
+  const auto [breaks_a, missing_a] = hatch_gaps(diagram, t.p0.y, xs_a);
+  const auto [breaks_b, missing_b] = hatch_gaps(diagram, t.p0.y, xs_b);
+  const glm::ivec2 b_at_t1{static_cast<int>(xs_b.back()), t.p1.y};
   diagram.mark(b_at_t1, PixelMark::square);
   diagram.label(glm::dvec2(b_at_t1) + glm::dvec2(0.5, 0), "B on row t1.y, not t1",
                 LabelPlace::above_right);
@@ -113,8 +114,8 @@ std::string lower_half_points() {
   diagram.legend_note(
       "A breaks " + std::to_string(breaks_a) + " times (" + std::to_string(missing_a) +
       " pixels missing), B " + std::to_string(breaks_b) + " times (" + std::to_string(missing_b) +
-      " pixels). On row " + std::to_string(t.t1.y) + ", B is at x = " + std::to_string(b_at_t1.x) +
-      ", not t1.x = " + std::to_string(t.t1.x) + ".");
+      " pixels). On row " + std::to_string(t.p1.y) + ", B is at x = " + std::to_string(b_at_t1.x) +
+      ", not t1.x = " + std::to_string(t.p1.x) + ".");
   return diagram.svg();
 }
 
@@ -126,9 +127,9 @@ std::string lower_half_filled() {
       green_diagram("Step 4: each lower-half row filled from A to B; B lags behind its edge");
   fill_written(diagram, drawn, dc::covered);
   int lost = 0;
-  for (int y = t.t0.y; y <= t.t1.y; ++y) {
+  for (int y = t.p0.y; y <= t.p1.y; ++y) {
     for (int x = 0; x < drawn.width(); ++x) {
-      if (drawn.write_count(x, y) == 0 && centre_in_triangle(diagram_triangle(), {x, y})) {
+      if (drawn.write_count(x, y) == 0 && ch03::figures::centre_in_triangle(a, b, c, {x, y})) {
         diagram.mark({x, y}, PixelMark::cross, dc::vermillion);
         ++lost;
       }
@@ -172,7 +173,7 @@ std::string single_loop() {
       green_diagram("Step 6: one loop with second_half, each pixel once, top row included");
   fill_written(diagram, drawn, dc::covered);
   for (int x = 0; x < drawn.width(); ++x) {
-    if (drawn.write_count(x, t.t2.y) > 0) diagram.mark({x, t.t2.y}, PixelMark::square);
+    if (drawn.write_count(x, t.p2.y) > 0) diagram.mark({x, t.p2.y}, PixelMark::square);
   }
   diagram.legend_fill("drawn once", dc::covered);
   diagram.legend_mark("row t2.y: the published loop stops before it", PixelMark::square);
