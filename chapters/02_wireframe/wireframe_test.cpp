@@ -23,10 +23,9 @@ using Vertices = std::array<glm::ivec2, 3>;
 constexpr int side = 48;
 
 PixelSet outline_pixels(const Vertices& v, int width = side, int height = side) {
-  Canvas canvas(width, height);
-  canvas.enable_write_counts();
-  tri::ch02::draw_wireframe_triangle(canvas, v[0], v[1], v[2], tri::colors::white);
-  return tri::testing::written_pixels(canvas);
+  return tri::testing::pixels_drawn(width, height, [&](Canvas& canvas) {
+    tri::ch02::draw_wireframe_triangle(canvas, v[0], v[1], v[2], tri::colors::white);
+  });
 }
 
 PixelSet line_pixels(glm::ivec2 a, glm::ivec2 b) {

@@ -17,17 +17,15 @@ using tri::Canvas;
 namespace {
 
 PixelSet outline_pixels(const Vertices& v, int width, int height) {
-  Canvas canvas(width, height);
-  canvas.enable_write_counts();
-  tri::ch02::draw_wireframe_triangle(canvas, v[0], v[1], v[2], tri::colors::black);
-  return tri::testing::written_pixels(canvas);
+  return tri::testing::pixels_drawn(width, height, [&](Canvas& canvas) {
+    tri::ch02::draw_wireframe_triangle(canvas, v[0], v[1], v[2], tri::colors::black);
+  });
 }
 
 PixelSet line_pixels(glm::ivec2 a, glm::ivec2 b, int width, int height) {
-  Canvas canvas(width, height);
-  canvas.enable_write_counts();
-  tri::ch01::draw_line_gambetta(canvas, a, b, tri::colors::black);
-  return tri::testing::written_pixels(canvas);
+  return tri::testing::pixels_drawn(width, height, [&](Canvas& canvas) {
+    tri::ch01::draw_line_gambetta(canvas, a, b, tri::colors::black);
+  });
 }
 
 // draw_line_gambetta computes y = f(x) exactly when the edge is wider than tall.

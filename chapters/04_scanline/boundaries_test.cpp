@@ -31,7 +31,7 @@ TEST_CASE("Sorting by y puts the vertices bottom to top for all six orders", "[s
     const auto expected = sort_by_y(a, b, c);
     REQUIRE(expected.p0.y < expected.p1.y);
     REQUIRE(expected.p1.y < expected.p2.y);
-    for (const auto& order : tri::ch04::testing::all_orders(a, b, c)) {
+    for (const auto& order : tri::testing::vertex_orders(a, b, c)) {
       const auto sorted = sort_by_y(order[0], order[1], order[2]);
       CHECK(sorted.p0 == expected.p0);
       CHECK(sorted.p1 == expected.p1);

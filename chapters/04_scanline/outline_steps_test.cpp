@@ -60,7 +60,7 @@ TEST_CASE("Step 1 draws the same pixels for all six vertex orders", "[step1][ord
     edges.merge(line_pixels(b, c));
     edges.merge(line_pixels(c, a));
     CHECK(expected == edges);
-    for (const auto& order : tri::ch04::testing::all_orders(a, b, c)) {
+    for (const auto& order : tri::testing::vertex_orders(a, b, c)) {
       CHECK(outline_pixels(order[0], order[1], order[2]) == expected);
     }
   }
@@ -77,7 +77,7 @@ TEST_CASE("Step 2 draws boundary A from t0 to t2 in red over boundary B in green
     boundary_b.merge(line_pixels(t.p1, t.p2));
     CHECK(pixels_coloured(canvas, tri::colors::red) == boundary_a);
     CHECK(pixels_coloured(canvas, tri::colors::green) ==
-          tri::ch04::testing::minus(boundary_b, boundary_a));
+          tri::testing::minus(boundary_b, boundary_a));
   }
   // The red triangle: A is the long edge on the left, rising from (10,70) to (50,160).
   Canvas canvas(200, 200);

@@ -14,13 +14,13 @@ using tri::ch04::fill_single_loop_as_published;
 using tri::ch04::fill_two_loops;
 using tri::ch04::sort_by_y;
 using tri::ch04::testing::add_row;
-using tri::ch04::testing::all_orders;
 using tri::ch04::testing::drawn_by;
-using tri::ch04::testing::minus;
 using tri::ch04::testing::pixels_of;
 using tri::testing::inclusive_pixels;
+using tri::testing::minus;
 using tri::testing::overdrawn_pixels;
 using tri::testing::PixelSet;
+using tri::testing::vertex_orders;
 
 // tinyrenderer's red triangle, (10, 70), (50, 160), (70, 80).
 constexpr const auto& red = tinyrenderer_triangles[0].vertices;
@@ -137,7 +137,7 @@ TEST_CASE("The single loop takes the second half from the first row when t0.y ==
   add_row(expected, 1, 0, 4);
   add_row(expected, 2, 1, 3);
   add_row(expected, 3, 2, 2);
-  for (const auto& order : all_orders({0, 0}, {4, 0}, {2, 3})) {
+  for (const auto& order : vertex_orders({0, 0}, {4, 0}, {2, 3})) {
     CHECK(pixels_of(fill_single_loop, order[0], order[1], order[2]) == expected);
   }
 }
@@ -147,7 +147,7 @@ TEST_CASE("The single loop stays in the first half to the top when t1.y == t2.y"
   PixelSet expected{{2, 0}, {2, 1}};
   add_row(expected, 2, 1, 3);
   add_row(expected, 3, 0, 4);
-  for (const auto& order : all_orders({2, 0}, {0, 3}, {4, 3})) {
+  for (const auto& order : vertex_orders({2, 0}, {0, 3}, {4, 3})) {
     CHECK(pixels_of(fill_single_loop, order[0], order[1], order[2]) == expected);
   }
   CHECK(expected == inclusive_pixels({2, 0}, {0, 3}, {4, 3}, 200, 200));
@@ -170,7 +170,7 @@ TEST_CASE("The two-loop fill on a flat bottom depends on which bottom vertex is 
 TEST_CASE("The two-loop fill on a flat top covers the top edge with its second loop",
           "[step5][division-by-zero]") {
   const PixelSet single = pixels_of(fill_single_loop, {2, 0}, {0, 3}, {4, 3});
-  for (const auto& order : all_orders({2, 0}, {0, 3}, {4, 3})) {
+  for (const auto& order : vertex_orders({2, 0}, {0, 3}, {4, 3})) {
     const Canvas canvas = drawn_by(fill_two_loops, order[0], order[1], order[2]);
     CHECK(tri::testing::written_pixels(canvas) == single);
     CHECK(rows_of(overdrawn_pixels(canvas)) == std::set<int>{3});
@@ -223,7 +223,7 @@ TEST_CASE("The single loop draws each pixel once and the same pixels for all six
     const Canvas canvas = drawn_by(fill_single_loop, a, b, c, 32, 32);
     CHECK(overdrawn_pixels(canvas).empty());  // one pass per row, each row once
     const PixelSet expected = tri::testing::written_pixels(canvas);
-    for (const auto& order : all_orders(a, b, c)) {
+    for (const auto& order : vertex_orders(a, b, c)) {
       CHECK(pixels_of(fill_single_loop, order[0], order[1], order[2], 32, 32) == expected);
     }
   }
@@ -240,7 +240,7 @@ TEST_CASE("The two-loop fill depends on vertex order only when two vertices shar
     const glm::ivec2 c{random.integer(0, 31), random.integer(0, 31)};
     const PixelSet first = pixels_of(fill_two_loops, a, b, c, 32, 32);
     bool differs = false;
-    for (const auto& order : all_orders(a, b, c)) {
+    for (const auto& order : vertex_orders(a, b, c)) {
       differs |= pixels_of(fill_two_loops, order[0], order[1], order[2], 32, 32) != first;
     }
     if (differs) {

@@ -109,9 +109,7 @@ TEST_CASE("The published test draws other pixels than the right one on the tinyr
     const auto& [a, b, c] = tinyrenderer_triangles[i].vertices;
     const PixelSet right = filled(a, b, c, 200, 200);
     const PixelSet published = drawn(fill_triangle_published_bug, a, b, c, 200, 200);
-    PixelSet both;
-    std::set_intersection(right.begin(), right.end(), published.begin(), published.end(),
-                          std::inserter(both, both.end()));
+    const PixelSet both = tri::testing::intersection(right, published);
     CHECK(right.size() == expected[i].right);
     CHECK(published.size() == expected[i].published);
     CHECK(both.size() == expected[i].both);

@@ -19,25 +19,15 @@ using tri::ch06::testing::random_point;
 using tri::testing::inclusive_pixels;
 using tri::testing::PixelSet;
 using tri::testing::Random;
+using tri::testing::vertex_orders;
 using tri::testing::written_pixels;
 
 namespace {
 
 PixelSet unguarded_pixels(const PixelTriangle& t, int width, int height) {
-  Canvas canvas(width, height);
-  canvas.enable_write_counts();
-  fill_triangle_barycentric_unguarded<double>(canvas, t[0], t[1], t[2], tri::colors::white);
-  return written_pixels(canvas);
-}
-
-// The six orders in which three vertices can be passed.
-std::array<PixelTriangle, 6> vertex_orders(const PixelTriangle& t) {
-  return {{{t[0], t[1], t[2]},
-           {t[0], t[2], t[1]},
-           {t[1], t[0], t[2]},
-           {t[1], t[2], t[0]},
-           {t[2], t[0], t[1]},
-           {t[2], t[1], t[0]}}};
+  return tri::testing::pixels_drawn(width, height, [&](Canvas& canvas) {
+    fill_triangle_barycentric_unguarded<double>(canvas, t[0], t[1], t[2], tri::colors::white);
+  });
 }
 
 }  // namespace
