@@ -108,7 +108,7 @@ PixelDiagram close_up_panel(int flip) {
 
 }  // namespace
 
-std::string figure_7_3(int flip) {
+SvgFigure figure_7_3(int flip) {
   const Vertices v = figure_7_3_vertices(flip);
   Canvas categories(figure_size, figure_size, dc::empty);
   tri::CenteredView view(categories);
@@ -141,17 +141,19 @@ std::string figure_7_3(int flip) {
     diagram.legend_note("Vermillion dots: the outline pixels outside the fill.");
   diagram.legend_note(std::to_string(count.outside) + " of the outline's " +
                       std::to_string(count.outline) + " pixels lie outside the fill.");
-  return diagram.svg();
+  return SvgFigure{flip > 0 ? "03_figure_7_3" : "03_figure_7_3_flipped", diagram.svg()};
 }
 
-std::string figure_7_3_close_up() {
+SvgFigure figure_7_3_close_up() {
   const std::array<PixelDiagram, 2> panels{close_up_panel(1), close_up_panel(-1)};
-  return side_by_side(panels,
-                      "Figure 7-3, the wide edge zoomed: its halfway ties round up, into the fill "
-                      "upright, out of it flipped");
+  return SvgFigure{
+      "03_figure_7_3_close_up",
+      side_by_side(panels,
+                   "Figure 7-3, the wide edge zoomed: its halfway ties round up, into the fill "
+                   "upright, out of it flipped")};
 }
 
-std::string tinyrenderer_fill_outline() {
+SvgFigure tinyrenderer_fill_outline() {
   constexpr int size = tri::ch02::tinyrenderer_image_size;
   const auto& triangles = tri::ch02::tinyrenderer_triangles;
   Canvas categories(size, size, dc::empty);
@@ -181,10 +183,10 @@ std::string tinyrenderer_fill_outline() {
   diagram.legend_note("Triangles named by their colour in tinyrenderer's lesson.");
   diagram.legend_note(
       "Vermillion dots: outline pixels outside the fill (red, white, green: " + counts + ").");
-  return diagram.svg();
+  return SvgFigure{"03_tinyrenderer_fill_outline", diagram.svg()};
 }
 
-std::string tinyrenderer_fill_outline_close_up() {
+SvgFigure tinyrenderer_fill_outline_close_up() {
   // The green triangle, the one with the most outline pixels outside its fill.
   const Vertices& green = tri::ch02::tinyrenderer_triangles[2].vertices;
   const int size = tri::ch02::tinyrenderer_image_size;
@@ -208,10 +210,10 @@ std::string tinyrenderer_fill_outline_close_up() {
   diagram.legend_note(std::to_string(count.outside) + " of the outline's " +
                       std::to_string(count.outline) +
                       " pixels lie outside the fill, all on the two edges wider than tall.");
-  return diagram.svg();
+  return SvgFigure{"03_tinyrenderer_fill_outline_close_up", diagram.svg()};
 }
 
-std::string trap_one_short() {
+SvgFigure trap_one_short() {
   const auto [a, b, c] = hand_triangle;
   Canvas drawn(16, 16);
   drawn.enable_write_counts();
@@ -239,10 +241,10 @@ std::string trap_one_short() {
                       dc::vermillion);
   diagram.legend_mark("lost to y < P2.y (the top row)", PixelMark::square, dc::vermillion);
   diagram.legend_line("ideal triangle edges", dc::dark_gray);
-  return diagram.svg();
+  return SvgFigure{"03_trap_one_short", diagram.svg()};
 }
 
-std::string trap_no_pop_back() {
+SvgFigure trap_no_pop_back() {
   const auto [a, b, c] = hand_triangle;
   const SortedTriangle t = sort_by_y(a, b, c);
   const EdgeXs e = interpolate_edges(t, triangle_rows(t));
@@ -281,7 +283,7 @@ std::string trap_no_pop_back() {
   diagram.legend_note("Vermillion dots: x_right with P1 twice; its 7th value (row 6) is never");
   diagram.legend_note("drawn, as x02 has 6 rows. Pixels drawn only without the copy: " +
                       std::to_string(only_right) + ".");
-  return diagram.svg();
+  return SvgFigure{"03_trap_no_pop_back", diagram.svg()};
 }
 
 }  // namespace tri::ch03::figures

@@ -103,7 +103,7 @@ PixelDiagram whole_triangle_panel(const ch02::TinyrendererTriangle& t, const cha
 
 }  // namespace
 
-std::string loop_differences() {
+SvgFigure loop_differences() {
   PixelDiagram diagram =
       green_diagram("Where step 5's two loops and step 6's single loop part ways (green triangle)");
   const Counts counts = paint_differences(diagram, draw_variants(diagram_triangle()), true);
@@ -116,19 +116,21 @@ std::string loop_differences() {
   diagram.legend_mark("row t2.y, missing as published", PixelMark::square);
   diagram.legend_line("ideal edges", dc::black);
   diagram.legend_note(counts_note(counts) + ".");
-  return diagram.svg();
+  return SvgFigure{"04_loop_differences", diagram.svg()};
 }
 
-std::string loop_differences_red_white() {
+SvgFigure loop_differences_red_white() {
   const std::array<PixelDiagram, 2> panels{
       whole_triangle_panel(ch02::tinyrenderer_triangles[0], "red", {6, 66}, {74, 164}, 4),
       whole_triangle_panel(ch02::tinyrenderer_triangles[1], "white", {66, -2}, {184, 184}, 3)};
-  return side_by_side(panels,
-                      "The same differences on the red and white triangles (dots: pixels that "
-                      "differ)");
+  return SvgFigure{
+      "04_loop_differences_red_white",
+      side_by_side(panels,
+                   "The same differences on the red and white triangles (dots: pixels that "
+                   "differ)")};
 }
 
-std::string truncation_close_up() {
+SvgFigure truncation_close_up() {
   const ch02::TinyrendererTriangle& red = ch02::tinyrenderer_triangles[0];
   const auto [a, b, c] = red.vertices;
   const SortedTriangle t = sort_by_y(a, b, c);
@@ -171,7 +173,7 @@ std::string truncation_close_up() {
   diagram.legend_note("Blue dots: boundary A's exact x on each row; the span starts at the");
   diagram.legend_note("column the int cast cuts it to, toward t0. " + std::to_string(outside) +
                       " pixels here are drawn though their centre is outside.");
-  return diagram.svg();
+  return SvgFigure{"04_truncation_close_up", diagram.svg()};
 }
 
 }  // namespace tri::ch04::figures
