@@ -34,7 +34,7 @@ std::size_t drawn_count(const Canvas& canvas, tri::Color background) {
 }
 
 // Figure 7-1: (-200,-250), (200,50), (20,250) in Gambetta's centred coordinates.
-std::string gambetta_figure_7_1() {
+tri::SvgFigure gambetta_figure_7_1() {
   const int size = tri::ch02::figure_7_1_canvas_size;
   Canvas canvas(size, size, tri::colors::white);
   tri::CenteredView view(canvas);
@@ -62,7 +62,7 @@ std::string gambetta_figure_7_1() {
                 LabelPlace::below_right, dc::blue);
   diagram.legend_fill("drawn by draw_wireframe_triangle", dc::black);
   diagram.legend_note("Vertices (dots): Pi (Gambetta's centred coordinates) = canvas coordinates.");
-  return diagram.svg();
+  return tri::SvgFigure{"02_wireframe_figure_7_1", diagram.svg()};
 }
 
 using tri::ch02::tinyrenderer_triangles;
@@ -80,7 +80,7 @@ const std::array<DiagramColor, 3> tinyrenderer_diagram_colors{{
 
 constexpr glm::ivec2 apex_first{40, 146}, apex_last{60, 163};
 
-std::string tinyrenderer_figure() {
+tri::SvgFigure tinyrenderer_figure() {
   PixelDiagram diagram({0, 0}, {199, 199},
                        "tinyrenderer lesson 2's three test triangles as outlines, 200x200 image",
                        3);
@@ -112,7 +112,7 @@ std::string tinyrenderer_figure() {
   diagram.legend_line("the sharp top zoomed in 02_wireframe_tinyrenderer_apex", dc::blue, true);
   diagram.legend_note("Outlines of " + sizes +
                       " pixels; vertices labelled with their coordinates.");
-  return diagram.svg();
+  return tri::SvgFigure{"02_wireframe_tinyrenderer", diagram.svg()};
 }
 
 // Each edge's pixels in its own colour, the pixels two edges draw hatched, the ideal edges and
@@ -170,17 +170,21 @@ std::string edges_diagram(const Vertices& v, glm::ivec2 first, glm::ivec2 last,
   return diagram.svg();
 }
 
-std::string joints_figure() {
-  return edges_diagram({{{1, 1}, {7, 3}, {3, 6}}}, {0, 0}, {9, 7},
-                       "Where the lines meet: each vertex is written by both of its edges",
-                       {LabelPlace::below_right, LabelPlace::right, LabelPlace::above_right}, 40);
+tri::SvgFigure joints_figure() {
+  return tri::SvgFigure{
+      "02_wireframe_joints",
+      edges_diagram({{{1, 1}, {7, 3}, {3, 6}}}, {0, 0}, {9, 7},
+                    "Where the lines meet: each vertex is written by both of its edges",
+                    {LabelPlace::below_right, LabelPlace::right, LabelPlace::above_right}, 40)};
 }
 
-std::string tinyrenderer_apex_figure() {
+tri::SvgFigure tinyrenderer_apex_figure() {
   const Vertices& v = tinyrenderer_triangles[0].vertices;
-  return edges_diagram(v, apex_first, apex_last,
-                       "tinyrenderer's red triangle, top (50, 160): both edges also draw (50, 159)",
-                       {LabelPlace::right, LabelPlace::above_right, LabelPlace::right}, 24);
+  return tri::SvgFigure{
+      "02_wireframe_tinyrenderer_apex",
+      edges_diagram(v, apex_first, apex_last,
+                    "tinyrenderer's red triangle, top (50, 160): both edges also draw (50, 159)",
+                    {LabelPlace::right, LabelPlace::above_right, LabelPlace::right}, 24)};
 }
 
 }  // namespace
@@ -193,10 +197,5 @@ int main(int argc, char** argv) {
       "image (02_wireframe_tinyrenderer.svg) with a zoom on the sharp top of the first\n"
       "(02_wireframe_tinyrenderer_apex.svg), and a diagram of where the three lines meet\n"
       "(02_wireframe_joints.svg).",
-      [](tri::FigureWriter& figures) {
-        figures.save_svg("02_wireframe_figure_7_1", gambetta_figure_7_1());
-        figures.save_svg("02_wireframe_tinyrenderer", tinyrenderer_figure());
-        figures.save_svg("02_wireframe_tinyrenderer_apex", tinyrenderer_apex_figure());
-        figures.save_svg("02_wireframe_joints", joints_figure());
-      });
+      {gambetta_figure_7_1, tinyrenderer_figure, tinyrenderer_apex_figure, joints_figure});
 }
