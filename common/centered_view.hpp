@@ -13,19 +13,15 @@ namespace tri {
 /// flip is needed.
 class CenteredView {
  public:
-  explicit CenteredView(Canvas& canvas) noexcept : canvas_(canvas) {}
+  explicit CenteredView(const Canvas& canvas) noexcept : canvas_(canvas) {}
 
   /// The canvas pixel that the centred point p lands on.
   glm::ivec2 to_canvas(glm::ivec2 p) const noexcept {
     return {canvas_.width() / 2 + p.x, canvas_.height() / 2 + p.y};
   }
-  /// Gambetta's PutPixel: a pixel in centred coordinates (ignored outside the canvas).
-  void put_pixel(glm::ivec2 p, Color color) noexcept { canvas_.put_pixel(to_canvas(p), color); }
-
-  Canvas& canvas() noexcept { return canvas_; }
 
  private:
-  Canvas& canvas_;
+  const Canvas& canvas_;
 };
 
 }  // namespace tri

@@ -18,12 +18,6 @@ void FigureWriter::save_png(std::string_view name, const Canvas& canvas) {
   log_ << "wrote " << path.string() << "\n";
 }
 
-void FigureWriter::save_counts(std::string_view name, const Canvas& canvas) {
-  const auto path = folder_ / (std::string(name) + ".pgm");
-  write_counts_pgm(canvas, path);
-  log_ << "wrote " << path.string() << "\n";
-}
-
 void FigureWriter::save_text(std::string_view name, std::string_view text) {
   const auto path = folder_ / std::string(name);
   write_file_safely(path, bytes_of_text(text));

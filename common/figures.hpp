@@ -20,14 +20,10 @@ class FigureWriter {
 
   /// Writes folder/name.png (atomically) and logs its path.
   void save_png(std::string_view name, const Canvas& canvas);
-  /// Writes folder/name.pgm with the canvas's write counts and logs its path.
-  void save_counts(std::string_view name, const Canvas& canvas);
   /// Writes folder/name.svg (a pixel diagram or any SVG document) and logs its path.
   void save_svg(std::string_view name, std::string_view svg);
   /// Writes folder/name (any text, e.g. a Markdown table) and logs its path.
   void save_text(std::string_view name, std::string_view text);
-
-  const std::filesystem::path& folder() const noexcept { return folder_; }
 
  private:
   std::filesystem::path folder_;

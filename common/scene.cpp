@@ -90,7 +90,7 @@ class LineReader {
     return value;
   }
 
-  // Reads an optional "r g b" at words[first..]; white when absent.
+  // Reads an optional "r g b" at words[first..]; `absent` when the line has none.
   Color color(const std::vector<std::string_view>& words, std::size_t first, Color absent) const {
     if (words.size() == first) return absent;
     const auto channel = [&](std::size_t i, const char* name) {

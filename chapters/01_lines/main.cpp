@@ -84,7 +84,8 @@ void fill_agreed_star(PixelDiagram& diagram, tri::Color even, tri::Color odd) {
 
 constexpr glm::ivec2 zoom_first{16, 16}, zoom_last{48, 48};
 
-std::string star_figure(const std::vector<StarTie>& ties) {
+tri::SvgFigure star_figure() {
+  const std::vector<StarTie> ties = star_ties();
   PixelDiagram diagram({0, 0}, {64, 64},
                        "24 spokes from (32, 32), 15° apart: the four algorithms differ only at "
                        "6 tie steps",
@@ -111,10 +112,11 @@ std::string star_figure(const std::vector<StarTie>& ties) {
   diagram.legend_note("Spokes end at the pixel nearest to radius 30; " + std::to_string(split) +
                       " of the " + std::to_string(ties.size()) +
                       " tie steps split the algorithms, 2 against 2.");
-  return diagram.svg();
+  return tri::SvgFigure{"01_star", diagram.svg()};
 }
 
-std::string star_differences_figure(const std::vector<StarTie>& ties) {
+tri::SvgFigure star_differences_figure() {
+  const std::vector<StarTie> ties = star_ties();
   PixelDiagram diagram(zoom_first, zoom_last,
                        "The star's 8 tie steps: which pixel each algorithm draws "
                        "(G Gambetta, D DDA, B Bresenham, M midpoint)",
@@ -150,7 +152,7 @@ std::string star_differences_figure(const std::vector<StarTie>& ties) {
       "Letters in a pixel: the algorithms that draw it (all: all four). Each spoke "
       "with a tie runs 26 by 15 pixels,");
   diagram.legend_note("so 13 steps out its minor coordinate is exactly 7.5 from the centre's.");
-  return diagram.svg();
+  return tri::SvgFigure{"01_star_differences", diagram.svg()};
 }
 
 // Lines whose exact path passes halfway between two pixels at some steps. Each is drawn twice:
@@ -186,7 +188,7 @@ const std::array<TieLine, 4> tie_lines{{
 }};
 constexpr int upper_shift = 16;
 
-std::string ties_figure(const LineAlgorithm& algorithm) {
+tri::SvgFigure ties_figure(const LineAlgorithm& algorithm) {
   PixelDiagram diagram({0, 0}, {29, 30},
                        "Ties drawn by " + std::string(algorithm.name) +
                            ": upper copy from the left end, lower copy from the right end",
@@ -231,7 +233,16 @@ std::string ties_figure(const LineAlgorithm& algorithm) {
   diagram.legend_note(std::to_string(ties) + " tie steps, " + std::to_string(not_rounded_up) +
                       " not rounded up. Up means toward larger y for a shallow line and larger x "
                       "for a steep one.");
-  return diagram.svg();
+  return tri::SvgFigure{"01_ties_" + std::string(algorithm.name), diagram.svg()};
+}
+
+// The star, its tie steps, then one ties diagram per algorithm.
+std::vector<tri::SvgFigureFunction> figures() {
+  std::vector<tri::SvgFigureFunction> list{star_figure, star_differences_figure};
+  for (const LineAlgorithm& algorithm : line_algorithms) {
+    list.push_back([&algorithm] { return ties_figure(algorithm); });
+  }
+  return list;
 }
 
 }  // namespace
@@ -243,12 +254,5 @@ int main(int argc, char** argv) {
       "(01_star.svg), a diagram of the star's tie steps naming the pixel each algorithm draws\n"
       "(01_star_differences.svg), and per algorithm a diagram of lines that pass exactly halfway\n"
       "between pixels, drawn in both directions (01_ties_<algorithm>.svg).",
-      [](tri::FigureWriter& figures) {
-        const auto ties = star_ties();
-        figures.save_svg("01_star", star_figure(ties));
-        figures.save_svg("01_star_differences", star_differences_figure(ties));
-        for (const auto& algorithm : line_algorithms) {
-          figures.save_svg("01_ties_" + std::string(algorithm.name), ties_figure(algorithm));
-        }
-      });
+      figures());
 }

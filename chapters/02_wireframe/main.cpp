@@ -9,6 +9,7 @@
 
 #include "chapters/01_lines/line_reference.hpp"
 #include "chapters/01_lines/line_steps.hpp"
+#include "chapters/02_wireframe/example_triangles.hpp"
 #include "chapters/02_wireframe/wireframe.hpp"
 #include "common/centered_view.hpp"
 #include "common/figures.hpp"
@@ -33,10 +34,11 @@ std::size_t drawn_count(const Canvas& canvas, tri::Color background) {
 }
 
 // Figure 7-1: (-200,-250), (200,50), (20,250) in Gambetta's centred coordinates.
-std::string gambetta_figure_7_1() {
-  Canvas canvas(600, 600, tri::colors::white);
+tri::SvgFigure gambetta_figure_7_1() {
+  const int size = tri::ch02::figure_7_1_canvas_size;
+  Canvas canvas(size, size, tri::colors::white);
   tri::CenteredView view(canvas);
-  const std::array<glm::ivec2, 3> centred{{{-200, -250}, {200, 50}, {20, 250}}};
+  const auto& centred = tri::ch02::figure_7_1_triangle;
   Vertices v{};
   for (std::size_t i = 0; i < v.size(); ++i) v[i] = view.to_canvas(centred[i]);
   tri::ch02::draw_wireframe_triangle(canvas, v[0], v[1], v[2], dc::black);
@@ -60,33 +62,36 @@ std::string gambetta_figure_7_1() {
                 LabelPlace::below_right, dc::blue);
   diagram.legend_fill("drawn by draw_wireframe_triangle", dc::black);
   diagram.legend_note("Vertices (dots): Pi (Gambetta's centred coordinates) = canvas coordinates.");
-  return diagram.svg();
+  return tri::SvgFigure{"02_wireframe_figure_7_1", diagram.svg()};
 }
 
-struct ColouredTriangle {
-  Vertices v;
+using tri::ch02::tinyrenderer_triangles;
+
+// How the figure shows tinyrenderer's red, white and green on a white page.
+struct DiagramColor {
   tri::Color color;
   std::string name;
 };
-
-// tinyrenderer lesson 2's test triangles on its 200x200 image.
-const std::array<ColouredTriangle, 3> tinyrenderer_triangles{{
-    {{{{10, 70}, {50, 160}, {70, 80}}}, dc::vermillion, "vermillion (red in tinyrenderer)"},
-    {{{{180, 50}, {150, 1}, {70, 180}}}, dc::black, "black (white in tinyrenderer)"},
-    {{{{180, 150}, {120, 160}, {130, 180}}}, dc::green, "green"},
+const std::array<DiagramColor, 3> tinyrenderer_diagram_colors{{
+    {dc::vermillion, "vermillion (red in tinyrenderer)"},
+    {dc::black, "black (white in tinyrenderer)"},
+    {dc::green, "green"},
 }};
 
 constexpr glm::ivec2 apex_first{40, 146}, apex_last{60, 163};
 
-std::string tinyrenderer_figure() {
+tri::SvgFigure tinyrenderer_figure() {
   PixelDiagram diagram({0, 0}, {199, 199},
                        "tinyrenderer lesson 2's three test triangles as outlines, 200x200 image",
                        3);
   diagram.show_centres(false);
   std::string sizes;
-  for (const auto& t : tinyrenderer_triangles) {
-    Canvas canvas(200, 200, tri::colors::white);
-    tri::ch02::draw_wireframe_triangle(canvas, t.v[0], t.v[1], t.v[2], t.color);
+  for (std::size_t t = 0; t < tinyrenderer_triangles.size(); ++t) {
+    const auto& v = tinyrenderer_triangles[t].vertices;
+    const int size = tri::ch02::tinyrenderer_image_size;
+    Canvas canvas(size, size, tri::colors::white);
+    tri::ch02::draw_wireframe_triangle(canvas, v[0], v[1], v[2],
+                                       tinyrenderer_diagram_colors[t].color);
     diagram.fill_from(canvas, tri::colors::white);
     sizes += (sizes.empty() ? "" : ", ") + std::to_string(drawn_count(canvas, tri::colors::white));
   }
@@ -97,17 +102,17 @@ std::string tinyrenderer_figure() {
   }};
   for (std::size_t t = 0; t < tinyrenderer_triangles.size(); ++t) {
     for (std::size_t i = 0; i < 3; ++i) {
-      const glm::ivec2 p = tinyrenderer_triangles[t].v[i];
+      const glm::ivec2 p = tinyrenderer_triangles[t].vertices[i];
       diagram.point(p, dc::dark_gray, 2.5);
       diagram.label(p, point_text(p), places[t][i], dc::dark_gray);
     }
   }
   diagram.frame(apex_first, apex_last, dc::blue, 1.5, true);
-  for (const auto& t : tinyrenderer_triangles) diagram.legend_fill(t.name, t.color);
+  for (const auto& c : tinyrenderer_diagram_colors) diagram.legend_fill(c.name, c.color);
   diagram.legend_line("the sharp top zoomed in 02_wireframe_tinyrenderer_apex", dc::blue, true);
   diagram.legend_note("Outlines of " + sizes +
                       " pixels; vertices labelled with their coordinates.");
-  return diagram.svg();
+  return tri::SvgFigure{"02_wireframe_tinyrenderer", diagram.svg()};
 }
 
 // Each edge's pixels in its own colour, the pixels two edges draw hatched, the ideal edges and
@@ -165,17 +170,21 @@ std::string edges_diagram(const Vertices& v, glm::ivec2 first, glm::ivec2 last,
   return diagram.svg();
 }
 
-std::string joints_figure() {
-  return edges_diagram({{{1, 1}, {7, 3}, {3, 6}}}, {0, 0}, {9, 7},
-                       "Where the lines meet: each vertex is written by both of its edges",
-                       {LabelPlace::below_right, LabelPlace::right, LabelPlace::above_right}, 40);
+tri::SvgFigure joints_figure() {
+  return tri::SvgFigure{
+      "02_wireframe_joints",
+      edges_diagram({{{1, 1}, {7, 3}, {3, 6}}}, {0, 0}, {9, 7},
+                    "Where the lines meet: each vertex is written by both of its edges",
+                    {LabelPlace::below_right, LabelPlace::right, LabelPlace::above_right}, 40)};
 }
 
-std::string tinyrenderer_apex_figure() {
-  const Vertices& v = tinyrenderer_triangles[0].v;
-  return edges_diagram(v, apex_first, apex_last,
-                       "tinyrenderer's red triangle, top (50, 160): both edges also draw (50, 159)",
-                       {LabelPlace::right, LabelPlace::above_right, LabelPlace::right}, 24);
+tri::SvgFigure tinyrenderer_apex_figure() {
+  const Vertices& v = tinyrenderer_triangles[0].vertices;
+  return tri::SvgFigure{
+      "02_wireframe_tinyrenderer_apex",
+      edges_diagram(v, apex_first, apex_last,
+                    "tinyrenderer's red triangle, top (50, 160): both edges also draw (50, 159)",
+                    {LabelPlace::right, LabelPlace::above_right, LabelPlace::right}, 24)};
 }
 
 }  // namespace
@@ -188,10 +197,5 @@ int main(int argc, char** argv) {
       "image (02_wireframe_tinyrenderer.svg) with a zoom on the sharp top of the first\n"
       "(02_wireframe_tinyrenderer_apex.svg), and a diagram of where the three lines meet\n"
       "(02_wireframe_joints.svg).",
-      [](tri::FigureWriter& figures) {
-        figures.save_svg("02_wireframe_figure_7_1", gambetta_figure_7_1());
-        figures.save_svg("02_wireframe_tinyrenderer", tinyrenderer_figure());
-        figures.save_svg("02_wireframe_tinyrenderer_apex", tinyrenderer_apex_figure());
-        figures.save_svg("02_wireframe_joints", joints_figure());
-      });
+      {gambetta_figure_7_1, tinyrenderer_figure, tinyrenderer_apex_figure, joints_figure});
 }

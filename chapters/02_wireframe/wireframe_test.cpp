@@ -8,6 +8,7 @@
 #include <catch2/catch.hpp>
 
 #include "chapters/01_lines/lines.hpp"
+#include "chapters/02_wireframe/example_triangles.hpp"
 #include "chapters/02_wireframe/wireframe.hpp"
 #include "common/centered_view.hpp"
 #include "tests/support/pixels.hpp"
@@ -22,10 +23,9 @@ using Vertices = std::array<glm::ivec2, 3>;
 constexpr int side = 48;
 
 PixelSet outline_pixels(const Vertices& v, int width = side, int height = side) {
-  Canvas canvas(width, height);
-  canvas.enable_write_counts();
-  tri::ch02::draw_wireframe_triangle(canvas, v[0], v[1], v[2], tri::colors::white);
-  return tri::testing::written_pixels(canvas);
+  return tri::testing::pixels_drawn(width, height, [&](Canvas& canvas) {
+    tri::ch02::draw_wireframe_triangle(canvas, v[0], v[1], v[2], tri::colors::white);
+  });
 }
 
 PixelSet line_pixels(glm::ivec2 a, glm::ivec2 b) {
@@ -154,11 +154,13 @@ TEST_CASE("Collinear vertices outline the segment between the outer two",
 
 TEST_CASE("Figure 7-1's triangle lands on the centred canvas with its vertices",
           "[wireframe][figure]") {
-  Canvas canvas(600, 600);
+  const int size = tri::ch02::figure_7_1_canvas_size;
+  Canvas canvas(size, size);
   canvas.enable_write_counts();
   tri::CenteredView view(canvas);
-  const Vertices v{view.to_canvas({-200, -250}), view.to_canvas({200, 50}),
-                   view.to_canvas({20, 250})};
+  const auto& centred = tri::ch02::figure_7_1_triangle;
+  const Vertices v{view.to_canvas(centred[0]), view.to_canvas(centred[1]),
+                   view.to_canvas(centred[2])};
   CHECK(v == Vertices{{{100, 50}, {500, 350}, {320, 550}}});
   tri::ch02::draw_wireframe_triangle(canvas, v[0], v[1], v[2], tri::colors::black);
   const PixelSet outline = tri::testing::written_pixels(canvas);
@@ -170,12 +172,10 @@ TEST_CASE("Figure 7-1's triangle lands on the centred canvas with its vertices",
 }
 
 TEST_CASE("tinyrenderer's three test triangles outline as closed curves", "[wireframe][figure]") {
-  const Vertices triangles[] = {{{{10, 70}, {50, 160}, {70, 80}}},
-                                {{{180, 50}, {150, 1}, {70, 180}}},
-                                {{{180, 150}, {120, 160}, {130, 180}}}};
   std::vector<std::size_t> sizes;
-  for (const Vertices& v : triangles) {
-    const PixelSet outline = outline_pixels(v, 200, 200);
+  for (const auto& triangle : tri::ch02::tinyrenderer_triangles) {
+    const int size = tri::ch02::tinyrenderer_image_size;
+    const PixelSet outline = outline_pixels(triangle.vertices, size, size);
     CHECK(eight_connected(outline));
     sizes.push_back(outline.size());
   }
@@ -211,7 +211,8 @@ TEST_CASE("outline_edge_pixels gives each edge's pixels; only the joints are in 
 
 TEST_CASE("tinyrenderer's red triangle: both edges at its top also draw (50,159)",
           "[wireframe][figure]") {
-  const auto edges = tri::ch02::outline_edge_pixels({10, 70}, {50, 160}, {70, 80});
+  const auto [a, b, c] = tri::ch02::tinyrenderer_triangles[0].vertices;
+  const auto edges = tri::ch02::outline_edge_pixels(a, b, c);
   for (const std::size_t i : {0, 1}) {
     CHECK(std::count(edges[i].begin(), edges[i].end(), glm::ivec2(50, 159)) == 1);
   }

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "chapters/02_wireframe/example_triangles.hpp"
 #include "chapters/02_wireframe/wireframe.hpp"
 #include "chapters/03_interpolate_fill/diagram_support.hpp"
 #include "chapters/03_interpolate_fill/fill_steps.hpp"
@@ -52,10 +53,12 @@ OutlineCount paint_fill_and_outline(Canvas& categories, const Vertices& v) {
 
 // Figure 7-3's vertices in the book's centred coordinates, upside down for flip = -1.
 Vertices figure_7_3_vertices(int flip) {
-  return {{{-200, -250 * flip}, {200, 50 * flip}, {20, 250 * flip}}};
+  Vertices v = tri::ch02::figure_7_1_triangle;
+  for (glm::ivec2& p : v) p.y *= flip;
+  return v;
 }
 
-constexpr int figure_size = 600;
+constexpr int figure_size = tri::ch02::figure_7_1_canvas_size;
 constexpr glm::ivec2 to_centred{-figure_size / 2, -figure_size / 2};
 
 // The close-up's pixels on the wide edge P0-P1, in centred coordinates.
@@ -105,7 +108,7 @@ PixelDiagram close_up_panel(int flip) {
 
 }  // namespace
 
-std::string figure_7_3(int flip) {
+SvgFigure figure_7_3(int flip) {
   const Vertices v = figure_7_3_vertices(flip);
   Canvas categories(figure_size, figure_size, dc::empty);
   tri::CenteredView view(categories);
@@ -138,28 +141,26 @@ std::string figure_7_3(int flip) {
     diagram.legend_note("Vermillion dots: the outline pixels outside the fill.");
   diagram.legend_note(std::to_string(count.outside) + " of the outline's " +
                       std::to_string(count.outline) + " pixels lie outside the fill.");
-  return diagram.svg();
+  return SvgFigure{flip > 0 ? "03_figure_7_3" : "03_figure_7_3_flipped", diagram.svg()};
 }
 
-std::string figure_7_3_close_up() {
+SvgFigure figure_7_3_close_up() {
   const std::array<PixelDiagram, 2> panels{close_up_panel(1), close_up_panel(-1)};
-  return side_by_side(panels,
-                      "Figure 7-3, the wide edge zoomed: its halfway ties round up, into the fill "
-                      "upright, out of it flipped");
+  return SvgFigure{
+      "03_figure_7_3_close_up",
+      side_by_side(panels,
+                   "Figure 7-3, the wide edge zoomed: its halfway ties round up, into the fill "
+                   "upright, out of it flipped")};
 }
 
-std::string tinyrenderer_fill_outline() {
-  constexpr int size = 200;
-  const std::array<Vertices, 3> triangles{{
-      {{{10, 70}, {50, 160}, {70, 80}}},
-      {{{180, 50}, {150, 1}, {70, 180}}},
-      {{{180, 150}, {120, 160}, {130, 180}}},
-  }};
+SvgFigure tinyrenderer_fill_outline() {
+  constexpr int size = tri::ch02::tinyrenderer_image_size;
+  const auto& triangles = tri::ch02::tinyrenderer_triangles;
   Canvas categories(size, size, dc::empty);
   std::string counts;
   for (const auto& t : triangles) {
     counts += (counts.empty() ? "" : ", ") +
-              std::to_string(paint_fill_and_outline(categories, t).outside);
+              std::to_string(paint_fill_and_outline(categories, t.vertices).outside);
   }
   PixelDiagram diagram({0, 0}, {size - 1, size - 1},
                        "tinyrenderer's triangles: the outline leaves the fill on wide edges", 3);
@@ -172,7 +173,7 @@ std::string tinyrenderer_fill_outline() {
   }
   const std::array<const char*, 3> names{"red", "white", "green"};
   for (std::size_t i = 0; i < triangles.size(); ++i) {
-    const auto& t = triangles[i];
+    const auto& t = triangles[i].vertices;
     diagram.triangle(t[0], t[1], t[2], dc::black, 0.75);
     const glm::dvec2 centroid = (glm::dvec2(t[0]) + glm::dvec2(t[1]) + glm::dvec2(t[2])) / 3.0;
     diagram.label(centroid, names[i], LabelPlace::right);
@@ -182,13 +183,14 @@ std::string tinyrenderer_fill_outline() {
   diagram.legend_note("Triangles named by their colour in tinyrenderer's lesson.");
   diagram.legend_note(
       "Vermillion dots: outline pixels outside the fill (red, white, green: " + counts + ").");
-  return diagram.svg();
+  return SvgFigure{"03_tinyrenderer_fill_outline", diagram.svg()};
 }
 
-std::string tinyrenderer_fill_outline_close_up() {
+SvgFigure tinyrenderer_fill_outline_close_up() {
   // The green triangle, the one with the most outline pixels outside its fill.
-  const Vertices green{{{180, 150}, {120, 160}, {130, 180}}};
-  Canvas categories(200, 200, dc::empty);
+  const Vertices& green = tri::ch02::tinyrenderer_triangles[2].vertices;
+  const int size = tri::ch02::tinyrenderer_image_size;
+  Canvas categories(size, size, dc::empty);
   const OutlineCount count = paint_fill_and_outline(categories, green);
   PixelDiagram diagram({118, 148}, {182, 182},
                        "tinyrenderer's green triangle zoomed: outline pixels outside the fill", 12);
@@ -208,10 +210,10 @@ std::string tinyrenderer_fill_outline_close_up() {
   diagram.legend_note(std::to_string(count.outside) + " of the outline's " +
                       std::to_string(count.outline) +
                       " pixels lie outside the fill, all on the two edges wider than tall.");
-  return diagram.svg();
+  return SvgFigure{"03_tinyrenderer_fill_outline_close_up", diagram.svg()};
 }
 
-std::string trap_one_short() {
+SvgFigure trap_one_short() {
   const auto [a, b, c] = hand_triangle;
   Canvas drawn(16, 16);
   drawn.enable_write_counts();
@@ -239,16 +241,16 @@ std::string trap_one_short() {
                       dc::vermillion);
   diagram.legend_mark("lost to y < P2.y (the top row)", PixelMark::square, dc::vermillion);
   diagram.legend_line("ideal triangle edges", dc::dark_gray);
-  return diagram.svg();
+  return SvgFigure{"03_trap_one_short", diagram.svg()};
 }
 
-std::string trap_no_pop_back() {
+SvgFigure trap_no_pop_back() {
   const auto [a, b, c] = hand_triangle;
   const SortedTriangle t = sort_by_y(a, b, c);
   const EdgeXs e = interpolate_edges(t, triangle_rows(t));
   std::vector<double> kept = e.x01;  // the port: pop_back commented out
   kept.insert(kept.end(), e.x12.begin(), e.x12.end());
-  const SpanEnds wrong_ends = choose_left_right(e.x02, kept);
+  const LeftRightXs wrong_ends = choose_left_right(e.x02, kept);
   Canvas right(16, 16), wrong(16, 16);
   right.enable_write_counts();
   wrong.enable_write_counts();
@@ -281,7 +283,7 @@ std::string trap_no_pop_back() {
   diagram.legend_note("Vermillion dots: x_right with P1 twice; its 7th value (row 6) is never");
   diagram.legend_note("drawn, as x02 has 6 rows. Pixels drawn only without the copy: " +
                       std::to_string(only_right) + ".");
-  return diagram.svg();
+  return SvgFigure{"03_trap_no_pop_back", diagram.svg()};
 }
 
 }  // namespace tri::ch03::figures

@@ -3,24 +3,22 @@
 /// triangles checked the same way, and the traps of the C++ port, as SVG.
 #pragma once
 
-#include <string>
+#include "common/figures.hpp"
 
 namespace tri::ch03::figures {
 
 /// Figure 7-3 on its 600x600 canvas: fill, outline on top, outline pixels outside the fill.
 /// flip = 1 is the book's triangle, flip = -1 the same triangle upside down.
-std::string figure_7_3(int flip);
+SvgFigure figure_7_3(int flip);
 /// The same stretch of the wide edge, zoomed, upright and flipped, with its halfway ties.
-std::string figure_7_3_close_up();
+SvgFigure figure_7_3_close_up();
 /// tinyrenderer's three triangles filled, their outlines on top, outline pixels outside marked.
-std::string tinyrenderer_fill_outline();
+SvgFigure tinyrenderer_fill_outline();
 /// The green one of those triangles zoomed, each outline pixel outside the fill crossed.
-std::string tinyrenderer_fill_outline_close_up();
+SvgFigure tinyrenderer_fill_outline_close_up();
 /// The hand triangle's fill with the pixels lost to `y < P2.y` and `x < x_right` marked.
-std::string trap_one_short();
-/// The green one of those triangles zoomed, each outline pixel outside the fill crossed.
-std::string tinyrenderer_fill_outline_close_up();
+SvgFigure trap_one_short();
 /// The hand triangle's fill with and without removing P1's duplicate, the difference marked.
-std::string trap_no_pop_back();
+SvgFigure trap_no_pop_back();
 
 }  // namespace tri::ch03::figures

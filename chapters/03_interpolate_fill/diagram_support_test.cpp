@@ -19,6 +19,21 @@ TEST_CASE("Figure labels show at most two decimals and no trailing zeros", "[fig
   CHECK(short_number(-0.001) == "0");
 }
 
+TEST_CASE("centre_in_triangle counts centres on an edge as inside, in either winding",
+          "[figures]") {
+  const glm::ivec2 a{0, 0}, b{4, 0}, c{0, 4};
+  for (const bool clockwise : {false, true}) {
+    const auto inside = [&](glm::ivec2 p) {
+      return clockwise ? centre_in_triangle(a, c, b, p) : centre_in_triangle(a, b, c, p);
+    };
+    CHECK(inside({1, 1}));
+    CHECK(inside({2, 2}));  // on the hypotenuse
+    CHECK(inside({0, 0}));  // a vertex
+    CHECK_FALSE(inside({3, 2}));
+    CHECK_FALSE(inside({-1, 0}));
+  }
+}
+
 TEST_CASE("Step 5's rounded ends reach past the edge at exactly (1,1), (3,1) and (1,2)",
           "[figures][step5]") {
   const auto [a, b, c] = hand_triangle;

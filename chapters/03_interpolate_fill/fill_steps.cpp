@@ -77,7 +77,7 @@ std::size_t middle_row_index(std::size_t rows) noexcept {
 }
 
 // [listing choose_left_right]
-SpanEnds choose_left_right(std::vector<double> x02, std::vector<double> x012) {
+LeftRightXs choose_left_right(std::vector<double> x02, std::vector<double> x012) {
   const std::size_t rows = std::min(x02.size(), x012.size());
   if (rows == 0) return {std::move(x02), std::move(x012)};
   std::size_t row = middle_row_index(rows);
@@ -103,7 +103,7 @@ int nearest_column(double x, int width) noexcept {
   return static_cast<int>(column);
 }
 
-void draw_spans(Canvas& canvas, int first_row, const SpanEnds& spans, Color color) noexcept {
+void draw_spans(Canvas& canvas, int first_row, const LeftRightXs& spans, Color color) noexcept {
   const auto rows = static_cast<std::int64_t>(std::min(spans.x_left.size(), spans.x_right.size()));
   // Only the array entries whose row is on the canvas: i in [begin, end).
   const std::int64_t begin = std::max<std::int64_t>(0, -std::int64_t{first_row});

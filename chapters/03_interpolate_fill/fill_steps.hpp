@@ -8,17 +8,11 @@
 
 #include <glm/vec2.hpp>
 
+#include "chapters/03_interpolate_fill/sorted_triangle.hpp"
 #include "common/canvas.hpp"
 #include "common/color.hpp"
 
 namespace tri::ch03 {
-
-/// The vertices after step 1: p0.y <= p1.y <= p2.y.
-struct SortedTriangle {
-  glm::ivec2 p0;  ///< lowest vertex
-  glm::ivec2 p1;  ///< middle vertex
-  glm::ivec2 p2;  ///< highest vertex
-};
 
 /// The rows first..last, both included; empty when first > last.
 struct RowRange {
@@ -59,8 +53,8 @@ EdgeXs interpolate_edges(const SortedTriangle& t, RowRange rows);
 std::vector<double> concatenate_short_sides(std::vector<double> x01,
                                             const std::vector<double>& x12);
 
-/// Step 4's result: the two ends of every row's span.
-struct SpanEnds {
+/// Step 4's result: x_left and x_right, the two ends of every row's span.
+struct LeftRightXs {
   std::vector<double> x_left;
   std::vector<double> x_right;
 };
@@ -72,7 +66,7 @@ std::size_t middle_row_index(std::size_t rows) noexcept;
 /// Where they are equal there (a two-row triangle whose middle row is its apex), the first row
 /// where they differ decides instead. If x02 is smaller it is the left end, otherwise x012 is
 /// (also when the two never differ, as for collinear vertices).
-SpanEnds choose_left_right(std::vector<double> x02, std::vector<double> x012);
+LeftRightXs choose_left_right(std::vector<double> x02, std::vector<double> x012);
 
 /// The column a real x lands on: nearest, halves up (like chapter 01's lines), clamped to
 /// [-1, width] so that it always fits an int.
@@ -82,6 +76,6 @@ int nearest_column(double x, int width) noexcept;
 /// nearest_column(x_right[i]), both included, as one horizontal span. Rows and spans are clipped
 /// to the canvas before anything is drawn; a row whose left end rounds past its right end draws
 /// nothing. Uses as many rows as the shorter of the two arrays has.
-void draw_spans(Canvas& canvas, int first_row, const SpanEnds& spans, Color color) noexcept;
+void draw_spans(Canvas& canvas, int first_row, const LeftRightXs& spans, Color color) noexcept;
 
 }  // namespace tri::ch03

@@ -109,11 +109,11 @@ TEST_CASE("Step 4 compares x02 and x012 at the middle row", "[steps][left-right]
   CHECK(middle_row_index(5) == 2);
   CHECK(middle_row_index(1) == 0);
   // The hand triangle: at row 3, x02 = 1.6 < x012 = 6, so the tall side is on the left.
-  const SpanEnds hand_spans =
+  const LeftRightXs hand_spans =
       choose_left_right(values({1, 1.2, 1.4, 1.6, 1.8, 2}), values({1, 2.5, 4, 6, 4, 2}));
   CHECK(hand_spans.x_left == values({1, 1.2, 1.4, 1.6, 1.8, 2}));
   // A flat top (2,0) (0,2) (4,2): x02 = {2,3,4}, x012 = {2,1,0}; 3 > 1, the tall side is right.
-  const SpanEnds flat_top = choose_left_right(values({2, 3, 4}), values({2, 1, 0}));
+  const LeftRightXs flat_top = choose_left_right(values({2, 3, 4}), values({2, 1, 0}));
   CHECK(flat_top.x_left == values({2, 1, 0}));
   CHECK(flat_top.x_right == values({2, 3, 4}));
 }
@@ -126,7 +126,7 @@ TEST_CASE("Step 4 looks past a middle row where both sides meet", "[steps][left-
   REQUIRE(e.x02 == values({0, 2}));
   REQUIRE(x012 == values({4, 2}));
   // The book's "else" would put x012 = {4, 2} on the left and row 0 would draw nothing.
-  const SpanEnds spans = choose_left_right(e.x02, x012);
+  const LeftRightXs spans = choose_left_right(e.x02, x012);
   CHECK(spans.x_left == values({0, 2}));
   CHECK(spans.x_right == values({4, 2}));
 }

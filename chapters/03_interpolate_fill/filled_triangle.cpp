@@ -15,14 +15,14 @@ void draw_filled_triangle(Canvas& canvas, glm::ivec2 p0, glm::ivec2 p1, glm::ive
     // One row: x = f(y) has a single row, and interpolate keeps only each flat edge's first end.
     const double left = std::min({t.p0.x, t.p1.x, t.p2.x});
     const double right = std::max({t.p0.x, t.p1.x, t.p2.x});
-    draw_spans(canvas, t.p0.y, SpanEnds{{left}, {right}}, color);
+    draw_spans(canvas, t.p0.y, LeftRightXs{{left}, {right}}, color);
     return;
   }
   const RowRange rows = visible_rows(t, canvas.height());
   if (rows.empty()) return;
   EdgeXs edges = interpolate_edges(t, rows);                                            // step 2
   std::vector<double> x012 = concatenate_short_sides(std::move(edges.x01), edges.x12);  // step 3
-  const SpanEnds spans = choose_left_right(std::move(edges.x02), std::move(x012));      // step 4
+  const LeftRightXs spans = choose_left_right(std::move(edges.x02), std::move(x012));   // step 4
   draw_spans(canvas, rows.first, spans, color);                                         // step 5
 }
 // [/listing]

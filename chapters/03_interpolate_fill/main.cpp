@@ -14,19 +14,8 @@ int main(int argc, char** argv) {
       "03_figure_7_3_close_up.svg), tinyrenderer's triangles filled and outlined\n"
       "(03_tinyrenderer_fill_outline.svg, 03_tinyrenderer_fill_outline_close_up.svg) and the\n"
       "port's traps (03_trap_one_short.svg, 03_trap_no_pop_back.svg).",
-      [](tri::FigureWriter& figures) {
-        figures.save_svg("03_step1_sorted", step1_sorted());
-        figures.save_svg("03_step2_edges", step2_edges());
-        figures.save_svg("03_step3_concatenate", step3_concatenate());
-        figures.save_svg("03_step4_left_right", step4_left_right());
-        figures.save_svg("03_step5_spans", step5_spans());
-        figures.save_svg("03_figure_7_3", figure_7_3(1));
-        figures.save_svg("03_figure_7_3_flipped", figure_7_3(-1));
-        figures.save_svg("03_figure_7_3_close_up", figure_7_3_close_up());
-        figures.save_svg("03_tinyrenderer_fill_outline", tinyrenderer_fill_outline());
-        figures.save_svg("03_tinyrenderer_fill_outline_close_up",
-                         tinyrenderer_fill_outline_close_up());
-        figures.save_svg("03_trap_one_short", trap_one_short());
-        figures.save_svg("03_trap_no_pop_back", trap_no_pop_back());
-      });
+      {step1_sorted, step2_edges, step3_concatenate, step4_left_right, step5_spans,
+       [] { return figure_7_3(1); }, [] { return figure_7_3(-1); }, figure_7_3_close_up,
+       tinyrenderer_fill_outline, tinyrenderer_fill_outline_close_up, trap_one_short,
+       trap_no_pop_back});
 }

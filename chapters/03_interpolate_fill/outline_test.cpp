@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 
 #include "chapters/01_lines/lines.hpp"
+#include "chapters/02_wireframe/example_triangles.hpp"
 #include "chapters/02_wireframe/wireframe.hpp"
 #include "chapters/03_interpolate_fill/test_helpers.hpp"
 #include "common/centered_view.hpp"
@@ -16,17 +17,15 @@ using tri::Canvas;
 namespace {
 
 PixelSet outline_pixels(const Vertices& v, int width, int height) {
-  Canvas canvas(width, height);
-  canvas.enable_write_counts();
-  tri::ch02::draw_wireframe_triangle(canvas, v[0], v[1], v[2], tri::colors::black);
-  return tri::testing::written_pixels(canvas);
+  return tri::testing::pixels_drawn(width, height, [&](Canvas& canvas) {
+    tri::ch02::draw_wireframe_triangle(canvas, v[0], v[1], v[2], tri::colors::black);
+  });
 }
 
 PixelSet line_pixels(glm::ivec2 a, glm::ivec2 b, int width, int height) {
-  Canvas canvas(width, height);
-  canvas.enable_write_counts();
-  tri::ch01::draw_line_gambetta(canvas, a, b, tri::colors::black);
-  return tri::testing::written_pixels(canvas);
+  return tri::testing::pixels_drawn(width, height, [&](Canvas& canvas) {
+    tri::ch01::draw_line_gambetta(canvas, a, b, tri::colors::black);
+  });
 }
 
 // draw_line_gambetta computes y = f(x) exactly when the edge is wider than tall.
@@ -41,29 +40,33 @@ PixelSet outline_outside_fill(const Vertices& v, int width, int height) {
 }
 
 TEST_CASE("Figure 7-3: the outline stays in the fill, but not upside down", "[outline][figure]") {
-  Canvas canvas(600, 600);
-  tri::CenteredView view(canvas);
-  const Vertices v{view.to_canvas({-200, -250}), view.to_canvas({200, 50}),
-                   view.to_canvas({20, 250})};
+  const int size = tri::ch02::figure_7_1_canvas_size;
+  const Canvas canvas(size, size);
+  const tri::CenteredView view(canvas);
+  const auto& centred = tri::ch02::figure_7_1_triangle;
+  const Vertices v{view.to_canvas(centred[0]), view.to_canvas(centred[1]),
+                   view.to_canvas(centred[2])};
   // Measured: 0 of the outline's 1100 pixels leave the fill. P0-P1 (400 wide, 300 tall) is the
   // only edge drawn as y = f(x); the fill's x there is a whole number or a third off it, and
   // each outline pixel that could stick out is an exact halfway tie that rounds up, inwards.
-  CHECK(outline_outside_fill(v, 600, 600).empty());
+  CHECK(outline_outside_fill(v, size, size).empty());
   // Flipped top to bottom, the same ties round up and out: measured 100 pixels, all on that
   // edge.
-  const Vertices flipped{view.to_canvas({-200, 250}), view.to_canvas({200, -50}),
-                         view.to_canvas({20, -250})};
-  const PixelSet outside = outline_outside_fill(flipped, 600, 600);
+  const auto upside_down = [&](glm::ivec2 p) { return view.to_canvas({p.x, -p.y}); };
+  const Vertices flipped{upside_down(centred[0]), upside_down(centred[1]), upside_down(centred[2])};
+  const PixelSet outside = outline_outside_fill(flipped, size, size);
   CHECK(outside.size() == 100);
-  CHECK(minus(outside, line_pixels(flipped[0], flipped[1], 600, 600)).empty());
+  CHECK(minus(outside, line_pixels(flipped[0], flipped[1], size, size)).empty());
 }
 
 TEST_CASE("tinyrenderer's triangles: the outline leaves the fill on edges wider than tall",
           "[outline][figure]") {
   // Measured: 20, 0 and 30 outline pixels outside the fill.
-  CHECK(outline_outside_fill({{{10, 70}, {50, 160}, {70, 80}}}, 200, 200).size() == 20);
-  CHECK(outline_outside_fill({{{180, 50}, {150, 1}, {70, 180}}}, 200, 200).empty());
-  CHECK(outline_outside_fill({{{180, 150}, {120, 160}, {130, 180}}}, 200, 200).size() == 30);
+  const auto& triangles = tri::ch02::tinyrenderer_triangles;
+  const int size = tri::ch02::tinyrenderer_image_size;
+  CHECK(outline_outside_fill(triangles[0].vertices, size, size).size() == 20);
+  CHECK(outline_outside_fill(triangles[1].vertices, size, size).empty());
+  CHECK(outline_outside_fill(triangles[2].vertices, size, size).size() == 30);
 }
 
 TEST_CASE("Outline pixels of edges drawn as x = f(y) always lie in the fill", "[outline]") {

@@ -43,7 +43,7 @@ std::string joined(const std::vector<double>& xs) {
 
 }  // namespace
 
-std::string step1_sorted() {
+SvgFigure step1_sorted() {
   const auto [a, b, c] = hand_triangle;
   // Passed as P2, P0, P1 on purpose, so that sorting has something to do.
   const std::array<glm::ivec2, 3> passed{c, a, b};
@@ -67,10 +67,12 @@ std::string step1_sorted() {
   after.legend_line("the row of each sorted vertex", dc::blue, true);
   after.legend_note("The fill covers exactly rows y0 to y2; P1 splits them into two short sides.");
   const std::array<PixelDiagram, 2> panels{before, after};
-  return side_by_side(panels, "Step 1: the vertices renamed bottom to top, P0 lowest, P2 highest");
+  return SvgFigure{
+      "03_step1_sorted",
+      side_by_side(panels, "Step 1: the vertices renamed bottom to top, P0 lowest, P2 highest")};
 }
 
-std::string step2_edges() {
+SvgFigure step2_edges() {
   const SortedTriangle t = sorted_hand();
   const EdgeXs e = interpolate_edges(t, triangle_rows(t));
   PixelDiagram diagram = hand_diagram(
@@ -94,10 +96,10 @@ std::string step2_edges() {
   diagram.legend_note("P1's x is computed twice (the small green dot on the vermillion one).");
   diagram.legend_note("x02 = " + joined(e.x02) + " · x01 = " + joined(e.x01) +
                       " · x12 = " + joined(e.x12));
-  return diagram.svg();
+  return SvgFigure{"03_step2_edges", diagram.svg()};
 }
 
-std::string step3_concatenate() {
+SvgFigure step3_concatenate() {
   const SortedTriangle t = sorted_hand();
   const EdgeXs e = interpolate_edges(t, triangle_rows(t));
   const std::vector<double> x012 = concatenate_short_sides(e.x01, e.x12);
@@ -125,11 +127,13 @@ std::string step3_concatenate() {
   wrong.legend_note("7 values for 6 rows: the last lands on row 6,");
   wrong.legend_note("one row above the triangle");
   const std::array<PixelDiagram, 2> panels{right, wrong};
-  return side_by_side(panels,
-                      "Step 3: x012 must drop x01's copy of P1, or the upper side moves up a row");
+  return SvgFigure{
+      "03_step3_concatenate",
+      side_by_side(panels,
+                   "Step 3: x012 must drop x01's copy of P1, or the upper side moves up a row")};
 }
 
-std::string step4_left_right() {
+SvgFigure step4_left_right() {
   const SortedTriangle t = sorted_hand();
   EdgeXs e = interpolate_edges(t, triangle_rows(t));
   const std::vector<double> x012 = concatenate_short_sides(e.x01, e.x12);
@@ -138,7 +142,7 @@ std::string step4_left_right() {
   const std::string comparison = "x02[" + std::to_string(middle) +
                                  "] = " + short_number(e.x02[middle]) + " < x012[" +
                                  std::to_string(middle) + "] = " + short_number(x012[middle]);
-  const SpanEnds ends = choose_left_right(e.x02, x012);
+  const LeftRightXs ends = choose_left_right(e.x02, x012);
 
   PixelDiagram diagram =
       hand_diagram("Step 4: compared on the middle row, x02 is the left side, x012 the right");
@@ -161,13 +165,13 @@ std::string step4_left_right() {
   diagram.legend_note("On row " + std::to_string(middle_row) + ", " + comparison +
                       ", so x02 is the left side.");
   diagram.legend_note("Columns: nearest, halves up (step 5).");
-  return diagram.svg();
+  return SvgFigure{"03_step4_left_right", diagram.svg()};
 }
 
-std::string step5_spans() {
+SvgFigure step5_spans() {
   const SortedTriangle t = sorted_hand();
   EdgeXs e = interpolate_edges(t, triangle_rows(t));
-  const SpanEnds ends = choose_left_right(e.x02, concatenate_short_sides(e.x01, e.x12));
+  const LeftRightXs ends = choose_left_right(e.x02, concatenate_short_sides(e.x01, e.x12));
   PixelDiagram diagram =
       hand_diagram("Step 5: each row from the column of x_left to that of x_right");
   for (std::size_t i = 0; i < ends.x_left.size(); ++i) {
@@ -190,7 +194,7 @@ std::string step5_spans() {
   diagram.legend_line("ideal triangle edges", dc::dark_gray);
   diagram.legend_note("Black dots: exact x_left and x_right; right: each row's columns.");
   diagram.legend_note("Rounded ends reach up to half a pixel past the edge (crosses).");
-  return diagram.svg();
+  return SvgFigure{"03_step5_spans", diagram.svg()};
 }
 
 }  // namespace tri::ch03::figures

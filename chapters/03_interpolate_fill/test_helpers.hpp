@@ -2,9 +2,8 @@
 /// What chapter 03's tests share: pixel sets of a fill and of the book's unclipped composition.
 #pragma once
 
-#include <algorithm>
 #include <array>
-#include <iterator>
+#include <cstdint>
 #include <utility>
 
 #include "chapters/03_interpolate_fill/fill_steps.hpp"
@@ -13,15 +12,15 @@
 
 namespace tri::ch03::testing {
 
+using tri::testing::minus;
 using tri::testing::PixelSet;
 using Vertices = std::array<glm::ivec2, 3>;
 
 /// The pixels draw_filled_triangle writes on a counting width x height canvas.
 inline PixelSet fill_pixels(const Vertices& v, int width, int height) {
-  Canvas canvas(width, height);
-  canvas.enable_write_counts();
-  draw_filled_triangle(canvas, v[0], v[1], v[2], colors::white);
-  return tri::testing::written_pixels(canvas);
+  return tri::testing::pixels_drawn(width, height, [&](Canvas& canvas) {
+    draw_filled_triangle(canvas, v[0], v[1], v[2], colors::white);
+  });
 }
 
 /// Steps 2-5 on every row of the triangle, as the book runs them (no clipping before step 2).
@@ -38,18 +37,7 @@ inline PixelSet book_fill_pixels(const Vertices& v, int width, int height) {
 
 /// How many pixels are in exactly one of the two sets.
 inline int differing_pixels(const PixelSet& a, const PixelSet& b) {
-  PixelSet difference;
-  std::set_symmetric_difference(a.begin(), a.end(), b.begin(), b.end(),
-                                std::inserter(difference, difference.end()));
-  return static_cast<int>(difference.size());
-}
-
-/// The pixels of `a` that are not in `b`.
-inline PixelSet minus(const PixelSet& a, const PixelSet& b) {
-  PixelSet difference;
-  std::set_difference(a.begin(), a.end(), b.begin(), b.end(),
-                      std::inserter(difference, difference.end()));
-  return difference;
+  return static_cast<int>(tri::testing::symmetric_difference(a, b).size());
 }
 
 /// Three vertices with both coordinates in [low, high].
@@ -60,10 +48,8 @@ inline Vertices random_vertices(tri::testing::Random& random, int low, int high)
 }
 
 /// Twice the signed area, in 64 bits; zero for collinear vertices.
-inline long long doubled_area(const Vertices& v) {
-  const long long ax = v[1].x - v[0].x, ay = v[1].y - v[0].y;
-  const long long bx = v[2].x - v[0].x, by = v[2].y - v[0].y;
-  return ax * by - ay * bx;
+inline std::int64_t doubled_area(const Vertices& v) {
+  return tri::testing::doubled_area(v[0], v[1], v[2]);
 }
 
 }  // namespace tri::ch03::testing

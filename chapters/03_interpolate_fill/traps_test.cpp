@@ -16,7 +16,7 @@ namespace {
 
 const Vertices hand{{{1, 0}, {6, 3}, {2, 5}}};
 
-PixelSet spans_pixels(int first_row, const SpanEnds& spans) {
+PixelSet spans_pixels(int first_row, const LeftRightXs& spans) {
   Canvas canvas(16, 16);
   canvas.enable_write_counts();
   draw_spans(canvas, first_row, spans, tri::colors::white);

@@ -7,14 +7,12 @@
 
 #include <glm/vec2.hpp>
 
+#include "chapters/03_interpolate_fill/sorted_triangle.hpp"
+
 namespace tri::ch04 {
 
-/// A triangle's vertices ordered from bottom to top: t0.y <= t1.y <= t2.y.
-struct SortedTriangle {
-  glm::ivec2 t0;
-  glm::ivec2 t1;
-  glm::ivec2 t2;
-};
+/// The vertices ordered from bottom to top, p0.y <= p1.y <= p2.y: the article's t0, t1, t2.
+using ch03::SortedTriangle;
 
 /// Orders the vertices by y with the article's three compare-and-swaps (t0/t1, t0/t2, t1/t2).
 /// Vertices with equal y keep an order that depends on how they were passed in.

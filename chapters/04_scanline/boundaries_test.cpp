@@ -2,16 +2,19 @@
 
 #include <catch2/catch.hpp>
 
-#include "chapters/04_scanline/article_triangles.hpp"
+#include "chapters/02_wireframe/example_triangles.hpp"
 #include "chapters/04_scanline/lower_half.hpp"
 #include "chapters/04_scanline/scanline_fills.hpp"
 #include "chapters/04_scanline/scanline_test_support.hpp"
 
 namespace {
 
-using tri::ch04::article_triangles;
+using tri::ch02::tinyrenderer_triangles;
 using tri::ch04::sort_by_y;
 using tri::ch04::truncated_boundary_x;
+
+// tinyrenderer's red triangle, (10, 70), (50, 160), (70, 80).
+constexpr const auto& red = tinyrenderer_triangles[0].vertices;
 
 // The article's arithmetic for one boundary: the fraction in float, the float product cut to an
 // int by Vec2i's constructor.
@@ -23,36 +26,36 @@ int article_float_x(glm::ivec2 start, glm::ivec2 end, int step, int steps) {
 }  // namespace
 
 TEST_CASE("Sorting by y puts the vertices bottom to top for all six orders", "[step2]") {
-  for (const auto& triangle : article_triangles) {
+  for (const auto& triangle : tinyrenderer_triangles) {
     const auto [a, b, c] = triangle.vertices;
     const auto expected = sort_by_y(a, b, c);
-    REQUIRE(expected.t0.y < expected.t1.y);
-    REQUIRE(expected.t1.y < expected.t2.y);
-    for (const auto& order : tri::ch04::testing::all_orders(a, b, c)) {
+    REQUIRE(expected.p0.y < expected.p1.y);
+    REQUIRE(expected.p1.y < expected.p2.y);
+    for (const auto& order : tri::testing::vertex_orders(a, b, c)) {
       const auto sorted = sort_by_y(order[0], order[1], order[2]);
-      CHECK(sorted.t0 == expected.t0);
-      CHECK(sorted.t1 == expected.t1);
-      CHECK(sorted.t2 == expected.t2);
+      CHECK(sorted.p0 == expected.p0);
+      CHECK(sorted.p1 == expected.p1);
+      CHECK(sorted.p2 == expected.p2);
     }
   }
-  const auto red = sort_by_y({10, 70}, {50, 160}, {70, 80});
-  CHECK(red.t0 == glm::ivec2(10, 70));
-  CHECK(red.t1 == glm::ivec2(70, 80));
-  CHECK(red.t2 == glm::ivec2(50, 160));
+  const auto sorted = sort_by_y(red[0], red[1], red[2]);
+  CHECK(sorted.p0 == glm::ivec2(10, 70));
+  CHECK(sorted.p1 == glm::ivec2(70, 80));
+  CHECK(sorted.p2 == glm::ivec2(50, 160));
 }
 
 TEST_CASE("Sorting keeps vertices of equal y in the order they were passed", "[step2]") {
   const auto one = sort_by_y({4, 0}, {0, 0}, {2, 3});
-  CHECK(one.t0 == glm::ivec2(4, 0));
-  CHECK(one.t1 == glm::ivec2(0, 0));
+  CHECK(one.p0 == glm::ivec2(4, 0));
+  CHECK(one.p1 == glm::ivec2(0, 0));
   const auto other = sort_by_y({0, 0}, {4, 0}, {2, 3});
-  CHECK(other.t0 == glm::ivec2(0, 0));
-  CHECK(other.t1 == glm::ivec2(4, 0));
+  CHECK(other.p0 == glm::ivec2(0, 0));
+  CHECK(other.p1 == glm::ivec2(4, 0));
 }
 
 TEST_CASE("A boundary's x is truncated toward its start vertex, not rounded", "[int-cast]") {
   // Red triangle, boundary A from (10,70) to (50,160), row 72: exact x = 10 + 80/90 = 10.89.
-  CHECK(truncated_boundary_x({10, 70}, {50, 160}, 2, 90) == 10);  // rounding would give 11
+  CHECK(truncated_boundary_x(red[0], red[1], 2, 90) == 10);  // rounding would give 11
   // White triangle, boundary A from (150,1) to (70,180), row 3: exact x = 150 - 160/179 = 149.11.
   CHECK(truncated_boundary_x({150, 1}, {70, 180}, 2, 179) == 150);  // rounding would give 149
   // A whole quotient is exact, in both directions.
@@ -65,26 +68,26 @@ TEST_CASE(
     "The exact quotient gives the article's float span ends on every row of the test "
     "triangles",
     "[int-cast]") {
-  for (const auto& triangle : article_triangles) {
+  for (const auto& triangle : tinyrenderer_triangles) {
     const auto [a, b, c] = triangle.vertices;
     const auto t = sort_by_y(a, b, c);
-    const int total = t.t2.y - t.t0.y, lower = t.t1.y - t.t0.y, upper = t.t2.y - t.t1.y;
+    const int total = t.p2.y - t.p0.y, lower = t.p1.y - t.p0.y, upper = t.p2.y - t.p1.y;
     for (int i = 0; i <= total; ++i) {
       const auto ends = tri::ch04::single_loop_ends(t, i);
       const bool second_half = i > lower || lower == 0;
-      CHECK(ends.a == article_float_x(t.t0, t.t2, i, total));
-      CHECK(ends.b == (second_half ? article_float_x(t.t1, t.t2, i - lower, upper)
-                                   : article_float_x(t.t0, t.t1, i, lower)));
+      CHECK(ends.a == article_float_x(t.p0, t.p2, i, total));
+      CHECK(ends.b == (second_half ? article_float_x(t.p1, t.p2, i - lower, upper)
+                                   : article_float_x(t.p0, t.p1, i, lower)));
     }
-    for (int y = t.t0.y; y <= t.t1.y; ++y) {
+    for (int y = t.p0.y; y <= t.p1.y; ++y) {
       const auto ends = tri::ch04::lower_half_ends(t, y);
-      CHECK(ends.a == article_float_x(t.t0, t.t2, y - t.t0.y, total));
-      CHECK(ends.b == article_float_x(t.t0, t.t1, y - t.t0.y, lower + 1));
+      CHECK(ends.a == article_float_x(t.p0, t.p2, y - t.p0.y, total));
+      CHECK(ends.b == article_float_x(t.p0, t.p1, y - t.p0.y, lower + 1));
     }
-    for (int y = t.t1.y; y <= t.t2.y; ++y) {
+    for (int y = t.p1.y; y <= t.p2.y; ++y) {
       const auto ends = tri::ch04::upper_half_ends(t, y);
-      CHECK(ends.a == article_float_x(t.t0, t.t2, y - t.t0.y, total));
-      CHECK(ends.b == article_float_x(t.t1, t.t2, y - t.t1.y, upper + 1));
+      CHECK(ends.a == article_float_x(t.p0, t.p2, y - t.p0.y, total));
+      CHECK(ends.b == article_float_x(t.p1, t.p2, y - t.p1.y, upper + 1));
     }
   }
 }

@@ -5,6 +5,7 @@
 #include <utility>
 #include <vector>
 
+#include "chapters/03_interpolate_fill/diagram_support.hpp"
 #include "chapters/04_scanline/boundaries.hpp"
 #include "chapters/04_scanline/diagram_support.hpp"
 #include "chapters/04_scanline/scanline_fills.hpp"
@@ -21,7 +22,7 @@ struct Variants {
   Canvas two, one, published;
 };
 
-Variants draw_variants(const ArticleTriangle& t) {
+Variants draw_variants(const ch02::TinyrendererTriangle& t) {
   const auto with = [](void (*fill)(Canvas&, glm::ivec2, glm::ivec2, glm::ivec2, Color)) {
     return [fill](Canvas& canvas, glm::ivec2 a, glm::ivec2 b, glm::ivec2 c) {
       fill(canvas, a, b, c, colors::white);
@@ -80,17 +81,17 @@ std::string counts_note(const Counts& counts) {
          " only in the single loop, " + std::to_string(counts[2]) + " never reached as published";
 }
 
-PixelDiagram whole_triangle_panel(const ArticleTriangle& t, const char* name, glm::ivec2 first,
-                                  glm::ivec2 last, double cell) {
+PixelDiagram whole_triangle_panel(const ch02::TinyrendererTriangle& t, const char* name,
+                                  glm::ivec2 first, glm::ivec2 last, double cell) {
   PixelDiagram panel(first, last, std::string("The ") + name + " triangle", cell);
   panel.show_centres(false);
   const Counts counts = paint_differences(panel, draw_variants(t), false);
   const auto [a, b, c] = t.vertices;
   panel.triangle(a, b, c, dc::black, 0.75);
   const SortedTriangle s = sort_by_y(a, b, c);
-  panel.vertex(s.t0, "t0", LabelPlace::right);
-  panel.vertex(s.t1, "t1", LabelPlace::left);
-  panel.vertex(s.t2, "t2", LabelPlace::right);
+  panel.vertex(s.p0, "t0", LabelPlace::right);
+  panel.vertex(s.p1, "t1", LabelPlace::left);
+  panel.vertex(s.p2, "t2", LabelPlace::right);
   panel.legend_fill("both", dc::covered);
   panel.legend_fill("only two loops", only_two_color);
   panel.legend_fill("only single loop", only_one_color);
@@ -102,7 +103,7 @@ PixelDiagram whole_triangle_panel(const ArticleTriangle& t, const char* name, gl
 
 }  // namespace
 
-std::string loop_differences() {
+SvgFigure loop_differences() {
   PixelDiagram diagram =
       green_diagram("Where step 5's two loops and step 6's single loop part ways (green triangle)");
   const Counts counts = paint_differences(diagram, draw_variants(diagram_triangle()), true);
@@ -115,20 +116,22 @@ std::string loop_differences() {
   diagram.legend_mark("row t2.y, missing as published", PixelMark::square);
   diagram.legend_line("ideal edges", dc::black);
   diagram.legend_note(counts_note(counts) + ".");
-  return diagram.svg();
+  return SvgFigure{"04_loop_differences", diagram.svg()};
 }
 
-std::string loop_differences_red_white() {
+SvgFigure loop_differences_red_white() {
   const std::array<PixelDiagram, 2> panels{
-      whole_triangle_panel(article_triangles[0], "red", {6, 66}, {74, 164}, 4),
-      whole_triangle_panel(article_triangles[1], "white", {66, -2}, {184, 184}, 3)};
-  return side_by_side(panels,
-                      "The same differences on the red and white triangles (dots: pixels that "
-                      "differ)");
+      whole_triangle_panel(ch02::tinyrenderer_triangles[0], "red", {6, 66}, {74, 164}, 4),
+      whole_triangle_panel(ch02::tinyrenderer_triangles[1], "white", {66, -2}, {184, 184}, 3)};
+  return SvgFigure{
+      "04_loop_differences_red_white",
+      side_by_side(panels,
+                   "The same differences on the red and white triangles (dots: pixels that "
+                   "differ)")};
 }
 
-std::string truncation_close_up() {
-  const ArticleTriangle& red = article_triangles[0];
+SvgFigure truncation_close_up() {
+  const ch02::TinyrendererTriangle& red = ch02::tinyrenderer_triangles[0];
   const auto [a, b, c] = red.vertices;
   const SortedTriangle t = sort_by_y(a, b, c);
   const Canvas drawn =
@@ -142,7 +145,7 @@ std::string truncation_close_up() {
   for (int y = 67; y <= 84; ++y) {
     for (int x = 6; x <= 25; ++x) {
       if (drawn.write_count(x, y) == 0) continue;
-      const bool inside = centre_in_triangle(red, {x, y});
+      const bool inside = ch03::figures::centre_in_triangle(a, b, c, {x, y});
       diagram.fill({x, y}, inside ? dc::covered : dc::vermillion);
       if (!inside) {
         diagram.mark({x, y}, PixelMark::cross);
@@ -151,15 +154,15 @@ std::string truncation_close_up() {
     }
   }
   // A's exact x on each row, and the column the cast keeps.
-  const std::int64_t height = t.t2.y - t.t0.y;
-  for (int y = t.t0.y; y <= 84; ++y) {
-    const double exact = t.t0.x + double(t.t2.x - t.t0.x) * (y - t.t0.y) / double(height);
+  const std::int64_t height = t.p2.y - t.p0.y;
+  for (int y = t.p0.y; y <= 84; ++y) {
+    const double exact = t.p0.x + double(t.p2.x - t.p0.x) * (y - t.p0.y) / double(height);
     diagram.point({exact, y}, dc::blue, 3.5);
   }
   for (const auto& [p, q] : {std::pair{a, b}, std::pair{b, c}, std::pair{c, a}}) {
     diagram.line(p, q, dc::black, 1.5);
   }
-  diagram.vertex(t.t0, "t0", LabelPlace::below_right);
+  diagram.vertex(t.p0, "t0", LabelPlace::below_right);
   const glm::ivec2 named{10, 72};
   diagram.mark(named, PixelMark::square, dc::blue);
   diagram.legend_fill("drawn, centre inside", dc::covered);
@@ -170,7 +173,7 @@ std::string truncation_close_up() {
   diagram.legend_note("Blue dots: boundary A's exact x on each row; the span starts at the");
   diagram.legend_note("column the int cast cuts it to, toward t0. " + std::to_string(outside) +
                       " pixels here are drawn though their centre is outside.");
-  return diagram.svg();
+  return SvgFigure{"04_truncation_close_up", diagram.svg()};
 }
 
 }  // namespace tri::ch04::figures

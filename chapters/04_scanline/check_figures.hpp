@@ -3,15 +3,15 @@
 /// fills differ, and the pixels the int casts add, as SVG diagrams.
 #pragma once
 
-#include <string>
+#include "common/figures.hpp"
 
 namespace tri::ch04::figures {
 
 /// The green triangle zoomed, every pixel where the loop variants differ marked.
-std::string loop_differences();
+SvgFigure loop_differences();
 /// The red and white triangles whole, the same differences as dots.
-std::string loop_differences_red_white();
+SvgFigure loop_differences_red_white();
 /// The red triangle's lower-left corner: the truncated boundary A against the ideal edge.
-std::string truncation_close_up();
+SvgFigure truncation_close_up();
 
 }  // namespace tri::ch04::figures

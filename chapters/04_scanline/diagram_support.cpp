@@ -10,26 +10,15 @@
 
 namespace tri::ch04::figures {
 
-Canvas drawn_by(const Step& step, const ArticleTriangle& triangle) {
-  Canvas canvas(article_image_size, article_image_size);
+Canvas drawn_by(const Step& step, const ch02::TinyrendererTriangle& triangle) {
+  Canvas canvas(ch02::tinyrenderer_image_size, ch02::tinyrenderer_image_size);
   canvas.enable_write_counts();
   step(canvas, triangle.vertices[0], triangle.vertices[1], triangle.vertices[2]);
   return canvas;
 }
 
-bool centre_in_triangle(const ArticleTriangle& triangle, glm::ivec2 pixel) noexcept {
-  const auto [a, b, c] = triangle.vertices;
-  // Twice the signed area of (p, q, pixel): which side of the edge p q the centre is on.
-  const auto side = [pixel](glm::ivec2 p, glm::ivec2 q) {
-    return (std::int64_t{q.x} - p.x) * (std::int64_t{pixel.y} - p.y) -
-           (std::int64_t{q.y} - p.y) * (std::int64_t{pixel.x} - p.x);
-  };
-  const std::int64_t ab = side(a, b), bc = side(b, c), ca = side(c, a);
-  return (ab >= 0 && bc >= 0 && ca >= 0) || (ab <= 0 && bc <= 0 && ca <= 0);
-}
-
-const ArticleTriangle& diagram_triangle() noexcept {
-  return article_triangles[2];
+const ch02::TinyrendererTriangle& diagram_triangle() noexcept {
+  return ch02::tinyrenderer_triangles[2];
 }
 
 PixelDiagram green_diagram(std::string title) {
@@ -37,9 +26,9 @@ PixelDiagram green_diagram(std::string title) {
   const auto [a, b, c] = diagram_triangle().vertices;
   diagram.triangle(a, b, c, diagram_colors::black, 1.25);
   const SortedTriangle t = sort_by_y(a, b, c);
-  diagram.vertex(t.t0, "t0", LabelPlace::below_left);
-  diagram.vertex(t.t1, "t1", LabelPlace::below_right);
-  diagram.vertex(t.t2, "t2", LabelPlace::above_right);
+  diagram.vertex(t.p0, "t0", LabelPlace::below_left);
+  diagram.vertex(t.p1, "t1", LabelPlace::below_right);
+  diagram.vertex(t.p2, "t2", LabelPlace::above_right);
   return diagram;
 }
 

@@ -1,6 +1,7 @@
 // The pixel claims the README reads off the step diagrams of the green triangle.
 #include <catch2/catch.hpp>
 
+#include "chapters/03_interpolate_fill/diagram_support.hpp"
 #include "chapters/04_scanline/boundaries.hpp"
 #include "chapters/04_scanline/diagram_support.hpp"
 #include "chapters/04_scanline/lower_half.hpp"
@@ -12,8 +13,8 @@ TEST_CASE("On the green triangle the +1 leaves B's last lower-half point at x = 
           "[figures][step3]") {
   const auto [a, b, c] = diagram_triangle().vertices;
   const SortedTriangle t = sort_by_y(a, b, c);
-  REQUIRE(t.t1 == glm::ivec2(120, 160));
-  CHECK(lower_half_ends(t, t.t1.y).b == 126);
+  REQUIRE(t.p1 == glm::ivec2(120, 160));
+  CHECK(lower_half_ends(t, t.p1.y).b == 126);
 }
 
 TEST_CASE("The green triangle's lower half leaves out 35 centres that lie inside it",
@@ -27,10 +28,10 @@ TEST_CASE("The green triangle's lower half leaves out 35 centres that lie inside
   int left_out = 0, drawn_outside_rows = 0;
   for (int y = 0; y < drawn.height(); ++y) {
     for (int x = 0; x < drawn.width(); ++x) {
-      const bool in_rows = y >= t.t0.y && y <= t.t1.y;
+      const bool in_rows = y >= t.p0.y && y <= t.p1.y;
       if (!in_rows && drawn.write_count(x, y) > 0) ++drawn_outside_rows;
       if (in_rows && drawn.write_count(x, y) == 0 &&
-          centre_in_triangle(diagram_triangle(), {x, y})) {
+          tri::ch03::figures::centre_in_triangle(a, b, c, {x, y})) {
         ++left_out;
         CHECK(x < lower_half_ends(t, y).b);  // all left of B's point: B lags, A loses none
       }
@@ -38,17 +39,4 @@ TEST_CASE("The green triangle's lower half leaves out 35 centres that lie inside
   }
   CHECK(left_out == 35);
   CHECK(drawn_outside_rows == 0);
-}
-
-TEST_CASE("centre_in_triangle counts centres on an edge as inside, in either winding",
-          "[figures]") {
-  const ArticleTriangle ccw{{{{0, 0}, {4, 0}, {0, 4}}}, tri::colors::white};
-  const ArticleTriangle cw{{{{0, 0}, {0, 4}, {4, 0}}}, tri::colors::white};
-  for (const auto& t : {ccw, cw}) {
-    CHECK(centre_in_triangle(t, {1, 1}));
-    CHECK(centre_in_triangle(t, {2, 2}));  // on the hypotenuse
-    CHECK(centre_in_triangle(t, {0, 0}));  // a vertex
-    CHECK_FALSE(centre_in_triangle(t, {3, 2}));
-    CHECK_FALSE(centre_in_triangle(t, {-1, 0}));
-  }
 }

@@ -5,13 +5,13 @@
 
 #include <catch2/catch.hpp>
 
-#include "chapters/04_scanline/article_triangles.hpp"
+#include "chapters/02_wireframe/example_triangles.hpp"
 #include "chapters/04_scanline/scanline_test_support.hpp"
 
 namespace {
 
 using tri::Canvas;
-using tri::ch04::article_triangles;
+using tri::ch02::tinyrenderer_triangles;
 using tri::ch04::fill_lower_half;
 using tri::ch04::lower_half_ends;
 using tri::ch04::sort_by_y;
@@ -19,6 +19,9 @@ using tri::ch04::testing::add_row;
 using tri::ch04::testing::pixels_of;
 using tri::testing::PixelSet;
 using tri::testing::written_pixels;
+
+// tinyrenderer's red triangle, (10, 70), (50, 160), (70, 80).
+constexpr const auto& red = tinyrenderer_triangles[0].vertices;
 
 // Step 3 has its own colours, so it gets its own reader.
 PixelSet boundary_points(glm::ivec2 a, glm::ivec2 b, glm::ivec2 c) {
@@ -39,7 +42,7 @@ struct Gaps {
 Gaps gaps_along(glm::ivec2 a, glm::ivec2 b, glm::ivec2 c, bool boundary_a) {
   const auto t = sort_by_y(a, b, c);
   Gaps gaps;
-  for (int y = t.t0.y + 1; y <= t.t1.y; ++y) {
+  for (int y = t.p0.y + 1; y <= t.p1.y; ++y) {
     const auto below = lower_half_ends(t, y - 1), here = lower_half_ends(t, y);
     const auto step = std::llabs(boundary_a ? here.a - below.a : here.b - below.b);
     if (step > 1) {
@@ -55,7 +58,7 @@ Gaps gaps_along(glm::ivec2 a, glm::ivec2 b, glm::ivec2 c, bool boundary_a) {
 TEST_CASE("Boundary B of the lower half stops short of t1 because of the +1 height",
           "[step3][trap]") {
   // Red triangle: t0 = (10,70), t1 = (70,80), t2 = (50,160). At row 80, B is 10/11 of the way.
-  const auto t = sort_by_y({10, 70}, {50, 160}, {70, 80});
+  const auto t = sort_by_y(red[0], red[1], red[2]);
   const auto top = lower_half_ends(t, 80);
   CHECK(top.b == 64);  // 10 + 60 * 10 / 11 = 64.5, truncated; t1.x is 70
   CHECK(top.a == 14);  // 10 + 40 * 10 / 90 = 14.4, truncated
@@ -65,11 +68,11 @@ TEST_CASE("Boundary B of the lower half stops short of t1 because of the +1 heig
 }
 
 TEST_CASE("Step 3 draws exactly the two boundary points of every lower-half row", "[step3]") {
-  for (const auto& triangle : article_triangles) {
+  for (const auto& triangle : tinyrenderer_triangles) {
     const auto [a, b, c] = triangle.vertices;
     const auto t = sort_by_y(a, b, c);
     PixelSet expected;
-    for (int y = t.t0.y; y <= t.t1.y; ++y) {
+    for (int y = t.p0.y; y <= t.p1.y; ++y) {
       const auto ends = lower_half_ends(t, y);
       expected.emplace(static_cast<int>(ends.a), y);
       expected.emplace(static_cast<int>(ends.b), y);
@@ -87,7 +90,7 @@ TEST_CASE("Step 3 leaves gaps where a boundary moves more than one column per ro
   };
   int total_breaks = 0;
   for (int i = 0; i < 3; ++i) {
-    const auto [a, b, c] = article_triangles[i].vertices;
+    const auto [a, b, c] = tinyrenderer_triangles[i].vertices;
     for (const bool boundary_a : {true, false}) {
       const Gaps gaps = gaps_along(a, b, c, boundary_a);
       INFO("triangle " << i << (boundary_a ? " boundary A" : " boundary B"));
@@ -101,10 +104,10 @@ TEST_CASE("Step 3 leaves gaps where a boundary moves more than one column per ro
 TEST_CASE("Step 4 fills each lower-half row from boundary A to boundary B", "[step4]") {
   const int expected_counts[] = {286, 1288, 218};
   for (int i = 0; i < 3; ++i) {
-    const auto [a, b, c] = article_triangles[i].vertices;
+    const auto [a, b, c] = tinyrenderer_triangles[i].vertices;
     const auto t = sort_by_y(a, b, c);
     PixelSet expected;
-    for (int y = t.t0.y; y <= t.t1.y; ++y) {
+    for (int y = t.p0.y; y <= t.p1.y; ++y) {
       const auto ends = lower_half_ends(t, y);
       add_row(expected, y, static_cast<int>(std::min(ends.a, ends.b)),
               static_cast<int>(std::max(ends.a, ends.b)));

@@ -14,15 +14,6 @@ int main(int argc, char** argv) {
       "04_loop_differences (the pixels where the loop variants differ, zoomed),\n"
       "04_loop_differences_red_white (the same on the other two triangles) and\n"
       "04_truncation_close_up (pixels the int casts add to the red triangle).",
-      [](tri::FigureWriter& figures) {
-        figures.save_svg("04_outlines", outlines());
-        figures.save_svg("04_sorted_boundaries", sorted_boundaries());
-        figures.save_svg("04_lower_half_points", lower_half_points());
-        figures.save_svg("04_lower_half_filled", lower_half_filled());
-        figures.save_svg("04_two_loops", two_loops());
-        figures.save_svg("04_single_loop", single_loop());
-        figures.save_svg("04_loop_differences", loop_differences());
-        figures.save_svg("04_loop_differences_red_white", loop_differences_red_white());
-        figures.save_svg("04_truncation_close_up", truncation_close_up());
-      });
+      {outlines, sorted_boundaries, lower_half_points, lower_half_filled, two_loops, single_loop,
+       loop_differences, loop_differences_red_white, truncation_close_up});
 }

@@ -3,16 +3,19 @@
 #include <catch2/catch.hpp>
 
 #include "chapters/01_lines/lines.hpp"
-#include "chapters/04_scanline/article_triangles.hpp"
+#include "chapters/02_wireframe/example_triangles.hpp"
 #include "chapters/04_scanline/boundaries.hpp"
 #include "chapters/04_scanline/scanline_test_support.hpp"
 
 namespace {
 
 using tri::Canvas;
-using tri::ch04::article_triangles;
+using tri::ch02::tinyrenderer_triangles;
 using tri::testing::PixelSet;
 using tri::testing::written_pixels;
+
+// tinyrenderer's red triangle, (10, 70), (50, 160), (70, 80).
+constexpr const auto& red = tinyrenderer_triangles[0].vertices;
 
 // The pixels of chapter 01's Bresenham line from p to q.
 PixelSet line_pixels(glm::ivec2 p, glm::ivec2 q) {
@@ -50,35 +53,35 @@ TEST_CASE("Step 1 draws the three edges of a small triangle and nothing inside",
 }
 
 TEST_CASE("Step 1 draws the same pixels for all six vertex orders", "[step1][order]") {
-  for (const auto& triangle : article_triangles) {
+  for (const auto& triangle : tinyrenderer_triangles) {
     const auto [a, b, c] = triangle.vertices;
     const PixelSet expected = outline_pixels(a, b, c);
     PixelSet edges = line_pixels(a, b);
     edges.merge(line_pixels(b, c));
     edges.merge(line_pixels(c, a));
     CHECK(expected == edges);
-    for (const auto& order : tri::ch04::testing::all_orders(a, b, c)) {
+    for (const auto& order : tri::testing::vertex_orders(a, b, c)) {
       CHECK(outline_pixels(order[0], order[1], order[2]) == expected);
     }
   }
 }
 
 TEST_CASE("Step 2 draws boundary A from t0 to t2 in red over boundary B in green", "[step2]") {
-  for (const auto& triangle : article_triangles) {
+  for (const auto& triangle : tinyrenderer_triangles) {
     const auto [a, b, c] = triangle.vertices;
     Canvas canvas(200, 200);
     tri::ch04::draw_sorted_boundaries(canvas, a, b, c);
     const auto t = tri::ch04::sort_by_y(a, b, c);
-    const PixelSet boundary_a = line_pixels(t.t0, t.t2);
-    PixelSet boundary_b = line_pixels(t.t0, t.t1);
-    boundary_b.merge(line_pixels(t.t1, t.t2));
+    const PixelSet boundary_a = line_pixels(t.p0, t.p2);
+    PixelSet boundary_b = line_pixels(t.p0, t.p1);
+    boundary_b.merge(line_pixels(t.p1, t.p2));
     CHECK(pixels_coloured(canvas, tri::colors::red) == boundary_a);
     CHECK(pixels_coloured(canvas, tri::colors::green) ==
-          tri::ch04::testing::minus(boundary_b, boundary_a));
+          tri::testing::minus(boundary_b, boundary_a));
   }
   // The red triangle: A is the long edge on the left, rising from (10,70) to (50,160).
   Canvas canvas(200, 200);
-  tri::ch04::draw_sorted_boundaries(canvas, {10, 70}, {50, 160}, {70, 80});
+  tri::ch04::draw_sorted_boundaries(canvas, red[0], red[1], red[2]);
   CHECK(canvas.pixel(10, 70) == tri::colors::red);
   CHECK(canvas.pixel(50, 160) == tri::colors::red);
   CHECK(canvas.pixel(70, 80) == tri::colors::green);

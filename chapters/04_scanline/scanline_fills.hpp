@@ -19,7 +19,7 @@ namespace tri::ch04 {
 /// of t2. Preconditions: t0.y < t2.y and t1.y <= y <= t2.y.
 SpanEnds upper_half_ends(const SortedTriangle& t, std::int64_t y) noexcept;
 
-/// Step 5: the lower-half loop over rows t0.y..t1.y, then a second loop over rows t1.y..t2.y,
+/// Step 5: the lower-half loop over rows t0.y..p1.y, then a second loop over rows t1.y..p2.y,
 /// both with the article's +1 segment heights. Row t1.y belongs to both loops and is drawn twice.
 /// Draws nothing when all three vertices share a row.
 void fill_two_loops(Canvas& canvas, glm::ivec2 a, glm::ivec2 b, glm::ivec2 c, Color color);
@@ -30,7 +30,7 @@ void fill_two_loops(Canvas& canvas, glm::ivec2 a, glm::ivec2 b, glm::ivec2 c, Co
 /// Preconditions: t0.y < t2.y and 0 <= i <= t2.y - t0.y.
 SpanEnds single_loop_ends(const SortedTriangle& t, std::int64_t i) noexcept;
 
-/// Step 6, with the top row: one loop over rows t0.y..t2.y **inclusive**. Draws nothing when all
+/// Step 6, with the top row: one loop over rows t0.y..p2.y **inclusive**. Draws nothing when all
 /// three vertices share a row (the article's early return).
 void fill_single_loop(Canvas& canvas, glm::ivec2 a, glm::ivec2 b, glm::ivec2 c, Color color);
 

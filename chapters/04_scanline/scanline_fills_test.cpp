@@ -2,25 +2,28 @@
 
 #include <catch2/catch.hpp>
 
-#include "chapters/04_scanline/article_triangles.hpp"
+#include "chapters/02_wireframe/example_triangles.hpp"
 #include "chapters/04_scanline/scanline_test_support.hpp"
 
 namespace {
 
 using tri::Canvas;
-using tri::ch04::article_triangles;
+using tri::ch02::tinyrenderer_triangles;
 using tri::ch04::fill_single_loop;
 using tri::ch04::fill_single_loop_as_published;
 using tri::ch04::fill_two_loops;
 using tri::ch04::sort_by_y;
 using tri::ch04::testing::add_row;
-using tri::ch04::testing::all_orders;
 using tri::ch04::testing::drawn_by;
-using tri::ch04::testing::minus;
 using tri::ch04::testing::pixels_of;
 using tri::testing::inclusive_pixels;
+using tri::testing::minus;
 using tri::testing::overdrawn_pixels;
 using tri::testing::PixelSet;
+using tri::testing::vertex_orders;
+
+// tinyrenderer's red triangle, (10, 70), (50, 160), (70, 80).
+constexpr const auto& red = tinyrenderer_triangles[0].vertices;
 
 // The rows a pixel set touches.
 std::set<int> rows_of(const PixelSet& pixels) {
@@ -78,22 +81,22 @@ TEST_CASE("The int cast puts (10,72) into the red triangle though its centre lie
           "[int-cast][trap]") {
   // Row 72 of the red triangle: boundary A is at x = 10 + 40 * 2/90 = 10.89. Truncation starts
   // the span at 10; rounding would start it at 11, the first centre inside.
-  const PixelSet filled = pixels_of(fill_single_loop, {10, 70}, {50, 160}, {70, 80});
-  const PixelSet inside = inclusive_pixels({10, 70}, {50, 160}, {70, 80}, 200, 200);
+  const PixelSet filled = pixels_of(fill_single_loop, red[0], red[1], red[2]);
+  const PixelSet inside = inclusive_pixels(red[0], red[1], red[2], 200, 200);
   CHECK(filled.count({10, 72}) == 1);
   CHECK(inside.count({10, 72}) == 0);
   CHECK(inside.count({11, 72}) == 1);
-  const auto t = sort_by_y({10, 70}, {50, 160}, {70, 80});
+  const auto t = sort_by_y(red[0], red[1], red[2]);
   CHECK(tri::ch04::single_loop_ends(t, 2).a == 10);
 }
 
 TEST_CASE("The two-loop fill draws row t1.y twice", "[step5]") {
   const std::size_t expected_overdraw[] = {51, 51, 39};
   for (int i = 0; i < 3; ++i) {
-    const auto [a, b, c] = article_triangles[i].vertices;
+    const auto [a, b, c] = tinyrenderer_triangles[i].vertices;
     const PixelSet twice = overdrawn_pixels(drawn_by(fill_two_loops, a, b, c));
     CHECK(twice.size() == expected_overdraw[i]);
-    CHECK(rows_of(twice) == std::set<int>{sort_by_y(a, b, c).t1.y});
+    CHECK(rows_of(twice) == std::set<int>{sort_by_y(a, b, c).p1.y});
   }
 }
 
@@ -101,13 +104,13 @@ TEST_CASE("The published single loop stops one row short and never draws row t2.
           "[step6][trap]") {
   int missing_rows = 0;
   std::size_t missing_pixels = 0;
-  for (const auto& triangle : article_triangles) {
+  for (const auto& triangle : tinyrenderer_triangles) {
     const auto [a, b, c] = triangle.vertices;
     const PixelSet fixed = pixels_of(fill_single_loop, a, b, c);
     const PixelSet published = pixels_of(fill_single_loop_as_published, a, b, c);
     const PixelSet lost = minus(fixed, published);
     CHECK(minus(published, fixed).empty());
-    const glm::ivec2 top = sort_by_y(a, b, c).t2;
+    const glm::ivec2 top = sort_by_y(a, b, c).p2;
     CHECK(lost == PixelSet{{top.x, top.y}});  // a pointed top: just the vertex
     missing_rows += static_cast<int>(rows_of(lost).size());
     missing_pixels += lost.size();
@@ -134,7 +137,7 @@ TEST_CASE("The single loop takes the second half from the first row when t0.y ==
   add_row(expected, 1, 0, 4);
   add_row(expected, 2, 1, 3);
   add_row(expected, 3, 2, 2);
-  for (const auto& order : all_orders({0, 0}, {4, 0}, {2, 3})) {
+  for (const auto& order : vertex_orders({0, 0}, {4, 0}, {2, 3})) {
     CHECK(pixels_of(fill_single_loop, order[0], order[1], order[2]) == expected);
   }
 }
@@ -144,7 +147,7 @@ TEST_CASE("The single loop stays in the first half to the top when t1.y == t2.y"
   PixelSet expected{{2, 0}, {2, 1}};
   add_row(expected, 2, 1, 3);
   add_row(expected, 3, 0, 4);
-  for (const auto& order : all_orders({2, 0}, {0, 3}, {4, 3})) {
+  for (const auto& order : vertex_orders({2, 0}, {0, 3}, {4, 3})) {
     CHECK(pixels_of(fill_single_loop, order[0], order[1], order[2]) == expected);
   }
   CHECK(expected == inclusive_pixels({2, 0}, {0, 3}, {4, 3}, 200, 200));
@@ -167,7 +170,7 @@ TEST_CASE("The two-loop fill on a flat bottom depends on which bottom vertex is 
 TEST_CASE("The two-loop fill on a flat top covers the top edge with its second loop",
           "[step5][division-by-zero]") {
   const PixelSet single = pixels_of(fill_single_loop, {2, 0}, {0, 3}, {4, 3});
-  for (const auto& order : all_orders({2, 0}, {0, 3}, {4, 3})) {
+  for (const auto& order : vertex_orders({2, 0}, {0, 3}, {4, 3})) {
     const Canvas canvas = drawn_by(fill_two_loops, order[0], order[1], order[2]);
     CHECK(tri::testing::written_pixels(canvas) == single);
     CHECK(rows_of(overdrawn_pixels(canvas)) == std::set<int>{3});
@@ -195,7 +198,7 @@ TEST_CASE("The two fills part ways on the article's triangles by these pixels", 
   // {pixels only the two loops draw, pixels only the single loop draws}, per triangle.
   const std::pair<std::size_t, std::size_t> expected[] = {{20, 29}, {60, 10}, {10, 29}};
   for (int i = 0; i < 3; ++i) {
-    const auto [a, b, c] = article_triangles[i].vertices;
+    const auto [a, b, c] = tinyrenderer_triangles[i].vertices;
     const auto t = sort_by_y(a, b, c);
     const PixelSet two = pixels_of(fill_two_loops, a, b, c);
     const PixelSet one = pixels_of(fill_single_loop, a, b, c);
@@ -203,8 +206,8 @@ TEST_CASE("The two fills part ways on the article's triangles by these pixels", 
     CHECK(std::pair(only_two.size(), only_one.size()) == expected[i]);
     // The bent B of the lower loop loses pixels below t1; the bent B of the upper loop adds
     // pixels above it.
-    for (const int y : rows_of(only_one)) CHECK((y > t.t0.y && y < t.t1.y));
-    for (const int y : rows_of(only_two)) CHECK((y > t.t1.y && y <= t.t2.y));
+    for (const int y : rows_of(only_one)) CHECK((y > t.p0.y && y < t.p1.y));
+    for (const int y : rows_of(only_two)) CHECK((y > t.p1.y && y <= t.p2.y));
   }
 }
 
@@ -220,7 +223,7 @@ TEST_CASE("The single loop draws each pixel once and the same pixels for all six
     const Canvas canvas = drawn_by(fill_single_loop, a, b, c, 32, 32);
     CHECK(overdrawn_pixels(canvas).empty());  // one pass per row, each row once
     const PixelSet expected = tri::testing::written_pixels(canvas);
-    for (const auto& order : all_orders(a, b, c)) {
+    for (const auto& order : vertex_orders(a, b, c)) {
       CHECK(pixels_of(fill_single_loop, order[0], order[1], order[2], 32, 32) == expected);
     }
   }
@@ -237,7 +240,7 @@ TEST_CASE("The two-loop fill depends on vertex order only when two vertices shar
     const glm::ivec2 c{random.integer(0, 31), random.integer(0, 31)};
     const PixelSet first = pixels_of(fill_two_loops, a, b, c, 32, 32);
     bool differs = false;
-    for (const auto& order : all_orders(a, b, c)) {
+    for (const auto& order : vertex_orders(a, b, c)) {
       differs |= pixels_of(fill_two_loops, order[0], order[1], order[2], 32, 32) != first;
     }
     if (differs) {

@@ -1,11 +1,7 @@
 /// @file
 /// What chapter 04's tests share: drawing one step into a counting canvas and reading back its
-/// pixels, the six orders of three vertices, and set differences.
+/// pixels, and whole rows of pixels.
 #pragma once
-
-#include <algorithm>
-#include <array>
-#include <iterator>
 
 #include <glm/vec2.hpp>
 
@@ -14,7 +10,9 @@
 
 namespace tri::ch04::testing {
 
+using tri::testing::minus;
 using tri::testing::PixelSet;
+using tri::testing::vertex_orders;
 
 /// The signature of the chapter's fill steps.
 using FillStep = void (*)(Canvas&, glm::ivec2, glm::ivec2, glm::ivec2, Color);
@@ -32,20 +30,6 @@ inline Canvas drawn_by(FillStep step, glm::ivec2 a, glm::ivec2 b, glm::ivec2 c, 
 inline PixelSet pixels_of(FillStep step, glm::ivec2 a, glm::ivec2 b, glm::ivec2 c, int width = 200,
                           int height = 200) {
   return tri::testing::written_pixels(drawn_by(step, a, b, c, width, height));
-}
-
-/// Pixels in `from` that are not in `without`.
-inline PixelSet minus(const PixelSet& from, const PixelSet& without) {
-  PixelSet rest;
-  std::set_difference(from.begin(), from.end(), without.begin(), without.end(),
-                      std::inserter(rest, rest.end()));
-  return rest;
-}
-
-/// The six orders in which three vertices can be passed.
-inline std::array<std::array<glm::ivec2, 3>, 6> all_orders(glm::ivec2 a, glm::ivec2 b,
-                                                           glm::ivec2 c) {
-  return {{{a, b, c}, {a, c, b}, {b, a, c}, {b, c, a}, {c, a, b}, {c, b, a}}};
 }
 
 /// Every pixel of row y from x_first to x_last, both included.

@@ -4,6 +4,7 @@
 #include <cstdlib>
 #include <vector>
 
+#include "chapters/03_interpolate_fill/diagram_support.hpp"
 #include "chapters/04_scanline/boundaries.hpp"
 #include "chapters/04_scanline/diagram_support.hpp"
 #include "chapters/04_scanline/lower_half.hpp"
@@ -64,7 +65,7 @@ std::pair<int, int> hatch_gaps(PixelDiagram& diagram, int first_row,
 
 }  // namespace
 
-std::string outlines() {
+SvgFigure outlines() {
   const Canvas drawn = drawn_by([](Canvas& canvas, glm::ivec2 a, glm::ivec2 b,
                                    glm::ivec2 c) { draw_outline(canvas, a, b, c, colors::white); },
                                 diagram_triangle());
@@ -73,20 +74,20 @@ std::string outlines() {
   fill_written(diagram, drawn, dc::covered);
   diagram.legend_fill("outline pixel (chapter 01's Bresenham)", dc::covered);
   diagram.legend_line("ideal triangle edges", dc::black);
-  return diagram.svg();
+  return SvgFigure{"04_outlines", diagram.svg()};
 }
 
-std::string sorted_boundaries() {
+SvgFigure sorted_boundaries() {
   const Canvas drawn = drawn_by(draw_sorted_boundaries, diagram_triangle());
   PixelDiagram diagram = green_diagram("Step 2: boundary A runs t0 to t2, boundary B bends at t1");
   fill_boundaries(diagram, drawn);
   diagram.legend_fill("boundary A: the long edge t0-t2", boundary_a);
   diagram.legend_fill("boundary B: t0-t1, then t1-t2", boundary_b);
   diagram.legend_line("ideal triangle edges", dc::black);
-  return diagram.svg();
+  return SvgFigure{"04_sorted_boundaries", diagram.svg()};
 }
 
-std::string lower_half_points() {
+SvgFigure lower_half_points() {
   const auto [a, b, c] = diagram_triangle().vertices;
   const SortedTriangle t = sort_by_y(a, b, c);
   const Canvas drawn = drawn_by(draw_lower_half_boundary_points, diagram_triangle());
@@ -94,14 +95,14 @@ std::string lower_half_points() {
       green_diagram("Step 3: one point per row on each boundary leaves gaps where it is shallow");
   fill_boundaries(diagram, drawn);
   std::vector<std::int64_t> xs_a, xs_b;
-  for (int y = t.t0.y; y <= t.t1.y; ++y) {
+  for (int y = t.p0.y; y <= t.p1.y; ++y) {
     const SpanEnds ends = lower_half_ends(t, y);
     xs_a.push_back(ends.a);
     xs_b.push_back(ends.b);
   }
-  const auto [breaks_a, missing_a] = hatch_gaps(diagram, t.t0.y, xs_a);
-  const auto [breaks_b, missing_b] = hatch_gaps(diagram, t.t0.y, xs_b);
-  const glm::ivec2 b_at_t1{static_cast<int>(xs_b.back()), t.t1.y};
+  const auto [breaks_a, missing_a] = hatch_gaps(diagram, t.p0.y, xs_a);
+  const auto [breaks_b, missing_b] = hatch_gaps(diagram, t.p0.y, xs_b);
+  const glm::ivec2 b_at_t1{static_cast<int>(xs_b.back()), t.p1.y};
   diagram.mark(b_at_t1, PixelMark::square);
   diagram.label(glm::dvec2(b_at_t1) + glm::dvec2(0.5, 0), "B on row t1.y, not t1",
                 LabelPlace::above_right);
@@ -113,12 +114,12 @@ std::string lower_half_points() {
   diagram.legend_note(
       "A breaks " + std::to_string(breaks_a) + " times (" + std::to_string(missing_a) +
       " pixels missing), B " + std::to_string(breaks_b) + " times (" + std::to_string(missing_b) +
-      " pixels). On row " + std::to_string(t.t1.y) + ", B is at x = " + std::to_string(b_at_t1.x) +
-      ", not t1.x = " + std::to_string(t.t1.x) + ".");
-  return diagram.svg();
+      " pixels). On row " + std::to_string(t.p1.y) + ", B is at x = " + std::to_string(b_at_t1.x) +
+      ", not t1.x = " + std::to_string(t.p1.x) + ".");
+  return SvgFigure{"04_lower_half_points", diagram.svg()};
 }
 
-std::string lower_half_filled() {
+SvgFigure lower_half_filled() {
   const auto [a, b, c] = diagram_triangle().vertices;
   const SortedTriangle t = sort_by_y(a, b, c);
   const Canvas drawn = drawn_by(fill_step(fill_lower_half), diagram_triangle());
@@ -126,9 +127,9 @@ std::string lower_half_filled() {
       green_diagram("Step 4: each lower-half row filled from A to B; B lags behind its edge");
   fill_written(diagram, drawn, dc::covered);
   int lost = 0;
-  for (int y = t.t0.y; y <= t.t1.y; ++y) {
+  for (int y = t.p0.y; y <= t.p1.y; ++y) {
     for (int x = 0; x < drawn.width(); ++x) {
-      if (drawn.write_count(x, y) == 0 && centre_in_triangle(diagram_triangle(), {x, y})) {
+      if (drawn.write_count(x, y) == 0 && ch03::figures::centre_in_triangle(a, b, c, {x, y})) {
         diagram.mark({x, y}, PixelMark::cross, dc::vermillion);
         ++lost;
       }
@@ -138,10 +139,10 @@ std::string lower_half_filled() {
   diagram.legend_mark("centre inside, not drawn (B's +1)", PixelMark::cross, dc::vermillion);
   diagram.legend_line("ideal edges", dc::black);
   diagram.legend_note(std::to_string(lost) + " centres in rows t0.y to t1.y are left out.");
-  return diagram.svg();
+  return SvgFigure{"04_lower_half_filled", diagram.svg()};
 }
 
-std::string two_loops() {
+SvgFigure two_loops() {
   const Canvas drawn = drawn_by(fill_step(fill_two_loops), diagram_triangle());
   PixelDiagram diagram = green_diagram("Step 5: two loops fill both halves and both draw row t1.y");
   int twice = 0;
@@ -161,10 +162,10 @@ std::string two_loops() {
   diagram.legend_mark("hatched: drawn twice", PixelMark::hatch);
   diagram.legend_line("ideal edges", dc::black);
   diagram.legend_note(std::to_string(twice) + " pixels of row t1.y are drawn by both loops.");
-  return diagram.svg();
+  return SvgFigure{"04_two_loops", diagram.svg()};
 }
 
-std::string single_loop() {
+SvgFigure single_loop() {
   const auto [a, b, c] = diagram_triangle().vertices;
   const SortedTriangle t = sort_by_y(a, b, c);
   const Canvas drawn = drawn_by(fill_step(fill_single_loop), diagram_triangle());
@@ -172,12 +173,12 @@ std::string single_loop() {
       green_diagram("Step 6: one loop with second_half, each pixel once, top row included");
   fill_written(diagram, drawn, dc::covered);
   for (int x = 0; x < drawn.width(); ++x) {
-    if (drawn.write_count(x, t.t2.y) > 0) diagram.mark({x, t.t2.y}, PixelMark::square);
+    if (drawn.write_count(x, t.p2.y) > 0) diagram.mark({x, t.p2.y}, PixelMark::square);
   }
   diagram.legend_fill("drawn once", dc::covered);
   diagram.legend_mark("row t2.y: the published loop stops before it", PixelMark::square);
   diagram.legend_line("ideal edges", dc::black);
-  return diagram.svg();
+  return SvgFigure{"04_single_loop", diagram.svg()};
 }
 
 }  // namespace tri::ch04::figures

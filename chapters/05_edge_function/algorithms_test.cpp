@@ -34,11 +34,6 @@ PixelSet drawn(const Triangle& triangle, int size = 32) {
   return tri::testing::written_pixels(canvas);
 }
 
-std::int64_t twice_area(glm::ivec2 a, glm::ivec2 b, glm::ivec2 c) {
-  return (std::int64_t{b.x} - a.x) * (std::int64_t{c.y} - a.y) -
-         (std::int64_t{b.y} - a.y) * (std::int64_t{c.x} - a.x);
-}
-
 }  // namespace
 
 TEST_CASE("Chapter 05 registers edge_function as an inclusive algorithm", "[registry]") {
@@ -57,7 +52,7 @@ TEST_CASE("edge_function covers exactly the inclusive pixels of random integer t
   for (int i = 0; i < 3000; ++i) {
     std::array<glm::ivec2, 3> v{};
     for (auto& vertex : v) vertex = {random.integer(-8, 40), random.integer(-8, 40)};
-    if (twice_area(v[0], v[1], v[2]) == 0) continue;
+    if (tri::testing::doubled_area(v[0], v[1], v[2]) == 0) continue;
     const Triangle triangle{glm::dvec2(v[0]), glm::dvec2(v[1]), glm::dvec2(v[2])};
     REQUIRE(drawn(triangle) == inclusive_pixels(v[0], v[1], v[2], 32, 32));
     ++tested;
@@ -72,7 +67,7 @@ TEST_CASE("edge_function rounds each vertex to the nearest pixel centre first", 
     for (auto& vertex : triangle) vertex = {random.real(-8, 40), random.real(-8, 40)};
     const glm::ivec2 a = tri::nearest_pixel(triangle[0]), b = tri::nearest_pixel(triangle[1]),
                      c = tri::nearest_pixel(triangle[2]);
-    if (twice_area(a, b, c) == 0) continue;
+    if (tri::testing::doubled_area(a, b, c) == 0) continue;
     REQUIRE(drawn(triangle) == inclusive_pixels(a, b, c, 32, 32));
   }
   // 2.5 rounds up to 3 and 0.49 down to 0.

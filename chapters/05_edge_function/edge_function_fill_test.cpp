@@ -6,6 +6,7 @@
 
 #include <catch2/catch.hpp>
 
+#include "chapters/02_wireframe/example_triangles.hpp"
 #include "chapters/05_edge_function/cross_product.hpp"
 #include "chapters/05_edge_function/edge_function_fill.hpp"
 #include "tests/support/pixels.hpp"
@@ -53,11 +54,7 @@ PixelSet lattice_points(glm::ivec2 p, glm::ivec2 d, int t0, int t1, int width, i
   return set;
 }
 
-constexpr std::array<std::array<glm::ivec2, 3>, 3> tinyrenderer_triangles{{
-    {{{10, 70}, {50, 160}, {70, 80}}},
-    {{{180, 50}, {150, 1}, {70, 180}}},
-    {{{180, 150}, {120, 160}, {130, 180}}},
-}};
+using tri::ch02::tinyrenderer_triangles;
 
 }  // namespace
 
@@ -94,7 +91,7 @@ TEST_CASE("The fill covers the inclusive pixels of random triangles in all six v
 TEST_CASE("The three tinyrenderer triangles cover 2521, 4652 and 666 pixels", "[fill]") {
   const std::array<std::size_t, 3> counts{2521, 4652, 666};
   for (std::size_t i = 0; i < 3; ++i) {
-    const auto& [a, b, c] = tinyrenderer_triangles[i];
+    const auto& [a, b, c] = tinyrenderer_triangles[i].vertices;
     const PixelSet pixels = filled(a, b, c, 200, 200);
     CHECK(pixels.size() == counts[i]);
     CHECK(pixels == inclusive_pixels(a, b, c, 200, 200));
@@ -109,12 +106,10 @@ TEST_CASE("The published test draws other pixels than the right one on the tinyr
   // Measured: the published test keeps 1037, 1 and 1 of the right pixels and adds 146, 236, 19.
   const std::array<Counts, 3> expected{{{2521, 1183, 1037}, {4652, 237, 1}, {666, 20, 1}}};
   for (std::size_t i = 0; i < 3; ++i) {
-    const auto& [a, b, c] = tinyrenderer_triangles[i];
+    const auto& [a, b, c] = tinyrenderer_triangles[i].vertices;
     const PixelSet right = filled(a, b, c, 200, 200);
     const PixelSet published = drawn(fill_triangle_published_bug, a, b, c, 200, 200);
-    PixelSet both;
-    std::set_intersection(right.begin(), right.end(), published.begin(), published.end(),
-                          std::inserter(both, both.end()));
+    const PixelSet both = tri::testing::intersection(right, published);
     CHECK(right.size() == expected[i].right);
     CHECK(published.size() == expected[i].published);
     CHECK(both.size() == expected[i].both);

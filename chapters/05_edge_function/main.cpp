@@ -3,9 +3,11 @@
 // Each one that argues about pixels is a pixel diagram (common/pixel_diagram.hpp).
 #include <array>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "chapters/01_lines/lines.hpp"
+#include "chapters/02_wireframe/example_triangles.hpp"
 #include "chapters/05_edge_function/bounding_box.hpp"
 #include "chapters/05_edge_function/cross_product.hpp"
 #include "chapters/05_edge_function/edge_function_fill.hpp"
@@ -32,12 +34,7 @@ constexpr Color light_purple{235, 201, 220, 255};
 // Paints the pixel sets the figures compute on a (black) canvas before they are coloured.
 constexpr Color marked = tri::colors::white;
 
-// tinyrenderer lesson 2's three test triangles on its 200x200 image.
-constexpr std::array<Vertices, 3> tinyrenderer_triangles{{
-    {{{10, 70}, {50, 160}, {70, 80}}},
-    {{{180, 50}, {150, 1}, {70, 180}}},
-    {{{180, 150}, {120, 160}, {130, 180}}},
-}};
+using tri::ch02::tinyrenderer_triangles;
 constexpr std::array<Color, 3> tinyrenderer_colors{dc::vermillion, dc::blue, dc::green};
 constexpr std::array<const char*, 3> tinyrenderer_names{"first", "second", "third"};
 // The pixels of the published-bug zoom: the third triangle and its surroundings.
@@ -63,10 +60,10 @@ std::vector<glm::ivec2> pixels_of(const Canvas& canvas, Color color) {
 }
 
 // Step 4: tinyrenderer's three triangles, a whole scene, with their ideal edges on top.
-std::string tinyrenderer_figure() {
+tri::SvgFigure tinyrenderer_figure() {
   Canvas canvas(200, 200);
   for (std::size_t i = 0; i < tinyrenderer_triangles.size(); ++i) {
-    const auto& [a, b, c] = tinyrenderer_triangles[i];
+    const auto& [a, b, c] = tinyrenderer_triangles[i].vertices;
     tri::ch05::fill_triangle_edge_function(canvas, a, b, c, tinyrenderer_colors[i]);
   }
   PixelDiagram d({0, 0}, {199, 199},
@@ -74,7 +71,7 @@ std::string tinyrenderer_figure() {
   d.show_centres(false);
   d.fill_from(canvas, tri::colors::black);
   for (std::size_t i = 0; i < tinyrenderer_triangles.size(); ++i) {
-    const auto& [a, b, c] = tinyrenderer_triangles[i];
+    const auto& [a, b, c] = tinyrenderer_triangles[i].vertices;
     d.triangle(at(a), at(b), at(c), dc::black, 1);
     d.legend_fill(std::string(tinyrenderer_names[i]) + " " + point_text(a) + " " + point_text(b) +
                       " " + point_text(c) + ": " +
@@ -82,12 +79,12 @@ std::string tinyrenderer_figure() {
                   tinyrenderer_colors[i]);
   }
   d.legend_line("ideal triangle edges", dc::black);
-  return d.svg();
+  return tri::SvgFigure{"05_tinyrenderer_triangles", d.svg()};
 }
 
 // Step 2: every pixel centre coloured by the signs of its three edge values: which of them are
 // negative says on which side of which edge it lies.
-std::string edge_signs_figure() {
+tri::SvgFigure edge_signs_figure() {
   const glm::ivec2 a(1, 1), b(13, 4), c(5, 10);
   PixelDiagram d({0, 0}, {14, 11}, "The signs of AB x AP, BC x BP, CA x CP at every pixel centre P",
                  32);
@@ -128,13 +125,14 @@ std::string edge_signs_figure() {
   d.legend_line("edge CA", dc::purple);
   d.legend_note("A, B, C run counter-clockwise; " + std::to_string(on_edge) +
                 " centres lie exactly on an edge (A, B, C among them).");
-  return d.svg();
+  return tri::SvgFigure{"05_edge_signs", d.svg()};
 }
 
 // Step 1: the box the loop visits (clamped to the canvas), the pixels drawn, the vertices. The
 // diagram shows `shown` pixels, which may reach beyond the canvas to show the whole triangle.
-std::string bounding_box_figure(const std::string& title, const Vertices& v, glm::ivec2 canvas_size,
-                                glm::ivec2 shown_first, glm::ivec2 shown_last) {
+tri::SvgFigure bounding_box_figure(std::string name, const std::string& title, const Vertices& v,
+                                   glm::ivec2 canvas_size, glm::ivec2 shown_first,
+                                   glm::ivec2 shown_last) {
   Canvas canvas(canvas_size.x, canvas_size.y);
   tri::ch05::fill_triangle_edge_function(canvas, v[0], v[1], v[2], dc::blue);
   const auto box =
@@ -168,7 +166,7 @@ std::string bounding_box_figure(const std::string& title, const Vertices& v, glm
   d.legend_note("Box: columns " + std::to_string(box.min.x) + " to " + std::to_string(box.max.x) +
                 ", rows " + std::to_string(box.min.y) + " to " + std::to_string(box.max.y) +
                 " (both ends included).");
-  return d.svg();
+  return tri::SvgFigure{std::move(name), d.svg()};
 }
 
 // The published test against the right one, as three pixel sets on one canvas.
@@ -178,7 +176,8 @@ struct BugComparison {
 
 BugComparison compare_published_bug() {
   Canvas right(200, 200), published(200, 200);
-  for (const auto& [a, b, c] : tinyrenderer_triangles) {
+  for (const auto& triangle : tinyrenderer_triangles) {
+    const auto& [a, b, c] = triangle.vertices;
     tri::ch05::fill_triangle_edge_function(right, a, b, c, marked);
     tri::ch05::fill_triangle_published_bug(published, a, b, c, marked);
   }
@@ -213,12 +212,15 @@ void fill_comparison(PixelDiagram& d, const BugComparison& cmp) {
   d.fill(pixels_of(cmp.extra, marked), dc::vermillion);
 }
 
-std::string published_bug_figure(const BugComparison& cmp) {
+tri::SvgFigure published_bug_figure() {
+  const BugComparison cmp = compare_published_bug();
   PixelDiagram d({0, 0}, {199, 199}, "The published points[0].y test against the right one", 3);
   d.show_centres(false);
   fill_comparison(d, cmp);
-  for (const auto& [a, b, c] : tinyrenderer_triangles)
+  for (const auto& triangle : tinyrenderer_triangles) {
+    const auto& [a, b, c] = triangle.vertices;
     d.triangle(at(a), at(b), at(c), dc::black, 1);
+  }
   const glm::ivec2 first = zoom_first, last = zoom_last;
   d.line(glm::dvec2(first) - 0.5, glm::dvec2(last.x + 0.5, first.y - 0.5), dc::purple, 1.5);
   d.line(glm::dvec2(last) + 0.5, glm::dvec2(last.x + 0.5, first.y - 0.5), dc::purple, 1.5);
@@ -229,12 +231,13 @@ std::string published_bug_figure(const BugComparison& cmp) {
   d.legend_fill("outside, drawn by the published test", dc::vermillion);
   d.legend_line("ideal triangles", dc::black);
   d.legend_line("region of the zoomed figure", dc::purple);
-  return d.svg();
+  return tri::SvgFigure{"05_published_bug", d.svg()};
 }
 
 // The zoomed companion: the third triangle, where the lost and the extra pixels sit side by side.
-std::string published_bug_zoom_figure(const BugComparison& cmp) {
-  const Vertices& v = tinyrenderer_triangles[2];
+tri::SvgFigure published_bug_zoom_figure() {
+  const BugComparison cmp = compare_published_bug();
+  const Vertices& v = tinyrenderer_triangles[2].vertices;
   PixelDiagram d(zoom_first, zoom_last,
                  "Zoom on the third triangle: the published test tests against slid edges", 12);
   fill_comparison(d, cmp);
@@ -252,12 +255,12 @@ std::string published_bug_zoom_figure(const BugComparison& cmp) {
   d.legend_line("ideal triangle", dc::black);
   d.legend_line("BC and CA slid to A's height: what the published test tests against", dc::purple,
                 true);
-  return d.svg();
+  return tri::SvgFigure{"05_published_bug_zoom", d.svg()};
 }
 
 // Zero-area triangles: the ideal segment, chapter 01's Bresenham line under it for comparison,
 // and the pixels the fill draws: only the centres exactly on the segment.
-std::string zero_area_figure() {
+tri::SvgFigure zero_area_figure() {
   const std::array<Vertices, 3> segments{{
       {{{0, 0}, {10, 10}, {20, 20}}},
       {{{2, 22}, {12, 25}, {22, 28}}},
@@ -285,7 +288,7 @@ std::string zero_area_figure() {
   d.legend_line("the ideal segment", dc::vermillion);
   d.legend_note(
       "Direction (1, 1): every centre on it; (10, 3): only A, B, C; one point: one pixel.");
-  return d.svg();
+  return tri::SvgFigure{"05_zero_area", d.svg()};
 }
 
 }  // namespace
@@ -299,20 +302,16 @@ int main(int argc, char** argv) {
       "(05_bounding_box.svg, 05_bounding_box_clamped.svg), the published points[0].y bug against\n"
       "the correct test (05_published_bug.svg, zoomed in 05_published_bug_zoom.svg) and\n"
       "zero-area triangles (05_zero_area.svg).",
-      [](tri::FigureWriter& figures) {
-        figures.save_svg("05_tinyrenderer_triangles", tinyrenderer_figure());
-        figures.save_svg("05_edge_signs", edge_signs_figure());
-        figures.save_svg(
-            "05_bounding_box",
-            bounding_box_figure("The bounding box: every pixel in it is tested",
-                                {{{5, 4}, {34, 11}, {14, 27}}}, {40, 32}, {0, 0}, {39, 31}));
-        figures.save_svg(
-            "05_bounding_box_clamped",
-            bounding_box_figure("The box cut down to the 40 x 32 canvas",
-                                {{{-12, 6}, {24, -9}, {30, 26}}}, {40, 32}, {-17, -10}, {39, 31}));
-        const auto comparison = compare_published_bug();
-        figures.save_svg("05_published_bug", published_bug_figure(comparison));
-        figures.save_svg("05_published_bug_zoom", published_bug_zoom_figure(comparison));
-        figures.save_svg("05_zero_area", zero_area_figure());
-      });
+      {tinyrenderer_figure, edge_signs_figure,
+       [] {
+         return bounding_box_figure("05_bounding_box",
+                                    "The bounding box: every pixel in it is tested",
+                                    {{{5, 4}, {34, 11}, {14, 27}}}, {40, 32}, {0, 0}, {39, 31});
+       },
+       [] {
+         return bounding_box_figure(
+             "05_bounding_box_clamped", "The box cut down to the 40 x 32 canvas",
+             {{{-12, 6}, {24, -9}, {30, 26}}}, {40, 32}, {-17, -10}, {39, 31});
+       },
+       published_bug_figure, published_bug_zoom_figure, zero_area_figure});
 }

@@ -3,6 +3,7 @@
 
 #include <catch2/catch.hpp>
 
+#include "chapters/02_wireframe/example_triangles.hpp"
 #include "chapters/05_edge_function/cross_product.hpp"
 #include "chapters/05_edge_function/point_in_triangle.hpp"
 #include "tests/support/pixels.hpp"
@@ -81,7 +82,7 @@ TEST_CASE("The inside test answers the same for both windings and all six vertex
 TEST_CASE("The article's all-non-negative test alone loses every clockwise triangle",
           "[inside][winding]") {
   // tinyrenderer's first triangle is clockwise with y up: AB x AC < 0.
-  const glm::ivec2 t0(10, 70), t1(50, 160), t2(70, 80);
+  const auto [t0, t1, t2] = tri::ch02::tinyrenderer_triangles[0].vertices;
   REQUIRE(edge_cross(t0, t1, t2) == -5000);
   const auto all_non_negative = [](glm::i64vec3 e) { return e.x >= 0 && e.y >= 0 && e.z >= 0; };
   CHECK(pixels_passing(200, 200, [&](glm::ivec2 p) {

@@ -18,15 +18,7 @@ using tri::ch06::Weights;
 using tri::ch06::testing::random_point;
 using tri::testing::Random;
 
-namespace {
-
-// Twice the signed area in exact 64-bit arithmetic.
-long long twice_area(glm::ivec2 a, glm::ivec2 b, glm::ivec2 c) {
-  return (static_cast<long long>(b.x) - a.x) * (static_cast<long long>(c.y) - a.y) -
-         (static_cast<long long>(c.x) - a.x) * (static_cast<long long>(b.y) - a.y);
-}
-
-}  // namespace
+namespace {}  // namespace
 
 TEST_CASE("The cross product of the two rows holds both weights and twice the area",
           "[06][barycentric]") {
@@ -67,7 +59,8 @@ TEST_CASE("Each vertex has the weights (1,0,0), (0,1,0), (0,0,1) exactly, even a
     const glm::ivec2 b = random_point(random, -reach, reach);
     const glm::ivec2 c = random_point(random, -reach, reach);
     // Skip zero areas, and huge areas that double itself rounds to zero (the guard's case).
-    if (twice_area(a, b, c) == 0 || cross_of_rows<double>(a, b, c, a).z == 0) continue;
+    if (tri::testing::doubled_area(a, b, c) == 0 || cross_of_rows<double>(a, b, c, a).z == 0)
+      continue;
     ++checked;
     CHECK(barycentric<double>(a, b, c, a) == Weights<double>(1, 0, 0));
     CHECK(barycentric<double>(a, b, c, b) == Weights<double>(0, 1, 0));
@@ -89,7 +82,7 @@ TEST_CASE("The weights sum to 1 and rebuild the pixel they were computed for",
     const glm::ivec2 b = random_point(random, -1000, 1000);
     const glm::ivec2 c = random_point(random, -1000, 1000);
     const glm::ivec2 p = random_point(random, -1000, 1000);
-    if (twice_area(a, b, c) == 0) continue;
+    if (tri::testing::doubled_area(a, b, c) == 0) continue;
     const Weights<double> w = barycentric<double>(a, b, c, p);
     CHECK(std::abs(w.x + w.y + w.z - 1) < 1e-9);
     const glm::dvec2 rebuilt = w.x * glm::dvec2(a) + w.y * glm::dvec2(b) + w.z * glm::dvec2(c);

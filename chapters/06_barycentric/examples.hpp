@@ -11,13 +11,6 @@ namespace tri::ch06 {
 /// Three integer vertices.
 using PixelTriangle = std::array<glm::ivec2, 3>;
 
-/// tinyrenderer's three test triangles, drawn on a 200x200 image.
-inline constexpr std::array<PixelTriangle, 3> tinyrenderer_triangles{{
-    {{{10, 70}, {50, 160}, {70, 80}}},
-    {{{180, 50}, {150, 1}, {70, 180}}},
-    {{{180, 150}, {120, 160}, {130, 180}}},
-}};
-
 /// A small triangle whose 13 pixels the chapter checks by hand.
 inline constexpr PixelTriangle hand_checked_triangle{{{1, 1}, {6, 2}, {3, 5}}};
 

@@ -9,12 +9,12 @@
 namespace tri::ch06 {
 namespace {
 
-// [listing fill_box]
+// [listing fill_box_by_weights]
 // The article's loop: every pixel of the clamped box, kept when its weights pass is_inside.
 // Weighing is barycentric or barycentric_unguarded; the box bounds the loop to the canvas.
 template <typename Weighing>
-void fill_box(Canvas& canvas, glm::ivec2 a, glm::ivec2 b, glm::ivec2 c, Color color,
-              Weighing weigh) noexcept {
+void fill_box_by_weights(Canvas& canvas, glm::ivec2 a, glm::ivec2 b, glm::ivec2 c, Color color,
+                         Weighing weigh) noexcept {
   const ch05::PixelBox box = ch05::bounding_box_on_canvas(a, b, c, canvas.width(), canvas.height());
   for (int y = box.min.y; y <= box.max.y; ++y) {
     for (int x = box.min.x; x <= box.max.x; ++x) {
@@ -38,14 +38,14 @@ std::uint8_t blend_channel(const Weights<double>& w, int channel_a, int channel_
 template <std::floating_point Scalar>
 void fill_triangle_barycentric(Canvas& canvas, glm::ivec2 a, glm::ivec2 b, glm::ivec2 c,
                                Color color) noexcept {
-  fill_box(canvas, a, b, c, color, barycentric<Scalar>);
+  fill_box_by_weights(canvas, a, b, c, color, barycentric<Scalar>);
 }
 // [/listing]
 
 template <std::floating_point Scalar>
 void fill_triangle_barycentric_unguarded(Canvas& canvas, glm::ivec2 a, glm::ivec2 b, glm::ivec2 c,
                                          Color color) noexcept {
-  fill_box(canvas, a, b, c, color, barycentric_unguarded<Scalar>);
+  fill_box_by_weights(canvas, a, b, c, color, barycentric_unguarded<Scalar>);
 }
 
 // [listing fill_triangle_with_weights]

@@ -3,6 +3,7 @@
 
 #include <catch2/catch.hpp>
 
+#include "chapters/02_wireframe/example_triangles.hpp"
 #include "chapters/06_barycentric/examples.hpp"
 #include "chapters/06_barycentric/fill.hpp"
 #include "chapters/06_barycentric/random_triangles.hpp"
@@ -18,25 +19,15 @@ using tri::ch06::testing::random_point;
 using tri::testing::inclusive_pixels;
 using tri::testing::PixelSet;
 using tri::testing::Random;
+using tri::testing::vertex_orders;
 using tri::testing::written_pixels;
 
 namespace {
 
 PixelSet unguarded_pixels(const PixelTriangle& t, int width, int height) {
-  Canvas canvas(width, height);
-  canvas.enable_write_counts();
-  fill_triangle_barycentric_unguarded<double>(canvas, t[0], t[1], t[2], tri::colors::white);
-  return written_pixels(canvas);
-}
-
-// The six orders in which three vertices can be passed.
-std::array<PixelTriangle, 6> vertex_orders(const PixelTriangle& t) {
-  return {{{t[0], t[1], t[2]},
-           {t[0], t[2], t[1]},
-           {t[1], t[0], t[2]},
-           {t[1], t[2], t[0]},
-           {t[2], t[0], t[1]},
-           {t[2], t[1], t[0]}}};
+  return tri::testing::pixels_drawn(width, height, [&](Canvas& canvas) {
+    fill_triangle_barycentric_unguarded<double>(canvas, t[0], t[1], t[2], tri::colors::white);
+  });
 }
 
 }  // namespace
@@ -55,7 +46,7 @@ TEST_CASE("The hand-checked triangle fills exactly its 13 pixels", "[06][fill]")
 TEST_CASE("Every vertex order fills the same pixels", "[06][fill]") {
   Random random(603);
   std::vector<PixelTriangle> triangles{tri::ch06::hand_checked_triangle};
-  for (const auto& t : tri::ch06::tinyrenderer_triangles) triangles.push_back(t);
+  for (const auto& t : tri::ch02::tinyrenderer_triangles) triangles.push_back(t.vertices);
   for (int i = 0; i < 50; ++i) {
     const glm::ivec2 a = random_point(random, -20, 84);
     const glm::ivec2 b = random_point(random, -20, 84);
@@ -86,7 +77,7 @@ TEST_CASE("No pixel is written twice and none outside the canvas", "[06][fill]")
 TEST_CASE("tinyrenderer's three triangles cover exactly their inclusive pixels", "[06][fill]") {
   const std::array<std::size_t, 3> counts{2521, 4652, 666};
   for (std::size_t i = 0; i < 3; ++i) {
-    const auto [a, b, c] = tri::ch06::tinyrenderer_triangles[i];
+    const auto [a, b, c] = tri::ch02::tinyrenderer_triangles[i].vertices;
     const PixelSet expected = inclusive_pixels(a, b, c, 200, 200);
     CHECK(expected.size() == counts[i]);
     CHECK(filled_pixels<double>({a, b, c}, 200, 200) == expected);

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "chapters/02_wireframe/example_triangles.hpp"
 #include "chapters/05_edge_function/bounding_box.hpp"
 #include "chapters/06_barycentric/barycentric.hpp"
 #include "chapters/06_barycentric/examples.hpp"
@@ -19,6 +20,7 @@ using tri::Color;
 using tri::LabelPlace;
 using tri::PixelDiagram;
 using tri::PixelMark;
+using tri::ch02::tinyrenderer_triangles;
 using tri::ch06::PixelTriangle;
 namespace dc = tri::diagram_colors;
 
@@ -71,15 +73,15 @@ PixelDiagram scene_diagram(const std::string& title) {
 }
 
 // Step 1: each triangle over its bounding box, the pixels the loop visits.
-std::string bounding_boxes_figure() {
+tri::SvgFigure bounding_boxes_figure() {
   PixelDiagram d = scene_diagram("Every pixel of each bounding box is tested; few are drawn");
   Canvas drawn(200, 200);
   for (std::size_t i = 0; i < 3; ++i) {
-    const auto [a, b, c] = tri::ch06::tinyrenderer_triangles[i];
+    const auto [a, b, c] = tinyrenderer_triangles[i].vertices;
     tri::ch06::fill_triangle_barycentric<double>(drawn, a, b, c, tinyrenderer_colors[i]);
   }
   for (std::size_t i = 0; i < 3; ++i) {
-    const auto& t = tri::ch06::tinyrenderer_triangles[i];
+    const auto& t = tinyrenderer_triangles[i].vertices;
     const auto box = box_pixels(t, 200, 200);
     d.fill(box, box_colors[i]);
     d.legend_fill(std::string(tinyrenderer_names[i]) + " box: " + std::to_string(box.size()) +
@@ -90,38 +92,40 @@ std::string bounding_boxes_figure() {
                   tinyrenderer_colors[i]);
   }
   d.fill_from(drawn, tri::colors::black);
-  for (const auto& [a, b, c] : tri::ch06::tinyrenderer_triangles) {
+  for (const auto& triangle : tinyrenderer_triangles) {
+    const auto& [a, b, c] = triangle.vertices;
     d.triangle(at(a), at(b), at(c), dc::black, 1);
   }
   d.legend_line("ideal triangle edges", dc::black);
-  return d.svg();
+  return tri::SvgFigure{"06_bounding_boxes", d.svg()};
 }
 
 // Step 4: the three triangles filled, as tinyrenderer shows them.
-std::string tinyrenderer_figure() {
+tri::SvgFigure tinyrenderer_figure() {
   PixelDiagram d = scene_diagram("tinyrenderer's three triangles filled by barycentric weights");
   Canvas canvas(200, 200);
   for (std::size_t i = 0; i < 3; ++i) {
-    const auto& t = tri::ch06::tinyrenderer_triangles[i];
+    const auto& t = tinyrenderer_triangles[i].vertices;
     tri::ch06::fill_triangle_barycentric<double>(canvas, t[0], t[1], t[2], tinyrenderer_colors[i]);
   }
   d.fill_from(canvas, tri::colors::black);
   for (std::size_t i = 0; i < 3; ++i) {
-    const auto& t = tri::ch06::tinyrenderer_triangles[i];
+    const auto& t = tinyrenderer_triangles[i].vertices;
     d.triangle(at(t[0]), at(t[1]), at(t[2]), dc::black, 1);
     d.legend_fill(std::string(tinyrenderer_names[i]) + " " + triangle_text(t) + ": " +
                       std::to_string(pixels_of(canvas, tinyrenderer_colors[i]).size()) + " pixels",
                   tinyrenderer_colors[i]);
   }
   d.legend_line("ideal triangle edges", dc::black);
-  return d.svg();
+  return tri::SvgFigure{"06_tinyrenderer_triangles", d.svg()};
 }
 
 // Step 5: the same triangles, each pixel a blend of red, green and blue by its weights.
-std::string weights_figure() {
+tri::SvgFigure weights_figure() {
   PixelDiagram d = scene_diagram("Each pixel coloured wA red + wB green + wC blue");
   Canvas canvas(200, 200);
-  for (const auto& [a, b, c] : tri::ch06::tinyrenderer_triangles) {
+  for (const auto& triangle : tinyrenderer_triangles) {
+    const auto& [a, b, c] = triangle.vertices;
     tri::ch06::fill_triangle_with_weights(canvas, a, b, c, tri::colors::red, tri::colors::green,
                                           tri::colors::blue);
   }
@@ -135,7 +139,8 @@ std::string weights_figure() {
     }
   }
   d.fill_from(canvas, tri::colors::black);
-  for (const auto& t : tri::ch06::tinyrenderer_triangles) {
+  for (const auto& triangle : tinyrenderer_triangles) {
+    const auto& t = triangle.vertices;
     d.triangle(at(t[0]), at(t[1]), at(t[2]), dc::black, 1);
     const std::array<const char*, 3> names{"A", "B", "C"};
     for (std::size_t k = 0; k < 3; ++k) {
@@ -150,12 +155,12 @@ std::string weights_figure() {
   d.legend_note(
       "In between, the colours mix in proportion to the three weights (shown in 16 "
       "levels per channel).");
-  return d.svg();
+  return tri::SvgFigure{"06_barycentric_weights", d.svg()};
 }
 
 // Step 3: zero-area triangles without the guard: the box the loop visits, what the NaN weights
 // let through, the ideal segment. The guarded version draws nothing here.
-std::string zero_area_unguarded_figure() {
+tri::SvgFigure zero_area_unguarded_figure() {
   const std::array<PixelTriangle, 4> degenerate{{
       {{{1, 1}, {3, 2}, {9, 5}}},     // diagonal, direction (2, 1)
       {{{1, 8}, {10, 8}, {5, 8}}},    // horizontal
@@ -198,13 +203,13 @@ std::string zero_area_unguarded_figure() {
   d.legend_note(
       "Without the guard: " + std::to_string(drawn.size()) +
       " pixels drawn. With the guard: " + std::to_string(pixels_of(guarded, marked).size()) + ".");
-  return d.svg();
+  return tri::SvgFigure{"06_zero_area_unguarded", d.svg()};
 }
 
 // The kept triangle of the seeded search, on its 16x16 canvas: where float and double agree, and
 // the one pixel centre on edge BC that only double draws. The vertices are 10^4 pixels away, so
 // their true coordinates go in the legend and the edges are cut to the canvas.
-std::string float_versus_double_figure() {
+tri::SvgFigure float_versus_double_figure() {
   const PixelTriangle& t = tri::ch06::float_double_disagreement;
   Canvas with_float(16, 16), with_double(16, 16);
   tri::ch06::fill_triangle_barycentric<float>(with_float, t[0], t[1], t[2], marked);
@@ -247,12 +252,12 @@ std::string float_versus_double_figure() {
   d.legend_note("double draws " + std::to_string(both.size() + double_only.size()) +
                 " pixels (the exact set), float " +
                 std::to_string(both.size() + float_only.size()) + ".");
-  return d.svg();
+  return tri::SvgFigure{"06_float_vs_double", d.svg()};
 }
 
 // A zero-area triangle 10^7 away, which double leaves empty and float draws because it computes
 // the area as 2^21: the pixel centres float draws on the line and off it.
-std::string float_zero_area_far_away_figure() {
+tri::SvgFigure float_zero_area_far_away_figure() {
   const PixelTriangle& t = tri::ch06::collinear_at_ten_million;
   Canvas with_float(32, 32), with_double(32, 32);
   tri::ch06::fill_triangle_barycentric<float>(with_float, t[0], t[1], t[2], marked);
@@ -281,7 +286,7 @@ std::string float_zero_area_far_away_figure() {
                 " lie far off the canvas.");
   d.legend_note("float draws " + std::to_string(on_line.size() + off_line.size()) +
                 " pixels, double " + std::to_string(pixels_of(with_double, marked).size()) + ".");
-  return d.svg();
+  return tri::SvgFigure{"06_float_zero_area_far_away", d.svg()};
 }
 
 }  // namespace
@@ -295,12 +300,6 @@ int main(int argc, char** argv) {
       "without the guard (06_zero_area_unguarded.svg); the pixel float misses and double keeps\n"
       "(06_float_vs_double.svg); a zero-area triangle 10^7 away that float draws\n"
       "(06_float_zero_area_far_away.svg).",
-      [](tri::FigureWriter& figures) {
-        figures.save_svg("06_bounding_boxes", bounding_boxes_figure());
-        figures.save_svg("06_tinyrenderer_triangles", tinyrenderer_figure());
-        figures.save_svg("06_barycentric_weights", weights_figure());
-        figures.save_svg("06_zero_area_unguarded", zero_area_unguarded_figure());
-        figures.save_svg("06_float_vs_double", float_versus_double_figure());
-        figures.save_svg("06_float_zero_area_far_away", float_zero_area_far_away_figure());
-      });
+      {bounding_boxes_figure, tinyrenderer_figure, weights_figure, zero_area_unguarded_figure,
+       float_versus_double_figure, float_zero_area_far_away_figure});
 }

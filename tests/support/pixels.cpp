@@ -1,6 +1,7 @@
 #include "tests/support/pixels.hpp"
 
 #include <algorithm>
+#include <iterator>
 #include <stdexcept>
 
 namespace tri::testing {
@@ -24,6 +25,45 @@ PixelSet written_pixels(const Canvas& canvas) {
 }
 PixelSet overdrawn_pixels(const Canvas& canvas) {
   return pixels_with_count_above(canvas, 1);
+}
+
+PixelSet minus(const PixelSet& from, const PixelSet& without) {
+  PixelSet rest;
+  std::set_difference(from.begin(), from.end(), without.begin(), without.end(),
+                      std::inserter(rest, rest.end()));
+  return rest;
+}
+
+PixelSet intersection(const PixelSet& a, const PixelSet& b) {
+  PixelSet both;
+  std::set_intersection(a.begin(), a.end(), b.begin(), b.end(), std::inserter(both, both.end()));
+  return both;
+}
+
+PixelSet united(const PixelSet& a, const PixelSet& b) {
+  PixelSet all = a;
+  all.insert(b.begin(), b.end());
+  return all;
+}
+
+PixelSet symmetric_difference(const PixelSet& a, const PixelSet& b) {
+  PixelSet either;
+  std::set_symmetric_difference(a.begin(), a.end(), b.begin(), b.end(),
+                                std::inserter(either, either.end()));
+  return either;
+}
+
+std::array<VertexTriple, 6> vertex_orders(glm::ivec2 a, glm::ivec2 b, glm::ivec2 c) {
+  return {{{a, b, c}, {a, c, b}, {b, a, c}, {b, c, a}, {c, a, b}, {c, b, a}}};
+}
+
+std::array<VertexTriple, 6> vertex_orders(const VertexTriple& t) {
+  return vertex_orders(t[0], t[1], t[2]);
+}
+
+std::int64_t doubled_area(glm::ivec2 a, glm::ivec2 b, glm::ivec2 c) {
+  return (static_cast<std::int64_t>(b.x) - a.x) * (static_cast<std::int64_t>(c.y) - a.y) -
+         (static_cast<std::int64_t>(c.x) - a.x) * (static_cast<std::int64_t>(b.y) - a.y);
 }
 
 PixelSet inclusive_pixels(glm::ivec2 a, glm::ivec2 b, glm::ivec2 c, int width, int height) {

@@ -1,7 +1,9 @@
 /// @file
-/// Helpers the tests share: pixel sets read back from a canvas, and a portable random generator.
+/// Helpers the tests share: pixel sets read back from a canvas and their algebra, the six orders
+/// of a triangle's vertices, and a portable random generator.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <set>
 #include <utility>
@@ -21,6 +23,36 @@ PixelSet written_pixels(const Canvas& canvas);
 
 /// Pixels written more than once (the canvas must count writes).
 PixelSet overdrawn_pixels(const Canvas& canvas);
+
+/// The pixels `draw(canvas)` writes on a fresh width x height canvas that counts writes.
+template <typename Draw>
+PixelSet pixels_drawn(int width, int height, Draw&& draw) {
+  Canvas canvas(width, height);
+  canvas.enable_write_counts();
+  draw(canvas);
+  return written_pixels(canvas);
+}
+
+/// The pixels of `from` that are not in `without`.
+PixelSet minus(const PixelSet& from, const PixelSet& without);
+/// The pixels in both sets.
+PixelSet intersection(const PixelSet& a, const PixelSet& b);
+/// The pixels in either set.
+PixelSet united(const PixelSet& a, const PixelSet& b);
+/// The pixels in exactly one of the two sets.
+PixelSet symmetric_difference(const PixelSet& a, const PixelSet& b);
+
+/// A triangle's three integer vertices.
+using VertexTriple = std::array<glm::ivec2, 3>;
+
+/// The six orders in which the three vertices can be passed.
+std::array<VertexTriple, 6> vertex_orders(glm::ivec2 a, glm::ivec2 b, glm::ivec2 c);
+/// The same for a triangle given as an array.
+std::array<VertexTriple, 6> vertex_orders(const VertexTriple& t);
+
+/// Twice the signed area of the triangle abc in exact 64-bit arithmetic: > 0 counter-clockwise
+/// (y up), 0 for collinear vertices.
+std::int64_t doubled_area(glm::ivec2 a, glm::ivec2 b, glm::ivec2 c);
 
 /// The pixel centres inside or on the edges of the triangle abc (integer vertices, either
 /// winding), clipped to a width x height canvas: exact, brute force, with 64-bit cross products.

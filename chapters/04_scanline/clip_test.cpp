@@ -1,4 +1,4 @@
-#include "chapters/04_scanline/spans.hpp"
+#include "chapters/04_scanline/clip.hpp"
 
 #include <catch2/catch.hpp>
 

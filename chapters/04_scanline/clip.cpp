@@ -1,11 +1,11 @@
-#include "chapters/04_scanline/spans.hpp"
+#include "chapters/04_scanline/clip.hpp"
 
 #include <algorithm>
 #include <utility>
 
 namespace tri::ch04 {
 
-RowRange rows_on_canvas(const Canvas& canvas, std::int64_t low, std::int64_t high) noexcept {
+RowsOnCanvas rows_on_canvas(const Canvas& canvas, std::int64_t low, std::int64_t high) noexcept {
   return {std::max<std::int64_t>(low, 0), std::min<std::int64_t>(high, canvas.height() - 1)};
 }
 

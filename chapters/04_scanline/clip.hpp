@@ -10,15 +10,15 @@
 
 namespace tri::ch04 {
 
-/// Rows first <= y <= last, both on the canvas; empty when first > last.
-struct RowRange {
+/// The rows first <= y <= last of a range that lie on the canvas; empty when first > last.
+struct RowsOnCanvas {
   std::int64_t first;
   std::int64_t last;
 };
 
 /// The rows of [low, high] that lie on the canvas, so a loop over a triangle with vertices at
 /// ±2^30 visits at most canvas.height() rows instead of two billion.
-RowRange rows_on_canvas(const Canvas& canvas, std::int64_t low, std::int64_t high) noexcept;
+RowsOnCanvas rows_on_canvas(const Canvas& canvas, std::int64_t low, std::int64_t high) noexcept;
 
 /// Sets the pixels of row y from x = a to x = b, both ends included, in whichever order a and b
 /// come (the article's `if (A.x > B.x) swap`). The span is clipped to the canvas first, so
