@@ -1,7 +1,12 @@
 // Chapter 10's figures: how much of each pixel a triangle covers, exactly, as diagrams.
+#include <array>
+#include <cmath>
+#include <cstdio>
 #include <string>
 
+#include "chapters/07_exact_coverage/coverage_oracle.hpp"
 #include "chapters/10_coverage/area_oracle.hpp"
+#include "chapters/10_coverage/sampling.hpp"
 #include "common/figures.hpp"
 #include "common/pixel_diagram.hpp"
 
@@ -47,12 +52,66 @@ tri::SvgFigure exact_coverage_figure() {
   return {"10_exact_coverage", d.svg()};
 }
 
+// One panel: the pattern's samples in every pixel, blue inside the triangle and grey outside,
+// each pixel shaded by the fraction of its samples inside.
+tri::PixelDiagram samples_panel(const tri::Triangle& t, const tri::ch10::SamplePattern& pattern,
+                                const std::string& title) {
+  tri::PixelDiagram d({0, 0}, {7, 2}, title, 48);
+  d.show_centres(false);
+  const tri::Triangle scaled = {{t[0] * 32.0, t[1] * 32.0, t[2] * 32.0}};
+  double error_sum = 0;
+  int touched = 0;
+  for (int y = 0; y <= 2; ++y) {
+    for (int x = 0; x <= 7; ++x) {
+      const double sampled = tri::ch10::sampled_coverage(t, {x, y}, pattern);
+      const double exact = tri::ch10::exact_coverage(t, {x, y}).to_double();
+      d.fill({x, y}, shade(sampled));
+      for (const glm::ivec2 offset : pattern.offsets) {
+        const glm::ivec2 sample = glm::ivec2{x, y} * 32 + offset;
+        const bool inside = tri::ch07::oracle_covers(scaled, sample);
+        d.point(glm::dvec2(sample) / 32.0, inside ? dc::blue : dc::dark_gray, inside ? 3 : 2);
+      }
+      if (exact > 0 && exact < 1) {
+        d.pixel_text({x, y}, std::to_string(static_cast<int>(std::lround(sampled * 16))) + "/16",
+                     dc::black);
+      }
+      if (sampled > 0 || exact > 0) {
+        error_sum += std::abs(sampled - exact);
+        ++touched;
+      }
+    }
+  }
+  d.triangle(t[0], t[1], t[2], dc::vermillion);
+  d.legend_fill("shade = fraction of samples inside", shade(0.5));
+  d.legend_line("the triangle's edge", dc::vermillion);
+  d.legend_note("Numbers: samples inside, on the pixels the edge crosses.");
+  char note[96];
+  std::snprintf(note, sizeof note, "Mean |sampled - exact| over %d pixels: %.3f", touched,
+                error_sum / touched);
+  d.legend_note(note);
+  return d;
+}
+
+tri::SvgFigure sample_patterns_figure() {
+  // A nearly horizontal edge, 1.5 degrees off, with the other two edges far outside: a grid's
+  // samples stand in 4 rows, so the edge row's coverage moves in steps of 4/16; the rotated
+  // pattern's stand in 16 rows.
+  const tri::Triangle t = {{{-4, 1.125}, {12, 1.54296875}, {-4, 30}}};
+  const std::array<tri::PixelDiagram, 2> panels = {
+      samples_panel(t, tri::ch10::regular_grid(4), "4 x 4 regular grid"),
+      samples_panel(t, tri::ch10::standard_pattern(16), "Standard 16-sample pattern")};
+  return {
+      "10_sample_patterns",
+      tri::side_by_side(panels, "Sixteen samples per pixel on an edge 1.5 degrees off horizontal")};
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   return tri::run_chapter_program(
       argc, argv, "10_coverage",
       "Chapter 10, how much of each pixel: the exact coverage of every pixel a triangle touches\n"
-      "(10_exact_coverage.svg).",
-      {exact_coverage_figure});
+      "(10_exact_coverage.svg); sixteen samples per pixel as a regular grid and as the standard\n"
+      "rotated pattern on a nearly horizontal edge (10_sample_patterns.svg).",
+      {exact_coverage_figure, sample_patterns_figure});
 }
