@@ -81,6 +81,21 @@ void RowCells::add_to_canvas(CoverageCanvas& canvas, int y) const {
 }
 // [/listing]
 
+// [listing add_edges_in_row]
+void add_edges_in_row(RowCells& cells, const Triangle& counter_clockwise, int row) {
+  for (int k = 0; k < 3; ++k) {
+    const glm::dvec2 a = counter_clockwise[k], b = counter_clockwise[(k + 1) % 3];
+    if (a.y == b.y) continue;  // a horizontal edge adds no height
+    const double low = std::max(std::min(a.y, b.y), row - 0.5);
+    const double high = std::min(std::max(a.y, b.y), row + 0.5);
+    if (low >= high) continue;
+    // The edge's part in this row, walked in the edge's own direction.
+    const double y0 = a.y < b.y ? low : high, y1 = a.y < b.y ? high : low;
+    cells.add_segment(x_at(a, b, y0), y0, x_at(a, b, y1), y1);
+  }
+}
+// [/listing]
+
 // [listing draw_triangle_area]
 void draw_triangle_area(CoverageCanvas& canvas, const Triangle& triangle, RowCells& cells) {
   Triangle t = triangle;
@@ -96,16 +111,7 @@ void draw_triangle_area(CoverageCanvas& canvas, const Triangle& triangle, RowCel
   const int last = std::clamp(column_of(high_x), 0, canvas.width() - 1);
   for (int row = first_row; row <= last_row; ++row) {
     cells.start_row(canvas.width(), first, last);
-    for (int k = 0; k < 3; ++k) {
-      const glm::dvec2 a = t[k], b = t[(k + 1) % 3];
-      if (a.y == b.y) continue;  // a horizontal edge adds no height
-      const double low = std::max(std::min(a.y, b.y), row - 0.5);
-      const double high = std::min(std::max(a.y, b.y), row + 0.5);
-      if (low >= high) continue;
-      // The edge's part in this row, walked in the edge's own direction.
-      const double y0 = a.y < b.y ? low : high, y1 = a.y < b.y ? high : low;
-      cells.add_segment(x_at(a, b, y0), y0, x_at(a, b, y1), y1);
-    }
+    add_edges_in_row(cells, t, row);
     cells.add_to_canvas(canvas, row);
   }
 }

@@ -26,6 +26,10 @@ class RowCells {
   /// of covers from the left plus each cell's own area, negated for a counter-clockwise outline.
   void add_to_canvas(CoverageCanvas& canvas, int y) const;
 
+  /// What the row's edges left in a column since start_row (for figures and tests).
+  double area(int column) const { return area_[static_cast<std::size_t>(column)]; }
+  double cover(int column) const { return cover_[static_cast<std::size_t>(column)]; }
+
  private:
   void add_piece(int column, double xa, double ya, double xb, double yb);
 
@@ -33,6 +37,10 @@ class RowCells {
   std::vector<double> area_;
   std::vector<double> cover_;
 };
+
+/// Adds the parts of a counter-clockwise triangle's three edges that lie in pixel row `row` (the
+/// band row - 1/2 <= y <= row + 1/2) to the row's cells.
+void add_edges_in_row(RowCells& cells, const Triangle& counter_clockwise, int row);
 
 /// Step 4 · adds the triangle's coverage of every canvas pixel it reaches: for each pixel row,
 /// the three edges' parts go into the row's cells, then one sum along the row. Agrees with step
