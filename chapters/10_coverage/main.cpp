@@ -1,7 +1,13 @@
 // Chapter 10's figures: how much of each pixel a triangle covers, exactly, as diagrams.
+#include <array>
+#include <cmath>
+#include <cstdio>
 #include <string>
 
+#include "chapters/07_exact_coverage/coverage_oracle.hpp"
+#include "chapters/10_coverage/area_cells.hpp"
 #include "chapters/10_coverage/area_oracle.hpp"
+#include "chapters/10_coverage/sampling.hpp"
 #include "common/figures.hpp"
 #include "common/pixel_diagram.hpp"
 
@@ -47,12 +53,106 @@ tri::SvgFigure exact_coverage_figure() {
   return {"10_exact_coverage", d.svg()};
 }
 
+// One panel: the pattern's samples in every pixel, blue inside the triangle and grey outside,
+// each pixel shaded by the fraction of its samples inside.
+tri::PixelDiagram samples_panel(const tri::Triangle& t, const tri::ch10::SamplePattern& pattern,
+                                const std::string& title) {
+  tri::PixelDiagram d({0, 0}, {7, 2}, title, 48);
+  d.show_centres(false);
+  const tri::Triangle scaled = {{t[0] * 32.0, t[1] * 32.0, t[2] * 32.0}};
+  double error_sum = 0;
+  int touched = 0;
+  for (int y = 0; y <= 2; ++y) {
+    for (int x = 0; x <= 7; ++x) {
+      const double sampled = tri::ch10::sampled_coverage(t, {x, y}, pattern);
+      const double exact = tri::ch10::exact_coverage(t, {x, y}).to_double();
+      d.fill({x, y}, shade(sampled));
+      for (const glm::ivec2 offset : pattern.offsets) {
+        const glm::ivec2 sample = glm::ivec2{x, y} * 32 + offset;
+        const bool inside = tri::ch07::oracle_covers(scaled, sample);
+        d.point(glm::dvec2(sample) / 32.0, inside ? dc::blue : dc::dark_gray, inside ? 3 : 2);
+      }
+      if (exact > 0 && exact < 1) {
+        d.pixel_text({x, y}, std::to_string(static_cast<int>(std::lround(sampled * 16))) + "/16",
+                     dc::black);
+      }
+      if (sampled > 0 || exact > 0) {
+        error_sum += std::abs(sampled - exact);
+        ++touched;
+      }
+    }
+  }
+  d.triangle(t[0], t[1], t[2], dc::vermillion);
+  d.legend_fill("shade = fraction of samples inside", shade(0.5));
+  d.legend_line("the triangle's edge", dc::vermillion);
+  d.legend_note("Numbers: samples inside, on the pixels the edge crosses.");
+  char note[96];
+  std::snprintf(note, sizeof note, "Mean |sampled - exact| over %d pixels: %.3f", touched,
+                error_sum / touched);
+  d.legend_note(note);
+  return d;
+}
+
+tri::SvgFigure sample_patterns_figure() {
+  // A nearly horizontal edge, 1.5 degrees off, with the other two edges far outside: a grid's
+  // samples stand in 4 rows, so the edge row's coverage moves in steps of 4/16; the rotated
+  // pattern's stand in 16 rows.
+  const tri::Triangle t = {{{-4, 1.125}, {12, 1.54296875}, {-4, 30}}};
+  const std::array<tri::PixelDiagram, 2> panels = {
+      samples_panel(t, tri::ch10::regular_grid(4), "4 x 4 regular grid"),
+      samples_panel(t, tri::ch10::standard_pattern(16), "Standard 16-sample pattern")};
+  return {
+      "10_sample_patterns",
+      tri::side_by_side(panels, "Sixteen samples per pixel on an edge 1.5 degrees off horizontal")};
+}
+
+// Two decimals without the leading zero ("0.25" -> ".25", "-0.5" -> "-.50"), to fit a cell.
+std::string short_decimal(double v) {
+  char text[16];
+  std::snprintf(text, sizeof text, "%.2f", v);
+  std::string s = text;
+  if (s.rfind("0.", 0) == 0) s.erase(0, 1);
+  if (s.rfind("-0.", 0) == 0) s.erase(1, 1);
+  return s == "-.00" ? ".00" : s;
+}
+
+tri::SvgFigure row_cells_figure() {
+  // Row 0 of a counter-clockwise triangle whose two slanted edges cross it: what each cell gets.
+  const tri::Triangle t = {{{0.75, -2.5}, {6.25, -2.5}, {2.5, 3.5}}};
+  tri::ch10::RowCells cells;
+  cells.start_row(8, 0, 7);
+  tri::ch10::add_edges_in_row(cells, t, 0);
+  tri::PixelDiagram d({0, -1}, {7, 1},
+                      "One pixel row of cells: each keeps an area, and passes a cover on", 72);
+  d.show_centres(false);
+  double cover = 0;
+  for (int x = 0; x <= 7; ++x) {
+    cover += cells.cover(x);
+    const double coverage = -(cover + cells.area(x));
+    d.fill({x, 0}, shade(coverage));
+    d.label({x - 0.45, 0.28}, "a " + short_decimal(cells.area(x)), LabelPlace::right);
+    d.label({x - 0.45, 0.0}, "c " + short_decimal(cover), LabelPlace::right);
+    d.label({x - 0.45, -0.28}, "= " + short_decimal(coverage), LabelPlace::right);
+  }
+  d.frame({0, 0}, {7, 0}, dc::black, 2.5);
+  d.triangle(t[0], t[1], t[2], dc::vermillion);
+  d.legend_fill("row 0, shaded by coverage", shade(0.6));
+  d.legend_line("the triangle, counter-clockwise", dc::vermillion);
+  d.legend_note("a: what a cell keeps, the signed height of the edge piece inside it times the");
+  d.legend_note("distance from the piece to the cell's right side. c: the signed heights of all");
+  d.legend_note("pieces left of the cell. The left edge runs down (height -1), the right edge up");
+  d.legend_note("(+1): c is -1 between them, 0 outside. Coverage (=) is -(c + a).");
+  return {"10_row_cells", d.svg()};
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   return tri::run_chapter_program(
       argc, argv, "10_coverage",
       "Chapter 10, how much of each pixel: the exact coverage of every pixel a triangle touches\n"
-      "(10_exact_coverage.svg).",
-      {exact_coverage_figure});
+      "(10_exact_coverage.svg); sixteen samples per pixel as a regular grid and as the standard\n"
+      "rotated pattern on a nearly horizontal edge (10_sample_patterns.svg); one pixel row of\n"
+      "cells with the area and cover its edges leave (10_row_cells.svg).",
+      {exact_coverage_figure, sample_patterns_figure, row_cells_figure});
 }

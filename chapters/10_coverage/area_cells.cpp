@@ -1,0 +1,120 @@
+#include "chapters/10_coverage/area_cells.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace tri::ch10 {
+namespace {
+
+// Pixel i spans [i - 1/2, i + 1/2): the column an x lies in.
+int column_of(double x) {
+  return static_cast<int>(std::floor(x + 0.5));
+}
+
+// x on the line through a and b at height y (a.y != b.y).
+double x_at(glm::dvec2 a, glm::dvec2 b, double y) {
+  return a.x + (y - a.y) * (b.x - a.x) / (b.y - a.y);
+}
+
+}  // namespace
+
+void RowCells::start_row(int width, int first, int last) {
+  width_ = width;
+  first_ = first;
+  last_ = last;
+  if (area_.size() < static_cast<std::size_t>(width) + 1) {
+    area_.resize(static_cast<std::size_t>(width) + 1);
+    cover_.resize(static_cast<std::size_t>(width) + 1);
+  }
+  std::fill(area_.begin() + first, area_.begin() + last + 2, 0.0);
+  std::fill(cover_.begin() + first, cover_.begin() + last + 2, 0.0);
+}
+
+// [listing add_piece]
+// A piece of an edge inside one cell: the area between it and the cell's right side goes to the
+// cell, and its height to the covers of the cells to its right. Left of the canvas only the cover
+// matters (it reaches column 0); right of the canvas nothing does.
+void RowCells::add_piece(int column, double xa, double ya, double xb, double yb) {
+  const double height = yb - ya;
+  if (column < 0) {
+    cover_[0] += height;
+  } else if (column < width_) {
+    area_[column] += height * ((column + 0.5) - (xa + xb) / 2);
+    cover_[column + 1] += height;
+  }
+}
+// [/listing]
+
+void RowCells::add_segment(double x0, double y0, double x1, double y1) {
+  // Clip the walk to the columns that matter: everything left of the canvas is one cover.
+  const double left = -0.5, right = width_ - 0.5;
+  if (x0 < left && x1 < left) return add_piece(-1, x0, y0, x1, y1);
+  if (x0 >= right && x1 >= right) return;
+  if (x0 == x1) return add_piece(std::clamp(column_of(x0), -1, width_), x0, y0, x1, y1);
+  const int step = x1 > x0 ? 1 : -1;
+  int column = column_of(x0);
+  if (step < 0 && x0 == column - 0.5) --column;  // leaving leftwards from a cell's left side
+  int last = column_of(x1);
+  if (step > 0 && x1 == last - 0.5) --last;  // arriving at a cell's left side from the left
+  column = std::clamp(column, -1, width_);
+  last = std::clamp(last, -1, width_);
+  double xs = x0, ys = y0;
+  while (column != last) {
+    const double side = step > 0 ? column + 0.5 : column - 0.5;  // the side it leaves through
+    const double y_side = y0 + (side - x0) * (y1 - y0) / (x1 - x0);
+    add_piece(column, xs, ys, side, y_side);
+    xs = side;
+    ys = y_side;
+    column += step;
+  }
+  add_piece(column, xs, ys, x1, y1);
+}
+
+// [listing add_to_canvas]
+void RowCells::add_to_canvas(CoverageCanvas& canvas, int y) const {
+  double cover = 0;  // the heights of the edge pieces left of the column
+  for (int x = first_; x <= last_; ++x) {
+    cover += cover_[x];
+    const double coverage = -(cover + area_[x]);  // a counter-clockwise outline sums to -area
+    if (coverage != 0) canvas.add(x, y, static_cast<float>(coverage));
+  }
+}
+// [/listing]
+
+// [listing add_edges_in_row]
+void add_edges_in_row(RowCells& cells, const Triangle& counter_clockwise, int row) {
+  for (int k = 0; k < 3; ++k) {
+    const glm::dvec2 a = counter_clockwise[k], b = counter_clockwise[(k + 1) % 3];
+    if (a.y == b.y) continue;  // a horizontal edge adds no height
+    const double low = std::max(std::min(a.y, b.y), row - 0.5);
+    const double high = std::min(std::max(a.y, b.y), row + 0.5);
+    if (low >= high) continue;
+    // The edge's part in this row, walked in the edge's own direction.
+    const double y0 = a.y < b.y ? low : high, y1 = a.y < b.y ? high : low;
+    cells.add_segment(x_at(a, b, y0), y0, x_at(a, b, y1), y1);
+  }
+}
+// [/listing]
+
+// [listing draw_triangle_area]
+void draw_triangle_area(CoverageCanvas& canvas, const Triangle& triangle, RowCells& cells) {
+  Triangle t = triangle;
+  const double doubled =
+      (t[1].x - t[0].x) * (t[2].y - t[0].y) - (t[2].x - t[0].x) * (t[1].y - t[0].y);
+  if (!std::isfinite(doubled) || doubled == 0) return;
+  if (doubled < 0) std::swap(t[1], t[2]);  // counter-clockwise, so every area has one sign
+  const auto [low_y, high_y] = std::minmax({t[0].y, t[1].y, t[2].y});
+  const auto [low_x, high_x] = std::minmax({t[0].x, t[1].x, t[2].x});
+  const int first_row = std::max(0, column_of(low_y));
+  const int last_row = std::min(canvas.height() - 1, column_of(high_y));
+  const int first = std::clamp(column_of(low_x), 0, canvas.width() - 1);
+  const int last = std::clamp(column_of(high_x), 0, canvas.width() - 1);
+  for (int row = first_row; row <= last_row; ++row) {
+    cells.start_row(canvas.width(), first, last);
+    add_edges_in_row(cells, t, row);
+    cells.add_to_canvas(canvas, row);
+  }
+}
+// [/listing]
+
+}  // namespace tri::ch10

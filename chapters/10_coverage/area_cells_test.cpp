@@ -1,0 +1,103 @@
+#include "chapters/10_coverage/area_cells.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <vector>
+
+#include "chapters/10_coverage/area_oracle.hpp"
+#include "common/random.hpp"
+
+using tri::Triangle;
+using tri::ch10::CoverageCanvas;
+using tri::ch10::draw_triangle_area;
+using tri::ch10::exact_coverage;
+using tri::ch10::RowCells;
+
+namespace {
+
+// The largest |canvas - exact| over every pixel of the canvas, for one triangle drawn alone.
+double largest_difference(const Triangle& t, int width, int height) {
+  CoverageCanvas canvas(width, height);
+  RowCells cells;
+  draw_triangle_area(canvas, t, cells);
+  double largest = 0;
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      const double exact = exact_coverage(t, {x, y}).to_double();
+      largest = std::max(largest, std::abs(canvas.at(x, y) - exact));
+    }
+  }
+  return largest;
+}
+
+Triangle random_triangle(tri::Random& random, int low, int high) {
+  Triangle t;
+  for (auto& v : t) v = {random.integer(low, high) / 256.0, random.integer(low, high) / 256.0};
+  return t;
+}
+
+}  // namespace
+
+TEST_CASE("The row cells give each pixel the exact area, within a float's rounding",
+          "[10_coverage][step4]") {
+  tri::Random random(42);
+  for (int trial = 0; trial < 300; ++trial) {
+    const Triangle t = random_triangle(random, -2 * 256, 14 * 256);
+    INFO("trial " << trial << ": (" << t[0].x << ", " << t[0].y << ") (" << t[1].x << ", " << t[1].y
+                  << ") (" << t[2].x << ", " << t[2].y << ")");
+    // Well within one unit of the 16-bit output, 1/65535.
+    CHECK(largest_difference(t, 12, 12) < 1e-6);
+  }
+}
+
+TEST_CASE("Edges on pixel sides, vertical and horizontal edges, and vertices on corners",
+          "[10_coverage][step4]") {
+  const std::vector<Triangle> cases = {
+      {{{-0.5, -0.5}, {3.5, -0.5}, {-0.5, 3.5}}},  // sides and corners of pixels
+      {{{1, 1}, {1, 6}, {5, 1}}},                  // vertical and horizontal through centres
+      {{{0.5, 0.5}, {4.5, 0.5}, {0.5, 4.5}}},      // vertices on pixel corners
+      {{{2, -3}, {2.00390625, 9}, {-4, 3}}},       // a near-vertical edge, off the canvas
+      {{{-30, -30}, {40, -29.5}, {5, 40}}},        // larger than the canvas on every side
+      {{{3.25, 3.25}, {3.5, 3.25}, {3.25, 3.5}}},  // inside one pixel
+      {{{0, 0}, {7.99609375, 0.00390625}, {0, 0.0078125}}},  // a sliver along a row
+  };
+  for (const auto& t : cases) {
+    INFO("(" << t[0].x << ", " << t[0].y << ") (" << t[1].x << ", " << t[1].y << ") (" << t[2].x
+             << ", " << t[2].y << ")");
+    CHECK(largest_difference(t, 8, 8) < 1e-6);
+    // Either winding gives the same picture.
+    CHECK(largest_difference({{t[0], t[2], t[1]}}, 8, 8) < 1e-6);
+  }
+}
+
+TEST_CASE("A zero-area or non-finite triangle adds nothing", "[10_coverage][step4]") {
+  CoverageCanvas canvas(4, 4);
+  RowCells cells;
+  draw_triangle_area(canvas, {{{0, 0}, {2, 2}, {3, 3}}}, cells);
+  draw_triangle_area(canvas, {{{0, 0}, {NAN, 2}, {3, 0}}}, cells);
+  draw_triangle_area(canvas, {{{0, 0}, {INFINITY, 2}, {3, 0}}}, cells);
+  for (int y = 0; y < 4; ++y) {
+    for (int x = 0; x < 4; ++x) CHECK(canvas.at(x, y) == 0.0f);
+  }
+}
+
+TEST_CASE("The 16-bit PGM of a coverage canvas: header, top row first, big-endian, rounded",
+          "[10_coverage][step4]") {
+  CoverageCanvas canvas(2, 2);
+  canvas.add(0, 1, 1.0f);   // top left: full
+  canvas.add(1, 1, 0.5f);   // top right: 32767.5 rounds up
+  canvas.add(0, 0, 1.75f);  // bottom left: clamped to 1
+  const std::string pgm = canvas.pgm_16();
+  const std::string header = "P5\n2 2\n65535\n";
+  REQUIRE(pgm.size() == header.size() + 8);
+  CHECK(pgm.substr(0, header.size()) == header);
+  const auto value = [&](int k) {
+    return (static_cast<unsigned char>(pgm[header.size() + 2 * k]) << 8) |
+           static_cast<unsigned char>(pgm[header.size() + 2 * k + 1]);
+  };
+  CHECK(value(0) == 65535);
+  CHECK(value(1) == 32768);
+  CHECK(value(2) == 65535);
+  CHECK(value(3) == 0);
+}

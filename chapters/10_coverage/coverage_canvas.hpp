@@ -1,0 +1,41 @@
+/// @file
+/// A canvas of coverage: for every pixel, how much of it the triangles drawn so far cover, summed.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace tri::ch10 {
+
+/// Coverage values per pixel, row-major with row 0 at the bottom (y up, as the canvas). Each
+/// value is the sum of the coverages added to it (1 is a full pixel). A float holds every
+/// sampled coverage (k / n^2, n <= 16) exactly and an area to better than 1/65535.
+class CoverageCanvas {
+ public:
+  /// A canvas of width x height pixels, all 0 (throws std::invalid_argument unless both > 0).
+  CoverageCanvas(int width, int height);
+
+  int width() const noexcept { return width_; }
+  int height() const noexcept { return height_; }
+  float at(int x, int y) const { return values_[index(x, y)]; }
+  /// Adds c to pixel (x, y), which must lie on the canvas.
+  void add(int x, int y, float c) { values_[index(x, y)] += c; }
+
+  /// The canvas as a 16-bit binary PGM (P5, maxval 65535, big-endian, top row first): each
+  /// value clamped to [0, 1] and stored as round(65535 x value).
+  std::string pgm_16() const;
+
+ private:
+  std::size_t index(int x, int y) const noexcept {
+    return static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) +
+           static_cast<std::size_t>(x);
+  }
+
+  int width_;
+  int height_;
+  std::vector<float> values_;
+};
+
+}  // namespace tri::ch10
