@@ -71,12 +71,17 @@ void RowCells::add_segment(double x0, double y0, double x1, double y1) {
 }
 
 // [listing add_to_canvas]
-void RowCells::add_to_canvas(CoverageCanvas& canvas, int y) const {
+void RowCells::add_to_canvas(CoverageCanvas& canvas, int y, Blend blend) const {
   double cover = 0;  // the heights of the edge pieces left of the column
   for (int x = first_; x <= last_; ++x) {
     cover += cover_[x];
     const double coverage = -(cover + area_[x]);  // a counter-clockwise outline sums to -area
-    if (coverage != 0) canvas.add(x, y, static_cast<float>(coverage));
+    if (coverage == 0) continue;
+    if (blend == Blend::sum) {
+      canvas.add(x, y, static_cast<float>(coverage));
+    } else {
+      canvas.over(x, y, static_cast<float>(coverage));
+    }
   }
 }
 // [/listing]
@@ -97,7 +102,8 @@ void add_edges_in_row(RowCells& cells, const Triangle& counter_clockwise, int ro
 // [/listing]
 
 // [listing draw_triangle_area]
-void draw_triangle_area(CoverageCanvas& canvas, const Triangle& triangle, RowCells& cells) {
+void draw_triangle_area(CoverageCanvas& canvas, const Triangle& triangle, RowCells& cells,
+                        Blend blend) {
   Triangle t = triangle;
   const double doubled =
       (t[1].x - t[0].x) * (t[2].y - t[0].y) - (t[2].x - t[0].x) * (t[1].y - t[0].y);
@@ -112,9 +118,13 @@ void draw_triangle_area(CoverageCanvas& canvas, const Triangle& triangle, RowCel
   for (int row = first_row; row <= last_row; ++row) {
     cells.start_row(canvas.width(), first, last);
     add_edges_in_row(cells, t, row);
-    cells.add_to_canvas(canvas, row);
+    cells.add_to_canvas(canvas, row, blend);
   }
 }
 // [/listing]
+
+void draw_triangle_area_over(CoverageCanvas& canvas, const Triangle& triangle, RowCells& cells) {
+  draw_triangle_area(canvas, triangle, cells, Blend::over);
+}
 
 }  // namespace tri::ch10

@@ -11,6 +11,12 @@
 
 namespace tri::ch10 {
 
+/// How a triangle's coverage joins what the canvas already holds.
+enum class Blend {
+  sum,  ///< added: the triangles of a mesh add up to exactly 1 per pixel
+  over  ///< composited as alpha, v + c (1 - v): what drawing with coverage as opacity does
+};
+
 /// One pixel row's cells: for each column, the area its edges leave on their right inside it,
 /// and the height of the edges left of it ("cover"), which counts for its whole width. Kept
 /// between triangles so drawing allocates nothing once the widest row has been seen.
@@ -24,7 +30,7 @@ class RowCells {
   void add_segment(double x0, double y0, double x1, double y1);
   /// Adds the coverage of the row's columns first..last to row y of the canvas: the running sum
   /// of covers from the left plus each cell's own area, negated for a counter-clockwise outline.
-  void add_to_canvas(CoverageCanvas& canvas, int y) const;
+  void add_to_canvas(CoverageCanvas& canvas, int y, Blend blend = Blend::sum) const;
 
   /// What the row's edges left in a column since start_row (for figures and tests).
   double area(int column) const { return area_[static_cast<std::size_t>(column)]; }
@@ -45,6 +51,11 @@ void add_edges_in_row(RowCells& cells, const Triangle& counter_clockwise, int ro
 /// Step 4 · adds the triangle's coverage of every canvas pixel it reaches: for each pixel row,
 /// the three edges' parts go into the row's cells, then one sum along the row. Agrees with step
 /// 1's exact area to about 1e-12; a zero-area or non-finite triangle adds nothing.
-void draw_triangle_area(CoverageCanvas& canvas, const Triangle& triangle, RowCells& cells);
+void draw_triangle_area(CoverageCanvas& canvas, const Triangle& triangle, RowCells& cells,
+                        Blend blend = Blend::sum);
+
+/// Step 5 · the same coverage composited over the canvas as alpha, one triangle after another,
+/// as a 2-D library does when it draws a mesh's triangles one by one with anti-aliasing on.
+void draw_triangle_area_over(CoverageCanvas& canvas, const Triangle& triangle, RowCells& cells);
 
 }  // namespace tri::ch10

@@ -1,4 +1,5 @@
 #include "chapters/10_coverage/area_oracle.hpp"
+#include "chapters/10_coverage/example_mesh.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -83,28 +84,12 @@ TEST_CASE("The coverages of all pixels add up to exactly the triangle's area",
 
 TEST_CASE("In a mesh the coverages around an interior pixel add up to exactly one",
           "[10_coverage][step1]") {
-  // A 6x6 grid of cells with vertices jittered on the 1/256 grid, each cell split in two.
-  tri::Random random(7);
-  constexpr int cells = 6;
-  std::array<std::array<glm::dvec2, cells + 1>, cells + 1> vertex{};
-  for (int j = 0; j <= cells; ++j) {
-    for (int i = 0; i <= cells; ++i) {
-      const bool border = i == 0 || j == 0 || i == cells || j == cells;
-      const int jx = border ? 0 : random.integer(-90, 90);
-      const int jy = border ? 0 : random.integer(-90, 90);
-      vertex[j][i] = on_grid(2 * i, jx, 2 * j, jy);
-    }
-  }
-  for (int y = 1; y < 2 * cells; ++y) {
-    for (int x = 1; x < 2 * cells; ++x) {
+  // A 6x6 grid of 2-pixel cells from (0, 0), inner vertices jittered on the 1/256 grid.
+  const auto mesh = tri::ch10::jittered_mesh(6, 6, 2, 0.0, 90, 7);
+  for (int y = 1; y < 12; ++y) {
+    for (int x = 1; x < 12; ++x) {
       Fraction sum = 0;
-      for (int j = 0; j < cells; ++j) {
-        for (int i = 0; i < cells; ++i) {
-          const auto a = vertex[j][i], b = vertex[j][i + 1], c = vertex[j + 1][i + 1],
-                     d = vertex[j + 1][i];
-          sum = sum + exact_coverage({{a, b, c}}, {x, y}) + exact_coverage({{a, c, d}}, {x, y});
-        }
-      }
+      for (const auto& t : mesh) sum = sum + exact_coverage(t, {x, y});
       INFO("pixel " << x << ", " << y << ": " << sum.text());
       CHECK(sum == Fraction(1));
     }

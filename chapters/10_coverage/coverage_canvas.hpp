@@ -22,6 +22,12 @@ class CoverageCanvas {
   float at(int x, int y) const { return values_[index(x, y)]; }
   /// Adds c to pixel (x, y), which must lie on the canvas.
   void add(int x, int y, float c) { values_[index(x, y)] += c; }
+  /// Composites coverage c over pixel (x, y) as alpha: v + c (1 - v), the "over" of Porter and
+  /// Duff with the coverage as the new layer's alpha.
+  void over(int x, int y, float c) {
+    float& v = values_[index(x, y)];
+    v += c * (1.0f - v);
+  }
 
   /// The canvas as a 16-bit binary PGM (P5, maxval 65535, big-endian, top row first): each
   /// value clamped to [0, 1] and stored as round(65535 x value).

@@ -3,10 +3,12 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <vector>
 
 #include "chapters/07_exact_coverage/coverage_oracle.hpp"
 #include "chapters/10_coverage/area_cells.hpp"
 #include "chapters/10_coverage/area_oracle.hpp"
+#include "chapters/10_coverage/example_mesh.hpp"
 #include "chapters/10_coverage/sampling.hpp"
 #include "common/figures.hpp"
 #include "common/pixel_diagram.hpp"
@@ -145,6 +147,50 @@ tri::SvgFigure row_cells_figure() {
   return {"10_row_cells", d.svg()};
 }
 
+// One mesh drawn with coverage summed or composited over, the inside's pixels labelled in percent
+// wherever they are not full.
+tri::PixelDiagram mesh_panel(const std::vector<tri::Triangle>& mesh, tri::ch10::Blend blend,
+                             const std::string& title) {
+  tri::ch10::CoverageCanvas canvas(14, 10);
+  tri::ch10::RowCells cells;
+  for (const auto& t : mesh) tri::ch10::draw_triangle_area(canvas, t, cells, blend);
+  tri::PixelDiagram d({0, 0}, {13, 9}, title, 30);
+  d.show_centres(false);
+  int below = 0;
+  float lowest = 1;
+  for (int y = 0; y <= 9; ++y) {
+    for (int x = 0; x <= 13; ++x) {
+      const float v = canvas.at(x, y);
+      d.fill({x, y}, shade(std::min(1.0f, v)));
+      const bool inside = x >= 1 && x <= 12 && y >= 1 && y <= 8;
+      if (inside && v < 0.995f) {
+        d.pixel_text({x, y}, std::to_string(static_cast<int>(std::lround(v * 100))));
+        ++below;
+        lowest = std::min(lowest, v);
+      }
+    }
+  }
+  for (const auto& t : mesh) d.triangle(t[0], t[1], t[2], dc::vermillion, 1);
+  d.legend_fill("shade = coverage of the pixel (full: 100%)", shade(1));
+  d.legend_line("the mesh's edges", dc::vermillion);
+  d.legend_note(below == 0
+                    ? std::string("Every inner pixel is full.")
+                    : std::to_string(below) + " of 96 inner pixels are not full; the lowest is " +
+                          std::to_string(static_cast<int>(std::lround(lowest * 100))) + "%.");
+  return d;
+}
+
+tri::SvgFigure conflation_figure() {
+  const auto mesh = tri::ch10::jittered_mesh(3, 2, 4, 0.5, 200, 3);
+  const std::array<tri::PixelDiagram, 2> panels = {
+      mesh_panel(mesh, tri::ch10::Blend::sum, "Coverage summed"),
+      mesh_panel(mesh, tri::ch10::Blend::over, "Coverage composited as alpha (over)")};
+  return {"10_conflation",
+          tri::side_by_side(panels,
+                            "A mesh of 12 triangles, anti-aliased two ways: seams where "
+                            "edges are shared")};
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -153,6 +199,7 @@ int main(int argc, char** argv) {
       "Chapter 10, how much of each pixel: the exact coverage of every pixel a triangle touches\n"
       "(10_exact_coverage.svg); sixteen samples per pixel as a regular grid and as the standard\n"
       "rotated pattern on a nearly horizontal edge (10_sample_patterns.svg); one pixel row of\n"
-      "cells with the area and cover its edges leave (10_row_cells.svg).",
-      {exact_coverage_figure, sample_patterns_figure, row_cells_figure});
+      "cells with the area and cover its edges leave (10_row_cells.svg); a mesh with coverage\n"
+      "summed and composited as alpha, where seams appear (10_conflation.svg).",
+      {exact_coverage_figure, sample_patterns_figure, row_cells_figure, conflation_figure});
 }
