@@ -54,6 +54,7 @@ int run_chapter_program(int argc, const char* const* argv, std::string program,
 
 int run_chapter_program(int argc, const char* const* argv, std::string program,
                         std::string what_it_draws, std::vector<SvgFigureFunction> figures) {
+  what_it_draws += "\nThe chapter's README says what each figure shows.";
   return run_chapter_program(argc, argv, std::move(program), std::move(what_it_draws),
                              [&](FigureWriter& writer) {
                                for (const auto& draw : figures) {

@@ -51,7 +51,7 @@ int run_chapter_program(int argc, const char* const* argv, std::string program,
                         const std::function<void(FigureWriter& figures)>& render);
 
 /// The same for a chapter whose figures are all SVG diagrams: draws each in order and saves it
-/// as folder/NAME.svg.
+/// as folder/NAME.svg. The help text adds that the chapter's README says what each shows.
 int run_chapter_program(int argc, const char* const* argv, std::string program,
                         std::string what_it_draws, std::vector<SvgFigureFunction> figures);
 

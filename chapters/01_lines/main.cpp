@@ -250,9 +250,5 @@ std::vector<tri::SvgFigureFunction> figures() {
 int main(int argc, char** argv) {
   return tri::run_chapter_program(
       argc, argv, "01_lines",
-      "Chapter 01, lines: a star of 24 lines (every octant) drawn by all four line algorithms\n"
-      "(01_star.svg), a diagram of the star's tie steps naming the pixel each algorithm draws\n"
-      "(01_star_differences.svg), and per algorithm a diagram of lines that pass exactly halfway\n"
-      "between pixels, drawn in both directions (01_ties_<algorithm>.svg).",
-      figures());
+      "Chapter 01, lines: the star and the tie diagrams of the four line algorithms.", figures());
 }

@@ -192,10 +192,6 @@ tri::SvgFigure tinyrenderer_apex_figure() {
 int main(int argc, char** argv) {
   return tri::run_chapter_program(
       argc, argv, "02_wireframe",
-      "Chapter 02, wireframe triangles: Gambetta's Figure 7-1 on a centred 600x600 canvas\n"
-      "(02_wireframe_figure_7_1.svg), tinyrenderer's three test triangles outlined on a 200x200\n"
-      "image (02_wireframe_tinyrenderer.svg) with a zoom on the sharp top of the first\n"
-      "(02_wireframe_tinyrenderer_apex.svg), and a diagram of where the three lines meet\n"
-      "(02_wireframe_joints.svg).",
+      "Chapter 02, wireframe triangles: Figure 7-1, tinyrenderer's triangles, the joints.",
       {gambetta_figure_7_1, tinyrenderer_figure, tinyrenderer_apex_figure, joints_figure});
 }

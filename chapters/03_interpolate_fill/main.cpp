@@ -8,12 +8,7 @@ int main(int argc, char** argv) {
   using namespace tri::ch03::figures;
   return tri::run_chapter_program(
       argc, argv, "03_interpolate_fill",
-      "Chapter 03, Gambetta's filled triangle, as SVG pixel diagrams: one per step on the hand\n"
-      "triangle (03_step1_sorted.svg ... 03_step5_spans.svg), Figure 7-3 with the outline on\n"
-      "top of the fill, upright and flipped (03_figure_7_3.svg, 03_figure_7_3_flipped.svg,\n"
-      "03_figure_7_3_close_up.svg), tinyrenderer's triangles filled and outlined\n"
-      "(03_tinyrenderer_fill_outline.svg, 03_tinyrenderer_fill_outline_close_up.svg) and the\n"
-      "port's traps (03_trap_one_short.svg, 03_trap_no_pop_back.svg).",
+      "Chapter 03, Gambetta's filled triangle: one diagram per step, Figure 7-3, the traps.",
       {step1_sorted, step2_edges, step3_concatenate, step4_left_right, step5_spans,
        [] { return figure_7_3(1); }, [] { return figure_7_3(-1); }, figure_7_3_close_up,
        tinyrenderer_fill_outline, tinyrenderer_fill_outline_close_up, trap_one_short,

@@ -8,12 +8,7 @@ int main(int argc, char** argv) {
   using namespace tri::ch04::figures;
   return tri::run_chapter_program(
       argc, argv, "04_scanline",
-      "Chapter 04, scanline fill (tinyrenderer lesson 2), as SVG pixel diagrams of the\n"
-      "article's green triangle after each step: 04_outlines, 04_sorted_boundaries,\n"
-      "04_lower_half_points, 04_lower_half_filled, 04_two_loops, 04_single_loop; then\n"
-      "04_loop_differences (the pixels where the loop variants differ, zoomed),\n"
-      "04_loop_differences_red_white (the same on the other two triangles) and\n"
-      "04_truncation_close_up (pixels the int casts add to the red triangle).",
+      "Chapter 04, tinyrenderer's scanline fill: one diagram per step and where loops differ.",
       {outlines, sorted_boundaries, lower_half_points, lower_half_filled, two_loops, single_loop,
        loop_differences, loop_differences_red_white, truncation_close_up});
 }

@@ -294,12 +294,7 @@ tri::SvgFigure float_zero_area_far_away_figure() {
 int main(int argc, char** argv) {
   return tri::run_chapter_program(
       argc, argv, "06_barycentric",
-      "Chapter 06, bounding box and barycentric coordinates: tinyrenderer's three triangles over\n"
-      "their bounding boxes (06_bounding_boxes.svg), filled (06_tinyrenderer_triangles.svg) and\n"
-      "coloured by their weights (06_barycentric_weights.svg); what zero-area triangles draw\n"
-      "without the guard (06_zero_area_unguarded.svg); the pixel float misses and double keeps\n"
-      "(06_float_vs_double.svg); a zero-area triangle 10^7 away that float draws\n"
-      "(06_float_zero_area_far_away.svg).",
+      "Chapter 06, barycentric coordinates: weights, the zero-area guard, float and double.",
       {bounding_boxes_figure, tinyrenderer_figure, weights_figure, zero_area_unguarded_figure,
        float_versus_double_figure, float_zero_area_far_away_figure});
 }

@@ -196,10 +196,6 @@ tri::SvgFigure conflation_figure() {
 int main(int argc, char** argv) {
   return tri::run_chapter_program(
       argc, argv, "10_coverage",
-      "Chapter 10, how much of each pixel: the exact coverage of every pixel a triangle touches\n"
-      "(10_exact_coverage.svg); sixteen samples per pixel as a regular grid and as the standard\n"
-      "rotated pattern on a nearly horizontal edge (10_sample_patterns.svg); one pixel row of\n"
-      "cells with the area and cover its edges leave (10_row_cells.svg); a mesh with coverage\n"
-      "summed and composited as alpha, where seams appear (10_conflation.svg).",
+      "Chapter 10, how much of each pixel: exact coverage, samples, row cells, seams.",
       {exact_coverage_figure, sample_patterns_figure, row_cells_figure, conflation_figure});
 }
