@@ -8,11 +8,7 @@
 #include "chapters/10_coverage/area_oracle.hpp"
 #include "common/random.hpp"
 
-using tri::Triangle;
-using tri::ch10::CoverageCanvas;
-using tri::ch10::draw_triangle_area;
-using tri::ch10::exact_coverage;
-using tri::ch10::RowCells;
+namespace tri::ch10 {
 
 namespace {
 
@@ -31,7 +27,7 @@ double largest_difference(const Triangle& t, int width, int height) {
   return largest;
 }
 
-Triangle random_triangle(tri::Random& random, int low, int high) {
+Triangle random_triangle(Random& random, int low, int high) {
   Triangle t;
   for (auto& v : t) v = {random.integer(low, high) / 256.0, random.integer(low, high) / 256.0};
   return t;
@@ -41,7 +37,7 @@ Triangle random_triangle(tri::Random& random, int low, int high) {
 
 TEST_CASE("The row cells give each pixel the exact area, within a float's rounding",
           "[10_coverage][step4]") {
-  tri::Random random(42);
+  Random random(42);
   for (int trial = 0; trial < 300; ++trial) {
     const Triangle t = random_triangle(random, -2 * 256, 14 * 256);
     INFO("trial " << trial << ": (" << t[0].x << ", " << t[0].y << ") (" << t[1].x << ", " << t[1].y
@@ -101,3 +97,5 @@ TEST_CASE("The 16-bit PGM of a coverage canvas: header, top row first, big-endia
   CHECK(value(2) == 65535);
   CHECK(value(3) == 0);
 }
+
+}  // namespace tri::ch10

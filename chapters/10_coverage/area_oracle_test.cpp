@@ -9,11 +9,7 @@
 
 #include "common/random.hpp"
 
-using tri::Triangle;
-using tri::ch10::exact_area;
-using tri::ch10::exact_coverage;
-using tri::ch10::exact_coverages;
-using tri::ch10::Fraction;
+namespace tri::ch10 {
 
 namespace {
 
@@ -72,7 +68,7 @@ TEST_CASE("The coverage does not depend on the winding or the order of the verti
 
 TEST_CASE("The coverages of all pixels add up to exactly the triangle's area",
           "[10_coverage][step1]") {
-  tri::Random random(20261123);
+  Random random(20261123);
   for (int trial = 0; trial < 200; ++trial) {
     Triangle t;
     for (auto& v : t)
@@ -85,7 +81,7 @@ TEST_CASE("The coverages of all pixels add up to exactly the triangle's area",
 TEST_CASE("In a mesh the coverages around an interior pixel add up to exactly one",
           "[10_coverage][step1]") {
   // A 6x6 grid of 2-pixel cells from (0, 0), inner vertices jittered on the 1/256 grid.
-  const auto mesh = tri::ch10::jittered_mesh(6, 6, 2, 0.0, 90, 7);
+  const auto mesh = jittered_mesh(6, 6, 2, 0.0, 90, 7);
   for (int y = 1; y < 12; ++y) {
     for (int x = 1; x < 12; ++x) {
       Fraction sum = 0;
@@ -111,7 +107,6 @@ TEST_CASE("The oracle refuses vertices off the 1/256 grid or beyond its range",
 
 TEST_CASE("coverage_16 rounds 65535 times the coverage, halves up, clamped to [0, 1]",
           "[10_coverage][step1]") {
-  using tri::ch10::coverage_16;
   CHECK(coverage_16(Fraction(0)) == 0);
   CHECK(coverage_16(Fraction(1)) == 65535);
   CHECK(coverage_16(Fraction(1, 2)) == 32768);  // 32767.5 rounds up
@@ -121,3 +116,5 @@ TEST_CASE("coverage_16 rounds 65535 times the coverage, halves up, clamped to [0
   CHECK(coverage_16(Fraction(3, 2)) == 65535);
   CHECK(coverage_16(Fraction(-1, 2)) == 0);
 }
+
+}  // namespace tri::ch10

@@ -6,9 +6,7 @@
 #include "chapters/10_coverage/area_cells.hpp"
 #include "chapters/10_coverage/example_mesh.hpp"
 
-using tri::Triangle;
-using tri::ch10::CoverageCanvas;
-using tri::ch10::RowCells;
+namespace tri::ch10 {
 
 namespace {
 
@@ -16,11 +14,11 @@ namespace {
 CoverageCanvas mesh_drawn(bool over) {
   CoverageCanvas canvas(22, 18);
   RowCells cells;
-  for (const auto& t : tri::ch10::jittered_mesh(5, 4, 4, 0.5, 200, 3)) {
+  for (const auto& t : jittered_mesh(5, 4, 4, 0.5, 200, 3)) {
     if (over) {
-      tri::ch10::draw_triangle_area_over(canvas, t, cells);
+      draw_triangle_area_over(canvas, t, cells);
     } else {
-      tri::ch10::draw_triangle_area(canvas, t, cells);
+      draw_triangle_area(canvas, t, cells);
     }
   }
   return canvas;
@@ -61,9 +59,11 @@ TEST_CASE("Two triangles that halve a pixel composite to exactly 0.75 there",
   CoverageCanvas canvas(4, 4);
   RowCells cells;
   // The diagonal from (-0.5, -0.5) to (3.5, 3.5) runs through pixels (k, k): half each side.
-  tri::ch10::draw_triangle_area_over(canvas, {{{-0.5, -0.5}, {3.5, -0.5}, {3.5, 3.5}}}, cells);
-  tri::ch10::draw_triangle_area_over(canvas, {{{-0.5, -0.5}, {3.5, 3.5}, {-0.5, 3.5}}}, cells);
+  draw_triangle_area_over(canvas, {{{-0.5, -0.5}, {3.5, -0.5}, {3.5, 3.5}}}, cells);
+  draw_triangle_area_over(canvas, {{{-0.5, -0.5}, {3.5, 3.5}, {-0.5, 3.5}}}, cells);
   for (int k = 0; k < 4; ++k) CHECK(canvas.at(k, k) == 0.75f);
   CHECK(canvas.at(1, 0) == 1.0f);
   CHECK(canvas.at(0, 1) == 1.0f);
 }
+
+}  // namespace tri::ch10

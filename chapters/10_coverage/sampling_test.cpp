@@ -14,18 +14,13 @@
 
 #include <glm/common.hpp>
 
-using tri::Triangle;
-using tri::ch10::coverage_error;
-using tri::ch10::regular_grid;
-using tri::ch10::sampled_coverage;
-using tri::ch10::SamplePattern;
-using tri::ch10::standard_pattern;
+namespace tri::ch10 {
 
 namespace {
 
 // Random triangles with vertices on the 1/256 grid inside a 12 x 12 pixel area.
 std::vector<Triangle> random_triangles(int count, std::uint64_t seed) {
-  tri::Random random(seed);
+  Random random(seed);
   std::vector<Triangle> triangles(count);
   for (auto& t : triangles) {
     for (auto& v : t)
@@ -47,7 +42,7 @@ double slope(const std::vector<double>& x, const std::vector<double>& y) {
   return (n * sxy - sx * sy) / (n * sxx - sx * sx);
 }
 
-tri::ch10::PixelCoverageFunction with(const SamplePattern& pattern) {
+PixelCoverageFunction with(const SamplePattern& pattern) {
   return [pattern](const Triangle& t, glm::ivec2 p) { return sampled_coverage(t, p, pattern); };
 }
 
@@ -160,7 +155,7 @@ TEST_CASE("Within 2 degrees of an axis the standard patterns beat grids of as ma
           "[10_coverage][step3]") {
   // Squares turned by 0 to 2 degrees, cut in two: their edges nearly follow the pixel rows and
   // columns, where a grid's samples line up in n columns and a standard pattern's in n * n.
-  tri::Random random(11);
+  Random random(11);
   std::vector<Triangle> triangles;
   for (int k = 0; k < 40; ++k) {
     const double angle = 2 * random.real(0, 1) * 3.14159265358979 / 180;
@@ -179,3 +174,5 @@ TEST_CASE("Within 2 degrees of an axis the standard patterns beat grids of as ma
     CHECK(rotated.max < grid.max);
   }
 }
+
+}  // namespace tri::ch10
