@@ -44,7 +44,7 @@ constexpr std::uint64_t widest_span = 4294967295ULL;
 
 }  // namespace
 
-TEST_CASE("A canvas accepts every side from 1 to 16384", "[canvas]") {
+TEST_CASE("A canvas accepts every side from 1 to 16384", "[common][canvas]") {
   const Canvas smallest(1, 1);
   CHECK(smallest.width() == 1);
   CHECK(smallest.height() == 1);
@@ -60,7 +60,7 @@ TEST_CASE("A canvas accepts every side from 1 to 16384", "[canvas]") {
 }
 
 TEST_CASE("A canvas with a side of 0, a negative side or a side above 16384 is refused",
-          "[canvas]") {
+          "[common][canvas]") {
   const auto [width, height] = GENERATE(table<int, int>({{0, 1},
                                                          {1, 0},
                                                          {0, 0},
@@ -81,7 +81,7 @@ TEST_CASE("A canvas with a side of 0, a negative side or a side above 16384 is r
                         Catch::Contains("1..16384"));
 }
 
-TEST_CASE("A new canvas holds its background colour and counts nothing", "[canvas]") {
+TEST_CASE("A new canvas holds its background colour and counts nothing", "[common][canvas]") {
   const Canvas canvas(4, 3, colors::blue);
   CHECK(canvas.pixels().size() == 12);
   CHECK(every_pixel_is(canvas, colors::blue));
@@ -93,7 +93,7 @@ TEST_CASE("A new canvas holds its background colour and counts nothing", "[canva
 }
 
 TEST_CASE("Pixel (0, 0) is the first stored pixel and rows are stored bottom row first",
-          "[canvas]") {
+          "[common][canvas]") {
   Canvas canvas(3, 2);
   canvas.put_pixel(0, 0, colors::red);
   canvas.put_pixel(1, 0, colors::green);
@@ -115,7 +115,7 @@ TEST_CASE("Pixel (0, 0) is the first stored pixel and rows are stored bottom row
   CHECK(rgba(canvas.pixel(0, 1)) == rgba(colors::yellow));
 }
 
-TEST_CASE("contains accepts exactly the pixels of the canvas", "[canvas]") {
+TEST_CASE("contains accepts exactly the pixels of the canvas", "[common][canvas]") {
   const Canvas canvas(4, 3);
   int inside = 0;
   for (int y = -2; y < 5; ++y) {
@@ -133,7 +133,7 @@ TEST_CASE("contains accepts exactly the pixels of the canvas", "[canvas]") {
   CHECK_FALSE(canvas.contains(0, INT_MAX));
 }
 
-TEST_CASE("Writes outside the canvas are ignored and counted", "[canvas]") {
+TEST_CASE("Writes outside the canvas are ignored and counted", "[common][canvas]") {
   Canvas canvas(4, 3, colors::gray);
   canvas.enable_write_counts();
   const std::vector<glm::ivec2> outside = {{-1, 0},
@@ -160,7 +160,8 @@ TEST_CASE("Writes outside the canvas are ignored and counted", "[canvas]") {
   CHECK(written_pixels(canvas) == PixelSet{{3, 2}});
 }
 
-TEST_CASE("Write counts are off until enabled, then count every accepted write", "[canvas]") {
+TEST_CASE("Write counts are off until enabled, then count every accepted write",
+          "[common][canvas]") {
   Canvas canvas(3, 3);
   canvas.put_pixel(1, 1, colors::red);
   CHECK(canvas.write_count(1, 1) == 0);
@@ -187,7 +188,8 @@ TEST_CASE("Write counts are off until enabled, then count every accepted write",
   CHECK(sum_of_counts(canvas) == 0);
 }
 
-TEST_CASE("clear paints every pixel and resets the write and outside counters", "[canvas]") {
+TEST_CASE("clear paints every pixel and resets the write and outside counters",
+          "[common][canvas]") {
   Canvas canvas(3, 2);
   canvas.enable_write_counts();
   canvas.put_pixel(0, 0, colors::red);
@@ -203,7 +205,7 @@ TEST_CASE("clear paints every pixel and resets the write and outside counters", 
 }
 
 TEST_CASE("fill_span writes x_begin <= x < x_end, clipped to the canvas, and counts the rest",
-          "[canvas][fill_span]") {
+          "[common][canvas][fill_span]") {
   struct Case {
     const char* what;
     int y, x_begin, x_end;
@@ -255,7 +257,7 @@ TEST_CASE("fill_span writes x_begin <= x < x_end, clipped to the canvas, and cou
 }
 
 TEST_CASE("fill_span leaves colours alone and counts nothing per pixel when counting is off",
-          "[canvas][fill_span]") {
+          "[common][canvas][fill_span]") {
   Canvas canvas(5, 3);
   canvas.fill_span(1, -1, 3, colors::green);
   CHECK(canvas.write_counts().empty());
@@ -266,7 +268,7 @@ TEST_CASE("fill_span leaves colours alone and counts nothing per pixel when coun
   CHECK(rgba(canvas.pixel(0, 0)) == rgba(colors::black));
 }
 
-TEST_CASE("Overlapping spans add up their write counts", "[canvas][fill_span]") {
+TEST_CASE("Overlapping spans add up their write counts", "[common][canvas][fill_span]") {
   Canvas canvas(6, 1);
   canvas.enable_write_counts();
   canvas.fill_span(0, 0, 4, colors::red);
@@ -279,7 +281,7 @@ TEST_CASE("Overlapping spans add up their write counts", "[canvas][fill_span]") 
 }
 
 TEST_CASE("fill_span does exactly what put_pixel does for every x of the span, on random spans",
-          "[canvas][fill_span]") {
+          "[common][canvas][fill_span]") {
   testing::Random random(20240601);
   for (int trial = 0; trial < 500; ++trial) {
     const int y = random.integer(-2, 5);
@@ -299,7 +301,8 @@ TEST_CASE("fill_span does exactly what put_pixel does for every x of the span, o
   }
 }
 
-TEST_CASE("The centred view maps (0, 0) to the middle of the canvas, y up", "[canvas][view]") {
+TEST_CASE("The centred view maps (0, 0) to the middle of the canvas, y up",
+          "[common][canvas][view]") {
   Canvas canvas(600, 600);
   const CenteredView view(canvas);
   CHECK(xy(view.to_canvas({0, 0})) == std::pair(300, 300));
@@ -313,7 +316,8 @@ TEST_CASE("The centred view maps (0, 0) to the middle of the canvas, y up", "[ca
   CHECK(xy(view.to_canvas({299, 299})) == std::pair(599, 599));
 }
 
-TEST_CASE("The centred view of an odd-sized canvas rounds the middle down", "[canvas][view]") {
+TEST_CASE("The centred view of an odd-sized canvas rounds the middle down",
+          "[common][canvas][view]") {
   Canvas canvas(5, 3);
   const CenteredView view(canvas);
   CHECK(xy(view.to_canvas({0, 0})) == std::pair(2, 1));
@@ -322,7 +326,7 @@ TEST_CASE("The centred view of an odd-sized canvas rounds the middle down", "[ca
 }
 
 TEST_CASE("The centred view maps points past the canvas's edges to pixels off the canvas",
-          "[canvas][view]") {
+          "[common][canvas][view]") {
   const Canvas canvas(6, 4);
   const CenteredView view(canvas);
   CHECK(canvas.contains(view.to_canvas({0, 0})));

@@ -100,7 +100,7 @@ bool has_line_matching(const std::string& text, const std::string& pattern) {
 
 }  // namespace
 
-TEST_CASE("An empty command line gives no options", "[cli]") {
+TEST_CASE("An empty command line gives no options", "[common][cli]") {
   const CliArguments args = parse({});
   CHECK_FALSE(args.help_requested());
   CHECK_FALSE(args.has("scene"));
@@ -109,13 +109,13 @@ TEST_CASE("An empty command line gives no options", "[cli]") {
   CHECK_FALSE(args.integer("bench", 1, 10).has_value());
 }
 
-TEST_CASE("--help and -h ask for help", "[cli]") {
+TEST_CASE("--help and -h ask for help", "[common][cli]") {
   CHECK(parse({"--help"}).help_requested());
   CHECK(parse({"-h"}).help_requested());
   CHECK(parse({"--scene", "a.scene", "--help"}).help_requested());
 }
 
-TEST_CASE("Options with values and flags are read back by name", "[cli]") {
+TEST_CASE("Options with values and flags are read back by name", "[common][cli]") {
   const CliArguments args = parse({"--scene", "my file.scene", "--list", "--algo", "-x"});
   CHECK_FALSE(args.help_requested());
   CHECK(args.value("scene") == std::optional<std::string>("my file.scene"));
@@ -127,7 +127,8 @@ TEST_CASE("Options with values and flags are read back by name", "[cli]") {
   CHECK_FALSE(args.has("help"));
 }
 
-TEST_CASE("The help text names the program, its summary and every option with its help", "[cli]") {
+TEST_CASE("The help text names the program, its summary and every option with its help",
+          "[common][cli]") {
   const std::string help = raster_like().help_text();
   CHECK_THAT(help, Catch::StartsWith("Usage: raster [options]\n"));
   CHECK_THAT(help, Catch::Contains("Renders a scene with one triangle algorithm."));
@@ -141,7 +142,8 @@ TEST_CASE("The help text names the program, its summary and every option with it
   CHECK(raster_like().program() == "raster");
 }
 
-TEST_CASE("A bad command line throws a UsageError that says what is wrong", "[cli][errors]") {
+TEST_CASE("A bad command line throws a UsageError that says what is wrong",
+          "[common][cli][errors]") {
   CHECK(usage_error_of({"--bogus"}) == "unknown option '--bogus'");
   CHECK(usage_error_of({"--Scene", "a"}) == "unknown option '--Scene'");
   CHECK(usage_error_of({"--scene=a.scene"}) == "unknown option '--scene=a.scene'");
@@ -156,13 +158,13 @@ TEST_CASE("A bad command line throws a UsageError that says what is wrong", "[cl
   CHECK(usage_error_of({"--scene", ""}) == "option '--scene' needs a non-empty value (FILE)");
 }
 
-TEST_CASE("An option does not swallow the next option as its value", "[cli][errors]") {
+TEST_CASE("An option does not swallow the next option as its value", "[common][cli][errors]") {
   CHECK(usage_error_of({"--scene", "--list"}) == "option '--scene' needs a value (FILE)");
   CHECK(usage_error_of({"--algo", "--help"}) == "option '--algo' needs a value (NAME)");
 }
 
 TEST_CASE("integer reads whole numbers within the bounds and refuses everything else",
-          "[cli][integer]") {
+          "[common][cli][integer]") {
   CHECK(parse({"--bench", "1"}).integer("bench", 1, 100) == 1);
   CHECK(parse({"--bench", "100"}).integer("bench", 1, 100) == 100);
   CHECK(parse({"--bench", "42"}).integer("bench", 1, 100) == 42);
@@ -181,7 +183,7 @@ TEST_CASE("integer reads whole numbers within the bounds and refuses everything 
 }
 
 TEST_CASE("run_command_line prints the help on out and returns 0 without running the body",
-          "[cli][run]") {
+          "[common][cli][run]") {
   const Outcome outcome = run({"--help"}, [](const CliArguments&) { return 5; });
   CHECK(outcome.status == 0);
   CHECK(outcome.out == raster_like().help_text());
@@ -190,7 +192,7 @@ TEST_CASE("run_command_line prints the help on out and returns 0 without running
 }
 
 TEST_CASE("run_command_line returns the body's status and passes it the parsed options",
-          "[cli][run]") {
+          "[common][cli][run]") {
   const Outcome outcome = run({"--scene", "a.scene"}, [](const CliArguments& args) {
     return args.value("scene") == std::optional<std::string>("a.scene") ? 7 : 99;
   });
@@ -201,7 +203,7 @@ TEST_CASE("run_command_line returns the body's status and passes it the parsed o
 }
 
 TEST_CASE("run_command_line reports a usage error on err with status 2 and writes nothing on out",
-          "[cli][run]") {
+          "[common][cli][run]") {
   const Outcome outcome = run({"--bogus"}, [](const CliArguments&) { return 0; });
   CHECK(outcome.status == 2);
   CHECK(outcome.out.empty());
@@ -209,7 +211,8 @@ TEST_CASE("run_command_line reports a usage error on err with status 2 and write
   CHECK(outcome.body_calls == 0);
 }
 
-TEST_CASE("run_command_line treats a UsageError from the body as a usage error", "[cli][run]") {
+TEST_CASE("run_command_line treats a UsageError from the body as a usage error",
+          "[common][cli][run]") {
   const Outcome outcome = run({"--bench", "0"}, [](const CliArguments& args) {
     return static_cast<int>(args.integer("bench", 1, 10).value_or(0));
   });
@@ -220,7 +223,7 @@ TEST_CASE("run_command_line treats a UsageError from the body as a usage error",
 }
 
 TEST_CASE("run_command_line turns any other exception into one line on err and status 1",
-          "[cli][run]") {
+          "[common][cli][run]") {
   const Outcome failed = run({}, [](const CliArguments&) -> int {
     throw std::runtime_error("cannot open scene 'x.scene'");
   });
@@ -235,14 +238,14 @@ TEST_CASE("run_command_line turns any other exception into one line on err and s
   CHECK(logic.err == "raster: error: a bug\n");
 }
 
-TEST_CASE("Every help text ends with the exit statuses all programs share", "[cli]") {
+TEST_CASE("Every help text ends with the exit statuses all programs share", "[common][cli]") {
   const std::string help = raster_like().help_text();
   CHECK_THAT(help, Catch::EndsWith(std::string(exit_status_help) + "\n"));
   CHECK_THAT(help, Catch::Contains("0 success") && Catch::Contains("2 usage error"));
 }
 
 TEST_CASE("A name list keeps valid names in order and refuses empty, unknown and repeated names",
-          "[cli][names]") {
+          "[common][cli][names]") {
   const std::vector<std::string> valid{"alpha", "beta", "gamma"};
   CHECK(parse_name_list("only", "beta", valid) == std::vector<std::string>{"beta"});
   CHECK(parse_name_list("only", "gamma,alpha", valid) ==
@@ -260,7 +263,7 @@ TEST_CASE("A name list keeps valid names in order and refuses empty, unknown and
 }
 
 TEST_CASE("run_command_line fails with status 1 and the reason when standard output is full",
-          "[cli][run][standard_output]") {
+          "[common][cli][run][standard_output]") {
   std::ofstream full("/dev/full");
   REQUIRE(full.is_open());
   std::ostringstream err;
@@ -276,7 +279,7 @@ TEST_CASE("run_command_line fails with status 1 and the reason when standard out
 }
 
 TEST_CASE("run_command_line keeps a usage error's status when standard output also fails",
-          "[cli][run][standard_output]") {
+          "[common][cli][run][standard_output]") {
   std::ofstream full("/dev/full");
   std::ostringstream err;
   const Argv args({"--bogus"});

@@ -73,7 +73,7 @@ Canvas numbered_canvas() {
 
 }  // namespace
 
-TEST_CASE("The counts PGM has a P5 header and lists the top row first", "[image_io]") {
+TEST_CASE("The counts PGM has a P5 header and lists the top row first", "[common][image_io]") {
   Canvas canvas(3, 2);
   canvas.enable_write_counts();
   canvas.put_pixel(0, 0, colors::white);
@@ -88,7 +88,7 @@ TEST_CASE("The counts PGM has a P5 header and lists the top row first", "[image_
   CHECK(encode_counts_pgm(canvas) == expected);
 }
 
-TEST_CASE("The counts PGM saturates counts above 255", "[image_io]") {
+TEST_CASE("The counts PGM saturates counts above 255", "[common][image_io]") {
   Canvas canvas(3, 1);
   canvas.enable_write_counts();
   for (int i = 0; i < 254; ++i) canvas.put_pixel(0, 0, colors::white);
@@ -101,13 +101,13 @@ TEST_CASE("The counts PGM saturates counts above 255", "[image_io]") {
   CHECK(encode_counts_pgm(canvas) == expected);
 }
 
-TEST_CASE("The counts PGM needs write counting to be on", "[image_io]") {
+TEST_CASE("The counts PGM needs write counting to be on", "[common][image_io]") {
   const Canvas canvas(2, 2);
   CHECK_THROWS_AS(encode_counts_pgm(canvas), std::logic_error);
 }
 
 TEST_CASE("The PNG has the PNG signature and an 8-bit RGBA header of the canvas size",
-          "[image_io][png]") {
+          "[common][image_io][png]") {
   const auto png = encode_png(numbered_canvas());
   const std::vector<std::uint8_t> signature = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
   REQUIRE(png.size() > 33);
@@ -122,7 +122,8 @@ TEST_CASE("The PNG has the PNG signature and an 8-bit RGBA header of the canvas 
   CHECK(std::string(png.end() - 8, png.end() - 4) == "IEND");
 }
 
-TEST_CASE("The PNG decodes back to the canvas, top row first, alpha included", "[image_io][png]") {
+TEST_CASE("The PNG decodes back to the canvas, top row first, alpha included",
+          "[common][image_io][png]") {
   const Canvas canvas = numbered_canvas();
   const auto png = encode_png(canvas);
   int width = 0;
@@ -147,7 +148,7 @@ TEST_CASE("The PNG decodes back to the canvas, top row first, alpha included", "
   CHECK(image == expected);
 }
 
-TEST_CASE("A one-pixel canvas encodes as a valid PNG", "[image_io][png]") {
+TEST_CASE("A one-pixel canvas encodes as a valid PNG", "[common][image_io][png]") {
   const auto png = encode_png(Canvas(1, 1, Color{1, 2, 3, 4}));
   int width = 0;
   int height = 0;
@@ -163,7 +164,7 @@ TEST_CASE("A one-pixel canvas encodes as a valid PNG", "[image_io][png]") {
 }
 
 TEST_CASE("write_file_atomically creates the missing folders and leaves only the file",
-          "[image_io][files]") {
+          "[common][image_io][files]") {
   const fs::path folder = fresh_folder("creates_folders");
   const fs::path path = folder / "a" / "b" / "figure.bin";
   const std::vector<std::uint8_t> bytes = {0, 1, 2, 255, '\n', '\r', 0};
@@ -174,7 +175,7 @@ TEST_CASE("write_file_atomically creates the missing folders and leaves only the
 }
 
 TEST_CASE("write_file_atomically replaces an existing file and writes empty files",
-          "[image_io][files]") {
+          "[common][image_io][files]") {
   const fs::path folder = fresh_folder("replaces");
   const fs::path path = folder / "data.txt";
   write_file_atomically(path, bytes_of("the old, longer content"));
@@ -188,7 +189,7 @@ TEST_CASE("write_file_atomically replaces an existing file and writes empty file
 }
 
 TEST_CASE("write_file_atomically below a regular file fails, names the path, writes nothing",
-          "[image_io][files]") {
+          "[common][image_io][files]") {
   const fs::path folder = fresh_folder("below_a_file");
   const fs::path blocker = folder / "blocker";
   std::ofstream(blocker) << "not a folder";
@@ -202,7 +203,7 @@ TEST_CASE("write_file_atomically below a regular file fails, names the path, wri
 }
 
 TEST_CASE("write_file_atomically onto an existing folder fails, names the path, leaves no .tmp",
-          "[image_io][files]") {
+          "[common][image_io][files]") {
   const fs::path folder = fresh_folder("onto_a_folder");
   const fs::path path = folder / "taken";
   fs::create_directory(path);
@@ -214,7 +215,8 @@ TEST_CASE("write_file_atomically onto an existing folder fails, names the path, 
   fs::remove_all(folder);
 }
 
-TEST_CASE("write_png and write_counts_pgm write exactly the encoded bytes", "[image_io][files]") {
+TEST_CASE("write_png and write_counts_pgm write exactly the encoded bytes",
+          "[common][image_io][files]") {
   const fs::path folder = fresh_folder("write_png");
   Canvas canvas = numbered_canvas();
   canvas.enable_write_counts();
@@ -227,7 +229,8 @@ TEST_CASE("write_png and write_counts_pgm write exactly the encoded bytes", "[im
   fs::remove_all(folder);
 }
 
-TEST_CASE("write_counts_pgm without write counts fails and writes nothing", "[image_io][files]") {
+TEST_CASE("write_counts_pgm without write counts fails and writes nothing",
+          "[common][image_io][files]") {
   const fs::path folder = fresh_folder("no_counts");
   CHECK_THROWS_AS(write_counts_pgm(Canvas(2, 2), folder / "counts.pgm"), std::logic_error);
   CHECK(files_below(folder).empty());

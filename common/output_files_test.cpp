@@ -52,7 +52,7 @@ bool running_as_root() {
 }  // namespace
 
 TEST_CASE("A failing second output leaves the first output's earlier file exactly as it was",
-          "[output_files]") {
+          "[common][output_files]") {
   const fs::path folder = fresh_folder("second_fails");
   put(folder / "picture.png", "the earlier picture");
   fs::create_directory(folder / "counts.pgm");  // a folder: this output cannot be written
@@ -68,7 +68,7 @@ TEST_CASE("A failing second output leaves the first output's earlier file exactl
 }
 
 TEST_CASE("Staged outputs replace nothing and leave nothing behind until they are committed",
-          "[output_files]") {
+          "[common][output_files]") {
   const fs::path folder = fresh_folder("uncommitted");
   put(folder / "a.txt", "old a");
   {
@@ -91,7 +91,7 @@ TEST_CASE("Staged outputs replace nothing and leave nothing behind until they ar
 }
 
 TEST_CASE("The temporary is a new regular file named .NAME.XXXXXX.tmp beside the output",
-          "[output_files]") {
+          "[common][output_files]") {
   const fs::path folder = fresh_folder("temporary_name");
   OutputTransaction outputs;
   outputs.stage(folder / "render.png", bytes_of_text("png"));
@@ -103,7 +103,7 @@ TEST_CASE("The temporary is a new regular file named .NAME.XXXXXX.tmp beside the
 }
 
 TEST_CASE("Symlinks planted at temporary-looking names beside the output are not followed",
-          "[output_files][links]") {
+          "[common][output_files][links]") {
   const fs::path folder = fresh_folder("planted_links");
   put(folder / "victim", "precious");
   for (const char* name : {"render.png.tmp", ".render.png.tmp", ".render.png.tmp.tmp"}) {
@@ -118,7 +118,7 @@ TEST_CASE("Symlinks planted at temporary-looking names beside the output are not
 }
 
 TEST_CASE("A symlinked output is written through: the link stays, its file gets the new bytes",
-          "[output_files][links]") {
+          "[common][output_files][links]") {
   const fs::path folder = fresh_folder("write_through");
   fs::create_directory(folder / "real");
   put(folder / "real" / "picture.png", "old");
@@ -130,7 +130,7 @@ TEST_CASE("A symlinked output is written through: the link stays, its file gets 
 }
 
 TEST_CASE("An output with several hard links is refused and every link keeps its content",
-          "[output_files][links]") {
+          "[common][output_files][links]") {
   const fs::path folder = fresh_folder("hard_links");
   put(folder / "a.png", "shared");
   fs::create_hard_link(folder / "a.png", folder / "b.png");
@@ -141,7 +141,7 @@ TEST_CASE("An output with several hard links is refused and every link keeps its
 }
 
 TEST_CASE("An output that is an input is refused, also through a hard link or a symlink",
-          "[output_files][identity]") {
+          "[common][output_files][identity]") {
   const fs::path folder = fresh_folder("input_as_output");
   put(folder / "s.scene", "canvas 4 4\n");
   fs::create_hard_link(folder / "s.scene", folder / "hard.scene");
@@ -158,7 +158,7 @@ TEST_CASE("An output that is an input is refused, also through a hard link or a 
 }
 
 TEST_CASE("Two outputs naming one file are refused, whether it exists or not",
-          "[output_files][identity]") {
+          "[common][output_files][identity]") {
   const fs::path folder = fresh_folder("same_file");
   const std::vector<fs::path> new_file{folder / "x.png", folder / "." / "x.png"};
   CHECK_THROWS_WITH(check_outputs(new_file), Catch::Contains("two outputs name one file"));
@@ -172,7 +172,7 @@ TEST_CASE("Two outputs naming one file are refused, whether it exists or not",
   CHECK_NOTHROW(check_outputs(distinct));
 }
 
-TEST_CASE("An empty output path is refused as a usage error", "[output_files]") {
+TEST_CASE("An empty output path is refused as a usage error", "[common][output_files]") {
   const std::vector<fs::path> outputs{""};
   CHECK_THROWS_AS(check_outputs(outputs), UsageError);
   CHECK_THROWS_AS(write_file_safely("", bytes_of_text("x")), OutputError);
@@ -180,7 +180,7 @@ TEST_CASE("An empty output path is refused as a usage error", "[output_files]") 
 }
 
 TEST_CASE("A device or a FIFO as output is refused with a reason and never replaced",
-          "[output_files][special]") {
+          "[common][output_files][special]") {
   const std::vector<fs::path> device{"/dev/null"};
   CHECK_THROWS_WITH(check_outputs(device), Catch::Contains("character device"));
   CHECK_THROWS_WITH(write_file_safely("/dev/null", bytes_of_text("x")),
@@ -196,7 +196,7 @@ TEST_CASE("A device or a FIFO as output is refused with a reason and never repla
 }
 
 TEST_CASE("A read-only existing output is refused with Permission denied and kept",
-          "[output_files][permissions]") {
+          "[common][output_files][permissions]") {
   if (running_as_root()) {
     WARN("skipped: root may write any file, so a read-only file is no obstacle to root");
     SUCCEED();
@@ -214,7 +214,7 @@ TEST_CASE("A read-only existing output is refused with Permission denied and kep
 }
 
 TEST_CASE("A new output gets mode 0666 less the umask, a replaced one keeps its mode",
-          "[output_files]") {
+          "[common][output_files]") {
   const fs::path folder = fresh_folder("modes");
   const mode_t previous = ::umask(022);
   write_file_safely(folder / "new.txt", bytes_of_text("x"));
@@ -231,7 +231,7 @@ TEST_CASE("A new output gets mode 0666 less the umask, a replaced one keeps its 
 }
 
 TEST_CASE("An output name of 255 characters is written, its temporary name is shortened",
-          "[output_files]") {
+          "[common][output_files]") {
   const fs::path folder = fresh_folder("long_name");
   const std::string name(255, 'n');
   write_file_safely(folder / name, bytes_of_text("long"));
@@ -240,7 +240,7 @@ TEST_CASE("An output name of 255 characters is written, its temporary name is sh
 }
 
 TEST_CASE("An output below a regular file fails, names the system's reason and writes nothing",
-          "[output_files]") {
+          "[common][output_files]") {
   const fs::path folder = fresh_folder("below_file");
   put(folder / "blocker", "a file");
   const std::vector<fs::path> outputs{folder / "blocker" / "sub" / "x.png"};
@@ -252,7 +252,7 @@ TEST_CASE("An output below a regular file fails, names the system's reason and w
 }
 
 TEST_CASE("The output - goes to the given standard output, and is refused without one",
-          "[output_files][standard_output]") {
+          "[common][output_files][standard_output]") {
   std::ostringstream standard_output;
   {
     OutputTransaction outputs(&standard_output);

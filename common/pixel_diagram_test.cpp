@@ -19,7 +19,7 @@ std::size_t occurrences(const std::string& text, const std::string& what) {
 }  // namespace
 
 TEST_CASE("A pixel diagram puts pixel (i, j) in the cell of column i, counted from the top row",
-          "[pixel_diagram]") {
+          "[common][pixel_diagram]") {
   // Pixels 0..3 by 0..2 at 10 units per cell: the grid starts at (34, 34); y = 2 is the top row.
   PixelDiagram diagram({0, 0}, {3, 2}, "t", 10);
   diagram.fill({1, 2}, dc::orange);
@@ -32,7 +32,7 @@ TEST_CASE("A pixel diagram puts pixel (i, j) in the cell of column i, counted fr
 }
 
 TEST_CASE("A pixel diagram merges a run of equal pixels along a row into one rectangle",
-          "[pixel_diagram]") {
+          "[common][pixel_diagram]") {
   PixelDiagram diagram({0, 0}, {9, 0}, "t", 10);
   for (int x = 2; x <= 6; ++x) diagram.fill({x, 0}, dc::green);
   const std::string svg = diagram.svg();
@@ -41,7 +41,7 @@ TEST_CASE("A pixel diagram merges a run of equal pixels along a row into one rec
 }
 
 TEST_CASE("A pixel diagram draws the ideal geometry at exact pixel coordinates, y up",
-          "[pixel_diagram]") {
+          "[common][pixel_diagram]") {
   // The centre of pixel (0, 0) in a 2x2 grid of 20-unit cells is at (34 + 10, 34 + 20 + 10).
   PixelDiagram diagram({0, 0}, {1, 1}, "t", 20);
   diagram.line({0, 0}, {1, 0.5}, dc::black, 2);
@@ -49,7 +49,7 @@ TEST_CASE("A pixel diagram draws the ideal geometry at exact pixel coordinates, 
   CHECK(svg.find("x1=\"44\" y1=\"64\" x2=\"64\" y2=\"54\"") != std::string::npos);
 }
 
-TEST_CASE("A pixel diagram labels a vertex with its exact coordinates", "[pixel_diagram]") {
+TEST_CASE("A pixel diagram labels a vertex with its exact coordinates", "[common][pixel_diagram]") {
   PixelDiagram diagram({0, 0}, {4, 4}, "t");
   diagram.vertex({2.5, -0.125}, "A");
   diagram.vertex({1e7, 3}, "B");
@@ -59,7 +59,7 @@ TEST_CASE("A pixel diagram labels a vertex with its exact coordinates", "[pixel_
 }
 
 TEST_CASE("A pixel diagram has its title, pixel numbers and every legend entry inside the image",
-          "[pixel_diagram]") {
+          "[common][pixel_diagram]") {
   PixelDiagram diagram({10, 20}, {12, 21}, "Ties & <edges>", 24);
   diagram.legend_fill("covered", dc::covered);
   diagram.legend_mark("centre on an edge", tri::PixelMark::ring);
@@ -78,7 +78,7 @@ TEST_CASE("A pixel diagram has its title, pixel numbers and every legend entry i
 }
 
 TEST_CASE("A pixel diagram shows pixel centres on zoomed grids and can hide them",
-          "[pixel_diagram]") {
+          "[common][pixel_diagram]") {
   PixelDiagram zoomed({0, 0}, {3, 3}, "t", 24);
   CHECK(zoomed.svg().find("centres") != std::string::npos);
   zoomed.show_centres(false);
@@ -87,7 +87,7 @@ TEST_CASE("A pixel diagram shows pixel centres on zoomed grids and can hide them
   CHECK(dense.svg().find("centres") == std::string::npos);
 }
 
-TEST_CASE("A pixel diagram ignores pixels and marks outside its range", "[pixel_diagram]") {
+TEST_CASE("A pixel diagram ignores pixels and marks outside its range", "[common][pixel_diagram]") {
   PixelDiagram diagram({0, 0}, {1, 1}, "t", 10);
   const std::string before = diagram.svg();
   diagram.fill({2, 0}, dc::orange);
@@ -98,7 +98,7 @@ TEST_CASE("A pixel diagram ignores pixels and marks outside its range", "[pixel_
 }
 
 TEST_CASE("A pixel diagram copies a canvas's colours except the skipped background",
-          "[pixel_diagram]") {
+          "[common][pixel_diagram]") {
   tri::Canvas canvas(3, 1, tri::colors::black);
   canvas.put_pixel(1, 0, tri::colors::yellow);
   PixelDiagram diagram({5, 5}, {7, 5}, "t", 10);
@@ -110,7 +110,7 @@ TEST_CASE("A pixel diagram copies a canvas's colours except the skipped backgrou
   CHECK(occurrences(svg, "fill=\"#000000\"/>") == 0);
 }
 
-TEST_CASE("Side-by-side diagrams keep their patterns apart", "[pixel_diagram]") {
+TEST_CASE("Side-by-side diagrams keep their patterns apart", "[common][pixel_diagram]") {
   const std::vector<PixelDiagram> panels = {PixelDiagram({0, 0}, {2, 2}, "left"),
                                             PixelDiagram({0, 0}, {2, 2}, "right")};
   const std::string svg = tri::side_by_side(panels, "both");
@@ -120,7 +120,7 @@ TEST_CASE("Side-by-side diagrams keep their patterns apart", "[pixel_diagram]") 
 }
 
 TEST_CASE("A pixel diagram is the same bytes every time and refuses an empty range",
-          "[pixel_diagram]") {
+          "[common][pixel_diagram]") {
   const auto draw = [] {
     PixelDiagram diagram({-2, -2}, {2, 2}, "t");
     diagram.triangle({-1.5, -1}, {1.25, 0}, {0, 1.75}, dc::blue);
@@ -132,7 +132,7 @@ TEST_CASE("A pixel diagram is the same bytes every time and refuses an empty ran
   CHECK_THROWS_AS(PixelDiagram({0, 0}, {1, 1}, "t", 0.5), std::invalid_argument);
 }
 
-TEST_CASE("A pixel diagram cuts the ideal geometry to its pixels", "[pixel_diagram]") {
+TEST_CASE("A pixel diagram cuts the ideal geometry to its pixels", "[common][pixel_diagram]") {
   // Grid of pixels 0..1 x 0..1 at 20 units: the box [-0.5, 1.5]^2 spans SVG x 34..74, y 34..74.
   PixelDiagram diagram({0, 0}, {1, 1}, "t", 20);
   diagram.line({-10.5, 0.5}, {100, 0.5}, dc::black);  // crosses the grid between its rows
@@ -142,7 +142,7 @@ TEST_CASE("A pixel diagram cuts the ideal geometry to its pixels", "[pixel_diagr
   CHECK(occurrences(svg, "<line") == 1);
 }
 
-TEST_CASE("clip_segment keeps the part of a segment inside a box", "[pixel_diagram]") {
+TEST_CASE("clip_segment keeps the part of a segment inside a box", "[common][pixel_diagram]") {
   const auto inside = tri::clip_segment({-1, 1}, {3, 1}, {0, 0}, {2, 2});
   REQUIRE(inside);
   CHECK((*inside)[0] == glm::dvec2(0, 1));
@@ -154,7 +154,7 @@ TEST_CASE("clip_segment keeps the part of a segment inside a box", "[pixel_diagr
 }
 
 TEST_CASE("clip_to_pixels keeps the part of a segment over the squares of the chosen pixels",
-          "[pixel_diagram]") {
+          "[common][pixel_diagram]") {
   const auto cut = tri::clip_to_pixels({4.5, 4.5}, {24.5, 4.5}, {0, 0}, {9, 9});
   REQUIRE(cut);
   CHECK((*cut)[0] == glm::dvec2(4.5, 4.5));
@@ -168,7 +168,7 @@ TEST_CASE("clip_to_pixels keeps the part of a segment over the squares of the ch
 }
 
 TEST_CASE("A pixel diagram frames a region along the outer border of its pixels",
-          "[pixel_diagram]") {
+          "[common][pixel_diagram]") {
   // Pixels 1..2 x 0..1 of a 4x2 grid at 10 units: the border runs from x 44 to 64, y 34 to 54.
   PixelDiagram diagram({0, 0}, {3, 1}, "t", 10);
   diagram.frame({1, 0}, {2, 1}, dc::black);

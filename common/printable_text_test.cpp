@@ -6,14 +6,14 @@
 
 namespace tri {
 
-TEST_CASE("A printable excerpt keeps plain text and valid UTF-8 as it is", "[printable]") {
+TEST_CASE("A printable excerpt keeps plain text and valid UTF-8 as it is", "[common][printable]") {
   CHECK(printable_excerpt("canvas") == "canvas");
   CHECK(printable_excerpt("") == "");
   CHECK(printable_excerpt("ü½€𝄞") == "ü½€𝄞");
 }
 
 TEST_CASE("A printable excerpt escapes control characters, NUL and terminal escapes",
-          "[printable]") {
+          "[common][printable]") {
   CHECK(printable_excerpt(std::string("a\0b", 3)) == "a\\x00b");
   CHECK(printable_excerpt("\x1b[31mred") == "\\x1B[31mred");
   CHECK(printable_excerpt("tab\there\r\n") == "tab\\x09here\\x0D\\x0A");
@@ -23,7 +23,7 @@ TEST_CASE("A printable excerpt escapes control characters, NUL and terminal esca
 }
 
 TEST_CASE("A printable excerpt escapes invalid UTF-8 byte by byte and invisible characters",
-          "[printable]") {
+          "[common][printable]") {
   CHECK(printable_excerpt("\xff\xfe") == "\\xFF\\xFE");
   CHECK(printable_excerpt("\xc3") == "\\xC3");                    // cut sequence
   CHECK(printable_excerpt("\xc0\xaf") == "\\xC0\\xAF");           // overlong '/'
@@ -35,7 +35,7 @@ TEST_CASE("A printable excerpt escapes invalid UTF-8 byte by byte and invisible 
 }
 
 TEST_CASE("A printable excerpt shows at most 32 characters and says how long the text was",
-          "[printable]") {
+          "[common][printable]") {
   const std::string long_word(10'000'000, 'x');
   CHECK(printable_excerpt(long_word) == std::string(32, 'x') + "...(10000000 bytes)");
   CHECK(printable_excerpt(std::string(32, 'y')) == std::string(32, 'y'));

@@ -10,7 +10,7 @@
 
 namespace tri {
 
-TEST_CASE("Durations read as seconds, minutes or hours", "[progress]") {
+TEST_CASE("Durations read as seconds, minutes or hours", "[common][progress]") {
   CHECK(human_duration(0.4) == "0 s");
   CHECK(human_duration(12.4) == "12 s");
   CHECK(human_duration(600) == "10 min");
@@ -18,7 +18,7 @@ TEST_CASE("Durations read as seconds, minutes or hours", "[progress]") {
 }
 
 TEST_CASE("A run estimated beyond the limit is refused unless forced, a shorter one is not",
-          "[progress]") {
+          "[common][progress]") {
   CHECK_NOTHROW(refuse_absurd_run(60, "drawing", false));
   CHECK_THROWS_AS(refuse_absurd_run(3600, "drawing 10 frames", false), UsageError);
   CHECK_THROWS_WITH(refuse_absurd_run(3600, "drawing 10 frames", false),
@@ -28,7 +28,7 @@ TEST_CASE("A run estimated beyond the limit is refused unless forced, a shorter 
 }
 
 TEST_CASE("Progress is silent during the quiet period, then reports the share done and time left",
-          "[progress]") {
+          "[common][progress]") {
   std::ostringstream err;
   Progress quiet("raster", 100, err, std::chrono::hours(1));
   quiet.advance(50);

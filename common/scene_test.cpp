@@ -65,7 +65,7 @@ class EndlessText : public std::streambuf {
 }  // namespace
 
 TEST_CASE("A UTF-8 byte order mark at the start of a scene is accepted, elsewhere it is named",
-          "[scene][limits]") {
+          "[common][scene][limits]") {
   const Scene scene = parse(
       "\xEF\xBB\xBF"
       "canvas 4 3\ntri 0 0 3 0 0 2\n");
@@ -77,7 +77,7 @@ TEST_CASE("A UTF-8 byte order mark at the start of a scene is accepted, elsewher
 }
 
 TEST_CASE("A line at the length limit is read, a longer one is refused naming the limit and line",
-          "[scene][limits]") {
+          "[common][scene][limits]") {
   const std::string comment = "#" + std::string(max_scene_line_bytes - 1, 'c');
   CHECK(parse("canvas 4 4\n" + comment + "\n").width == 4);
   CHECK(parse("canvas 4 4\n" + comment).width == 4);  // the same line without a final newline
@@ -85,7 +85,8 @@ TEST_CASE("A line at the length limit is read, a longer one is refused naming th
         "test.scene:2: line longer than 65536 bytes, the limit of a scene line");
 }
 
-TEST_CASE("An endless line is refused after reading about the limit, quickly", "[scene][limits]") {
+TEST_CASE("An endless line is refused after reading about the limit, quickly",
+          "[common][scene][limits]") {
   EndlessText text("canvas 4 4\n# ", "zzzzzzzz");
   std::istream in(&text);
   const auto start = std::chrono::steady_clock::now();
@@ -96,7 +97,7 @@ TEST_CASE("An endless line is refused after reading about the limit, quickly", "
 }
 
 TEST_CASE("A scene of more primitives than the limit is refused at the first one too many",
-          "[scene][limits]") {
+          "[common][scene][limits]") {
   // The documented limit, 2,000,000, takes half a minute under the sanitizers: a smaller one here.
   const SceneLimits limits{max_scene_line_bytes, 1000};
   EndlessText text("canvas 4 4\n", "line 0 0 1 1\ntri 0 0 1 0 0 1\n");
@@ -111,7 +112,7 @@ TEST_CASE("A scene of more primitives than the limit is refused at the first one
   CHECK(SceneLimits{}.max_line_bytes == 65'536);
 }
 
-TEST_CASE("Words of a scene appear in messages short and escaped", "[scene][errors]") {
+TEST_CASE("Words of a scene appear in messages short and escaped", "[common][scene][errors]") {
   CHECK(error_of(std::string("canvas 4 4\nsq\0uare\n", 19)) ==
         "test.scene:2: unknown directive 'sq\\x00uare' (expected canvas, tri or line)");
   CHECK(error_of("canvas 4 4\n\x1b]0;pwned\x07 1\n") ==
@@ -125,7 +126,7 @@ TEST_CASE("Words of a scene appear in messages short and escaped", "[scene][erro
 }
 
 TEST_CASE("A full scene parses with comments, blank lines, tabs, CRLF and optional colours",
-          "[scene]") {
+          "[common][scene]") {
   const std::string text =
       "# A scene that uses every feature of the format.\r\n"
       "\r\n"
@@ -170,7 +171,8 @@ TEST_CASE("A full scene parses with comments, blank lines, tabs, CRLF and option
   CHECK(rgba(fifth.color) == std::array{1, 2, 3, 255});
 }
 
-TEST_CASE("A scene without a background colour is black and may have no primitives", "[scene]") {
+TEST_CASE("A scene without a background colour is black and may have no primitives",
+          "[common][scene]") {
   const Scene scene = parse("canvas 1 16384\n");
   CHECK(scene.width == 1);
   CHECK(scene.height == 16384);
@@ -178,7 +180,8 @@ TEST_CASE("A scene without a background colour is black and may have no primitiv
   CHECK(scene.primitives.empty());
 }
 
-TEST_CASE("A coordinate too small for a double reads as zero, not as out of range", "[scene]") {
+TEST_CASE("A coordinate too small for a double reads as zero, not as out of range",
+          "[common][scene]") {
   const Scene scene = parse("canvas 10 10\ntri 1e-400 -1e-400 4.9e-324 0 1 1\n");
   const auto& triangle = std::get<SceneTriangle>(scene.primitives.at(0));
   CHECK(xy(triangle.vertices[0]) == std::pair<double, double>(0.0, 0.0));
@@ -186,7 +189,7 @@ TEST_CASE("A coordinate too small for a double reads as zero, not as out of rang
   CHECK(triangle.vertices[1].x < 1e-300);
 }
 
-TEST_CASE("Coordinates of exactly plus or minus 2^30 are accepted", "[scene]") {
+TEST_CASE("Coordinates of exactly plus or minus 2^30 are accepted", "[common][scene]") {
   const Scene scene =
       parse("canvas 10 10\ntri 1073741824 -1073741824 1073741824.0 0 -1.073741824e9 0\n");
   const auto& triangle = std::get<SceneTriangle>(scene.primitives.at(0));
@@ -195,7 +198,7 @@ TEST_CASE("Coordinates of exactly plus or minus 2^30 are accepted", "[scene]") {
 }
 
 TEST_CASE("Each scene error is one line naming the source, the line and the problem",
-          "[scene][errors]") {
+          "[common][scene][errors]") {
   struct Case {
     const char* text;
     const char* message;
@@ -280,7 +283,8 @@ TEST_CASE("Each scene error is one line naming the source, the line and the prob
   }
 }
 
-TEST_CASE("A scene with an error returns nothing: the first error is thrown", "[scene][errors]") {
+TEST_CASE("A scene with an error returns nothing: the first error is thrown",
+          "[common][scene][errors]") {
   // Valid primitives before the problem do not come back as a partial scene.
   const std::string text =
       "canvas 10 10\n"
@@ -293,11 +297,13 @@ TEST_CASE("A scene with an error returns nothing: the first error is thrown", "[
   CHECK(error_of(text) == "test.scene:4: y2 is NaN; coordinates must be finite numbers");
 }
 
-TEST_CASE("Scene errors are runtime errors, so callers may catch either", "[scene][errors]") {
+TEST_CASE("Scene errors are runtime errors, so callers may catch either",
+          "[common][scene][errors]") {
   CHECK_THROWS_AS(parse("canvas 0 0\n"), std::runtime_error);
 }
 
-TEST_CASE("load_scene reads a scene file and names the file in its errors", "[scene][files]") {
+TEST_CASE("load_scene reads a scene file and names the file in its errors",
+          "[common][scene][files]") {
   const fs::path folder = fs::current_path() / "scene_test_output";
   fs::remove_all(folder);
   fs::create_directories(folder);

@@ -46,13 +46,14 @@ const TriangleAlgorithm one_pixel_algorithm{
 
 }  // namespace
 
-TEST_CASE("The coverage rules are named top-left, inclusive and approximate", "[algorithm]") {
+TEST_CASE("The coverage rules are named top-left, inclusive and approximate",
+          "[common][algorithm]") {
   CHECK(rule_name(CoverageRule::top_left) == "top-left");
   CHECK(rule_name(CoverageRule::inclusive) == "inclusive");
   CHECK(rule_name(CoverageRule::approximate) == "approximate");
 }
 
-TEST_CASE("Each draw result is described in one line", "[algorithm]") {
+TEST_CASE("Each draw result is described in one line", "[common][algorithm]") {
   CHECK(describe(DrawResult::drawn) == "drawn");
   CHECK(describe(DrawResult::rejected_non_finite) ==
         "not drawn: a vertex coordinate is NaN or infinite");
@@ -60,13 +61,13 @@ TEST_CASE("Each draw result is described in one line", "[algorithm]") {
         "not drawn: a vertex coordinate is outside ±2^30");
 }
 
-TEST_CASE("The triangle limit is the scene limit, 2^30", "[algorithm]") {
+TEST_CASE("The triangle limit is the scene limit, 2^30", "[common][algorithm]") {
   CHECK(max_scene_coordinate == limit);
   CHECK(max_scene_coordinate == std::ldexp(1.0, 30));
 }
 
 TEST_CASE("validate_triangle accepts finite coordinates up to exactly plus or minus 2^30",
-          "[algorithm][validate]") {
+          "[common][algorithm][validate]") {
   CHECK(validate_triangle(ordinary) == DrawResult::drawn);
   CHECK(validate_triangle({glm::dvec2(0, 0), glm::dvec2(0, 0), glm::dvec2(0, 0)}) ==
         DrawResult::drawn);
@@ -77,7 +78,7 @@ TEST_CASE("validate_triangle accepts finite coordinates up to exactly plus or mi
 }
 
 TEST_CASE("validate_triangle refuses NaN and infinities in any coordinate",
-          "[algorithm][validate]") {
+          "[common][algorithm][validate]") {
   for (int index = 0; index < 6; ++index) {
     INFO("coordinate " << index);
     CHECK(validate_triangle(with_coordinate(index, not_a_number)) ==
@@ -90,7 +91,7 @@ TEST_CASE("validate_triangle refuses NaN and infinities in any coordinate",
 }
 
 TEST_CASE("validate_triangle refuses coordinates beyond plus or minus 2^30",
-          "[algorithm][validate]") {
+          "[common][algorithm][validate]") {
   const double just_above = std::nextafter(limit, infinity);
   for (int index = 0; index < 6; ++index) {
     INFO("coordinate " << index);
@@ -107,13 +108,13 @@ TEST_CASE("validate_triangle refuses coordinates beyond plus or minus 2^30",
 }
 
 TEST_CASE("A non-finite coordinate is reported before an out-of-range one",
-          "[algorithm][validate]") {
+          "[common][algorithm][validate]") {
   const Triangle both = {glm::dvec2(2 * limit, 0), glm::dvec2(0, 0), glm::dvec2(0, not_a_number)};
   CHECK(validate_triangle(both) == DrawResult::rejected_non_finite);
 }
 
 TEST_CASE("draw_triangle calls the algorithm once with the triangle and colour it was given",
-          "[algorithm][draw]") {
+          "[common][algorithm][draw]") {
   Canvas canvas(8, 8);
   canvas.enable_write_counts();
   const Triangle triangle = {glm::dvec2(3.4, 5.6), glm::dvec2(7, 0), glm::dvec2(0, 0)};
@@ -124,7 +125,8 @@ TEST_CASE("draw_triangle calls the algorithm once with the triangle and colour i
   CHECK(canvas.outside_writes() == 0);
 }
 
-TEST_CASE("draw_triangle draws nothing for a refused triangle and says why", "[algorithm][draw]") {
+TEST_CASE("draw_triangle draws nothing for a refused triangle and says why",
+          "[common][algorithm][draw]") {
   struct Case {
     Triangle triangle;
     DrawResult expected;
@@ -150,7 +152,8 @@ TEST_CASE("draw_triangle draws nothing for a refused triangle and says why", "[a
   }
 }
 
-TEST_CASE("nearest_pixel rounds to the nearest pixel centre, halves up", "[algorithm][round]") {
+TEST_CASE("nearest_pixel rounds to the nearest pixel centre, halves up",
+          "[common][algorithm][round]") {
   struct Case {
     double value;
     int expected;
@@ -199,7 +202,7 @@ void mark_vertices(Canvas& canvas, glm::ivec2 a, glm::ivec2 b, glm::ivec2 c, Col
 }
 
 TEST_CASE("draw_at_nearest_pixels hands the fill each vertex rounded to its nearest centre",
-          "[algorithm][round]") {
+          "[common][algorithm][round]") {
   Canvas canvas(16, 16);
   canvas.enable_write_counts();
   draw_at_nearest_pixels<mark_vertices>(canvas, {{{2.5, 3.49}, {10.2, 0.5}, {-0.5, 14.51}}},
@@ -208,7 +211,7 @@ TEST_CASE("draw_at_nearest_pixels hands the fill each vertex rounded to its near
 }
 
 TEST_CASE("nearest_pixel is never more than half a pixel away, on random points",
-          "[algorithm][round]") {
+          "[common][algorithm][round]") {
   testing::Random random(7);
   for (int trial = 0; trial < 2000; ++trial) {
     const double range = trial < 1000 ? 100.0 : limit;

@@ -12,7 +12,7 @@
 using tri::ch01::interpolate;
 
 TEST_CASE("interpolate returns one value per integer from i0 to i1, both ends included",
-          "[interpolate]") {
+          "[01_lines][step2][interpolate]") {
   // Every value here is a multiple of 0.5, so the running sum is exact and == is fair.
   CHECK(interpolate(0, 0.0, 4, 2.0) == std::vector<double>{0.0, 0.5, 1.0, 1.5, 2.0});
   CHECK(interpolate(-2, 1.0, 2, 3.0) == std::vector<double>{1.0, 1.5, 2.0, 2.5, 3.0});
@@ -22,17 +22,19 @@ TEST_CASE("interpolate returns one value per integer from i0 to i1, both ends in
 }
 
 TEST_CASE("interpolate with i0 == i1 returns the single value d0, whatever d1 is",
-          "[interpolate]") {
+          "[01_lines][step2][interpolate]") {
   CHECK(interpolate(3, 7.5, 3, -2.0) == std::vector<double>{7.5});
   CHECK(interpolate(-5, 0.0, -5, 0.0) == std::vector<double>{0.0});
 }
 
-TEST_CASE("interpolate follows a decreasing function down to d1", "[interpolate]") {
+TEST_CASE("interpolate follows a decreasing function down to d1",
+          "[01_lines][step2][interpolate]") {
   CHECK(interpolate(0, 10.0, 5, 0.0) == std::vector<double>{10.0, 8.0, 6.0, 4.0, 2.0, 0.0});
   CHECK(interpolate(-1, 1.0, 3, -1.0) == std::vector<double>{1.0, 0.5, 0.0, -0.5, -1.0});
 }
 
-TEST_CASE("interpolate starts at d0 and ends at d1 on seeded random inputs", "[interpolate]") {
+TEST_CASE("interpolate starts at d0 and ends at d1 on seeded random inputs",
+          "[01_lines][step2][interpolate]") {
   tri::testing::Random random(101);
   for (int trial = 0; trial < 500; ++trial) {
     const int i0 = random.integer(-1000, 1000);

@@ -32,30 +32,31 @@ constexpr int two_30 = 1 << 30;
 
 }  // namespace
 
-TEST_CASE("the exact line of a horizontal or vertical segment is its row or column",
-          "[reference]") {
+TEST_CASE("The exact line of a horizontal or vertical segment is its row or column",
+          "[01_lines][step1][reference]") {
   CHECK(describe(exact_line_pixels({0, 3}, {5, 3})) == "(0,3) (1,3) (2,3) (3,3) (4,3) (5,3)");
   CHECK(describe(exact_line_pixels({2, -1}, {2, 3})) == "(2,-1) (2,0) (2,1) (2,2) (2,3)");
 }
 
-TEST_CASE("the exact line of a single point is that point", "[reference]") {
+TEST_CASE("The exact line of a single point is that point", "[01_lines][step1][reference]") {
   CHECK(describe(exact_line_pixels({5, 5}, {5, 5})) == "(5,5)");
 }
 
-TEST_CASE("the exact line from (0,0) to (4,2) has ties at x = 1 and x = 3, rounded up",
-          "[reference]") {
+TEST_CASE("The exact line from (0,0) to (4,2) has ties at x = 1 and x = 3, rounded up",
+          "[01_lines][step1][reference]") {
   // y = x / 2: at x = 1 and x = 3 the line passes exactly halfway between two rows.
   CHECK(describe(exact_line_pixels({0, 0}, {4, 2})) == "(0,0) (1,1)~ (2,1) (3,2)~ (4,2)");
 }
 
-TEST_CASE("the exact line of a steep segment steps along y", "[reference]") {
+TEST_CASE("The exact line of a steep segment steps along y", "[01_lines][step1][reference]") {
   // x = y / 3: 0, 1/3, 2/3, 1 round to 0, 0, 1, 1.
   CHECK(describe(exact_line_pixels({0, 0}, {1, 3})) == "(0,0) (0,1) (1,2) (1,3)");
   // A 45-degree line counts as x-major (|dx| >= |dy|).
   CHECK(describe(exact_line_pixels({0, 0}, {3, -3})) == "(0,0) (1,-1) (2,-2) (3,-3)");
 }
 
-TEST_CASE("the exact line is the same list whichever endpoint comes first", "[reference]") {
+TEST_CASE("The exact line is the same list whichever endpoint comes first",
+          "[01_lines][step1][reference]") {
   CHECK(describe(exact_line_pixels({4, 2}, {0, 0})) == "(0,0) (1,1)~ (2,1) (3,2)~ (4,2)");
   CHECK(describe(exact_line_pixels({1, 3}, {0, 0})) == "(0,0) (0,1) (1,2) (1,3)");
   tri::testing::Random random(7);
@@ -67,15 +68,16 @@ TEST_CASE("the exact line is the same list whichever endpoint comes first", "[re
   }
 }
 
-TEST_CASE("the exact line handles negative coordinates, ties still rounding up", "[reference]") {
+TEST_CASE("The exact line handles negative coordinates, ties still rounding up",
+          "[01_lines][step1][reference]") {
   // y = -1 - (x + 3) / 2: -1, -1.5, -2, -2.5, -3; "up" is towards +y, so -1.5 becomes -1.
   CHECK(describe(exact_line_pixels({-3, -1}, {1, -3})) ==
         "(-3,-1) (-2,-1)~ (-1,-2) (0,-2)~ (1,-3)");
   CHECK(describe(exact_line_pixels({-1, -5}, {-2, -2})) == "(-1,-5) (-1,-4) (-2,-3) (-2,-2)");
 }
 
-TEST_CASE("each exact pixel is within half a pixel of the true line, exactly half at a tie",
-          "[reference]") {
+TEST_CASE("Each exact pixel is within half a pixel of the true line, exactly half at a tie",
+          "[01_lines][step1][reference]") {
   tri::testing::Random random(11);
   for (int trial = 0; trial < 300; ++trial) {
     const glm::ivec2 p0(random.integer(-100, 100), random.integer(-100, 100));
@@ -105,8 +107,8 @@ TEST_CASE("each exact pixel is within half a pixel of the true line, exactly hal
   }
 }
 
-TEST_CASE("the exact pixel at one major coordinate is right for endpoints at plus or minus 2^30",
-          "[reference]") {
+TEST_CASE("The exact pixel at one major coordinate is right for endpoints at plus or minus 2^30",
+          "[01_lines][step1][reference]") {
   // y = 7 + x / 2^29 from (-2^30, 5) to (2^30, 9).
   const glm::ivec2 a0(-two_30, 5), a1(two_30, 9);
   CHECK(describe(exact_line_pixel_at(a0, a1, -two_30)) == "(-1073741824,5)");

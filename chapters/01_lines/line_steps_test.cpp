@@ -19,7 +19,7 @@ void draw_nothing(tri::Canvas&, glm::ivec2, glm::ivec2, tri::Color) {}
 }  // namespace
 
 TEST_CASE("steps_against_exact pairs DDA's two directions on (0,0)-(12,1) with the exact pixels",
-          "[steps]") {
+          "[01_lines][line_steps][steps]") {
   const auto right = steps_against_exact(tri::ch01::draw_line_dda, {0, 0}, {12, 1});
   const auto left = steps_against_exact(tri::ch01::draw_line_dda, {12, 1}, {0, 0});
   REQUIRE(right.size() == 13);
@@ -37,7 +37,7 @@ TEST_CASE("steps_against_exact pairs DDA's two directions on (0,0)-(12,1) with t
   CHECK(left[6].drawn == glm::ivec2(6, 0));   // and down from the right end
 }
 
-TEST_CASE("steps_against_exact steps along y for a steep line", "[steps]") {
+TEST_CASE("steps_against_exact steps along y for a steep line", "[01_lines][line_steps][steps]") {
   const auto steps = steps_against_exact(tri::ch01::draw_line_bresenham, {22, 1}, {20, 13});
   REQUIRE(steps.size() == 13);
   CHECK(steps.front().drawn == glm::ivec2(22, 1));
@@ -47,14 +47,15 @@ TEST_CASE("steps_against_exact steps along y for a steep line", "[steps]") {
   CHECK(steps[3].drawn == glm::ivec2(22, 4));  // toward the bottom end (22, 1)
 }
 
-TEST_CASE("steps_against_exact refuses negative coordinates and a step left empty", "[steps]") {
+TEST_CASE("steps_against_exact refuses negative coordinates and a step left empty",
+          "[01_lines][line_steps][steps]") {
   CHECK_THROWS_AS(steps_against_exact(tri::ch01::draw_line_dda, {-1, 0}, {3, 3}),
                   std::invalid_argument);
   CHECK_THROWS_AS(steps_against_exact(draw_nothing, {0, 0}, {3, 3}), std::logic_error);
 }
 
-TEST_CASE("the star's 24 spokes have 8 tie steps, and the algorithms split 2 against 2 at 6",
-          "[steps]") {
+TEST_CASE("The star's 24 spokes have 8 tie steps, and the algorithms split 2 against 2 at 6",
+          "[01_lines][line_steps][steps]") {
   const auto spokes = star_spokes({32, 32}, 30, 24);
   REQUIRE(spokes.size() == 24);
   CHECK(spokes[0][1] == glm::ivec2(62, 32));

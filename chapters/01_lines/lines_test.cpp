@@ -148,7 +148,7 @@ std::vector<Line> seeded_canvas_lines() {
 
 }  // namespace
 
-TEST_CASE("the seeded random lines cover all eight octants", "[lines]") {
+TEST_CASE("The seeded random lines cover all eight octants", "[01_lines][step3][lines]") {
   std::map<std::string_view, int> count;
   for (const Line& line : seeded_canvas_lines()) ++count[octant_of(line)];
   CHECK(count.size() == 8);
@@ -158,8 +158,8 @@ TEST_CASE("the seeded random lines cover all eight octants", "[lines]") {
   }
 }
 
-TEST_CASE("every line algorithm draws a short line in each octant as its nearest pixels",
-          "[lines]") {
+TEST_CASE("Every line algorithm draws a short line in each octant as its nearest pixels",
+          "[01_lines][step3][lines]") {
   const LineAlgorithm algorithm = GENERATE(from_range(line_algorithms));
   CAPTURE(algorithm.name);
   // From (10,10), a third of a pixel per step: no ties, and truncating 2/3 to 0 would be wrong.
@@ -181,7 +181,8 @@ TEST_CASE("every line algorithm draws a short line in each octant as its nearest
   }
 }
 
-TEST_CASE("every line algorithm draws a zero-length line as exactly its one pixel", "[lines]") {
+TEST_CASE("Every line algorithm draws a zero-length line as exactly its one pixel",
+          "[01_lines][traps][lines]") {
   const LineAlgorithm algorithm = GENERATE(from_range(line_algorithms));
   CAPTURE(algorithm.name);
   for (const glm::ivec2 p :
@@ -194,8 +195,8 @@ TEST_CASE("every line algorithm draws a zero-length line as exactly its one pixe
   }
 }
 
-TEST_CASE("every line algorithm draws both endpoints and one pixel per step of the major axis",
-          "[lines]") {
+TEST_CASE("Every line algorithm draws both endpoints and one pixel per step of the major axis",
+          "[01_lines][traps][lines]") {
   const LineAlgorithm algorithm = GENERATE(from_range(line_algorithms));
   CAPTURE(algorithm.name);
   for (const Line& line : seeded_canvas_lines()) {
@@ -221,8 +222,8 @@ TEST_CASE("every line algorithm draws both endpoints and one pixel per step of t
   }
 }
 
-TEST_CASE("every line algorithm draws the nearest pixel at every step that is not a tie",
-          "[lines]") {
+TEST_CASE("Every line algorithm draws the nearest pixel at every step that is not a tie",
+          "[01_lines][step3][lines]") {
   const LineAlgorithm algorithm = GENERATE(from_range(line_algorithms));
   CAPTURE(algorithm.name);
   for (const Line& line : seeded_canvas_lines()) {
@@ -230,8 +231,8 @@ TEST_CASE("every line algorithm draws the nearest pixel at every step that is no
   }
 }
 
-TEST_CASE("every line algorithm shows, of a line leaving the canvas, the exact pixels on it",
-          "[lines]") {
+TEST_CASE("Every line algorithm shows, of a line leaving the canvas, the exact pixels on it",
+          "[01_lines][step3][lines]") {
   const LineAlgorithm algorithm = GENERATE(from_range(line_algorithms));
   CAPTURE(algorithm.name);
   Random random(77);
@@ -241,8 +242,8 @@ TEST_CASE("every line algorithm shows, of a line leaving the canvas, the exact p
   }
 }
 
-TEST_CASE("every line algorithm draws (0,0)-(4,2), whose steps 1 and 3 are ties, as pinned",
-          "[lines][ties]") {
+TEST_CASE("Every line algorithm draws (0,0)-(4,2), whose steps 1 and 3 are ties, as pinned",
+          "[01_lines][step3][lines][ties]") {
   const PixelSet up{{0, 0}, {1, 1}, {2, 1}, {3, 2}, {4, 2}};    // ties rounded up
   const PixelSet down{{0, 0}, {1, 0}, {2, 1}, {3, 1}, {4, 2}};  // ties rounded down
   const std::map<std::string_view, std::pair<PixelSet, PixelSet>> expected = {
@@ -259,7 +260,7 @@ TEST_CASE("every line algorithm draws (0,0)-(4,2), whose steps 1 and 3 are ties,
 }
 
 TEST_CASE("DDA draws (0,0)-(12,1) differently in the two directions, at its tie x = 6",
-          "[lines][ties]") {
+          "[01_lines][step4][lines][ties]") {
   // Both sums land just below 0.5: 0 + 6 x 1/12 by one ulp, which floor(v + 0.5) still rounds
   // up, and 1 - 6 x 1/12 by three, which it rounds down. The float sum decides the tie.
   PixelSet forward, backward;
@@ -275,9 +276,9 @@ TEST_CASE("DDA draws (0,0)-(12,1) differently in the two directions, at its tie 
 }
 
 TEST_CASE(
-    "line algorithms draw the same pixels in both directions when they promise to, "
-    "and otherwise differ only at ties",
-    "[lines][ties]") {
+    "line algorithms draw the same pixels in both directions when they promise to, and otherwise "
+    "differ only at ties",
+    "[01_lines][step4][lines][ties]") {
   const LineAlgorithm algorithm = GENERATE(from_range(line_algorithms));
   CAPTURE(algorithm.name);
   int lines_that_differ = 0;
@@ -305,7 +306,7 @@ TEST_CASE(
 }
 
 TEST_CASE("Bresenham breaks ties toward the endpoint with the smaller major coordinate",
-          "[lines][ties][bresenham]") {
+          "[01_lines][step5][lines][ties][bresenham]") {
   const LineAlgorithm& bresenham = line_algorithms[2];
   REQUIRE(bresenham.name == "bresenham");
   Random random(5);
@@ -321,7 +322,7 @@ TEST_CASE("Bresenham breaks ties toward the endpoint with the smaller major coor
 }
 
 TEST_CASE("midpoint breaks ties toward p0, the endpoint it starts from",
-          "[lines][ties][midpoint]") {
+          "[01_lines][step6][lines][ties][midpoint]") {
   const LineAlgorithm& midpoint = line_algorithms[3];
   REQUIRE(midpoint.name == "midpoint");
   Random random(6);
@@ -335,7 +336,7 @@ TEST_CASE("midpoint breaks ties toward p0, the endpoint it starts from",
 }
 
 TEST_CASE("midpoint draws what Bresenham draws when p0 has the smaller major coordinate",
-          "[lines][ties][midpoint]") {
+          "[01_lines][step6][lines][ties][midpoint]") {
   // Their decision variables are the same up to sign and offset; only the walking direction
   // differs, because Bresenham sorts the endpoints and midpoint starts from p0.
   const LineAlgorithm& bresenham = line_algorithms[2];
@@ -354,7 +355,7 @@ TEST_CASE("midpoint draws what Bresenham draws when p0 has the smaller major coo
 }
 
 TEST_CASE("line algorithms disagree with round-half-up at a pinned number of tie steps",
-          "[lines][ties]") {
+          "[01_lines][step3][lines][ties]") {
   // Every step of the 2000 seeded lines (drawn p0 -> p1) where the true line passes exactly
   // halfway between two pixels; the numbers below were measured with this test and are quoted
   // in the chapter's README.
@@ -383,7 +384,7 @@ TEST_CASE("line algorithms disagree with round-half-up at a pinned number of tie
 }
 
 TEST_CASE("Bresenham draws a line from -2^30 to 2^30 across a 64x64 canvas column by column",
-          "[lines][bresenham]") {
+          "[01_lines][step5][lines][bresenham]") {
   const LineAlgorithm& bresenham = line_algorithms[2];
   REQUIRE(bresenham.name == "bresenham");
   SECTION("(-2^30, 5) to (2^30, 9) crosses the canvas on row 7") {

@@ -61,7 +61,8 @@ bool eight_connected(const PixelSet& pixels) {
 
 }  // namespace
 
-TEST_CASE("A hand-checked outline is exactly its three lines' pixels", "[wireframe]") {
+TEST_CASE("A hand-checked outline is exactly its three lines' pixels",
+          "[02_wireframe][step1][wireframe]") {
   // Bottom row, left column and the 45-degree diagonal, which is drawn as x = f(y).
   const PixelSet right_triangle{
       {0, 0}, {1, 0}, {2, 0}, {3, 0}, {4, 0},  // bottom
@@ -78,7 +79,7 @@ TEST_CASE("A hand-checked outline is exactly its three lines' pixels", "[wirefra
   CHECK(outline_pixels({{{1, 1}, {7, 3}, {3, 6}}}) == slanted);
 }
 
-TEST_CASE("The outline contains the three vertices", "[wireframe]") {
+TEST_CASE("The outline contains the three vertices", "[02_wireframe][step2][wireframe]") {
   Random random(201);
   for (int i = 0; i < 500; ++i) {
     const Vertices v = random_vertices(random);
@@ -87,7 +88,8 @@ TEST_CASE("The outline contains the three vertices", "[wireframe]") {
   }
 }
 
-TEST_CASE("The outline is exactly the union of the three lines' pixels", "[wireframe]") {
+TEST_CASE("The outline is exactly the union of the three lines' pixels",
+          "[02_wireframe][step1][wireframe]") {
   Random random(202);
   for (int i = 0; i < 500; ++i) {
     const Vertices v = random_vertices(random);
@@ -98,12 +100,13 @@ TEST_CASE("The outline is exactly the union of the three lines' pixels", "[wiref
   }
 }
 
-TEST_CASE("The outline is closed: its pixels are 8-connected", "[wireframe]") {
+TEST_CASE("The outline is closed: its pixels are 8-connected", "[02_wireframe][step2][wireframe]") {
   Random random(203);
   for (int i = 0; i < 500; ++i) CHECK(eight_connected(outline_pixels(random_vertices(random))));
 }
 
-TEST_CASE("Each vertex is written by both edges that meet there", "[wireframe]") {
+TEST_CASE("Each vertex is written by both edges that meet there",
+          "[02_wireframe][step2][wireframe]") {
   Canvas canvas(side, side);
   canvas.enable_write_counts();
   tri::ch02::draw_wireframe_triangle(canvas, {1, 1}, {7, 3}, {3, 6}, tri::colors::white);
@@ -114,7 +117,8 @@ TEST_CASE("Each vertex is written by both edges that meet there", "[wireframe]")
   CHECK(tri::testing::overdrawn_pixels(canvas) == PixelSet{{1, 1}, {7, 3}, {3, 6}});
 }
 
-TEST_CASE("Every order of the vertices draws the same outline", "[wireframe][order]") {
+TEST_CASE("Every order of the vertices draws the same outline",
+          "[02_wireframe][step4][wireframe][order]") {
   // Measured: 0 pixels differ. draw_line_gambetta always walks from the lower end of the
   // axis it steps along, so even the exact halfway ties round the same way in every order.
   Random random(204);
@@ -138,7 +142,7 @@ TEST_CASE("Every order of the vertices draws the same outline", "[wireframe][ord
 }
 
 TEST_CASE("A triangle whose vertices coincide is one pixel, written three times",
-          "[wireframe][degenerate]") {
+          "[02_wireframe][step4][wireframe][degenerate]") {
   Canvas canvas(side, side);
   canvas.enable_write_counts();
   tri::ch02::draw_wireframe_triangle(canvas, {5, 5}, {5, 5}, {5, 5}, tri::colors::white);
@@ -148,12 +152,12 @@ TEST_CASE("A triangle whose vertices coincide is one pixel, written three times"
 }
 
 TEST_CASE("Collinear vertices outline the segment between the outer two",
-          "[wireframe][degenerate]") {
+          "[02_wireframe][step4][wireframe][degenerate]") {
   CHECK(outline_pixels({{{2, 2}, {10, 6}, {6, 4}}}) == line_pixels({2, 2}, {10, 6}));
 }
 
 TEST_CASE("Figure 7-1's triangle lands on the centred canvas with its vertices",
-          "[wireframe][figure]") {
+          "[02_wireframe][step1][wireframe][figure]") {
   const int size = tri::ch02::figure_7_1_canvas_size;
   Canvas canvas(size, size);
   canvas.enable_write_counts();
@@ -171,7 +175,8 @@ TEST_CASE("Figure 7-1's triangle lands on the centred canvas with its vertices",
   CHECK(canvas.outside_writes() == 0);
 }
 
-TEST_CASE("tinyrenderer's three test triangles outline as closed curves", "[wireframe][figure]") {
+TEST_CASE("tinyrenderer's three test triangles outline as closed curves",
+          "[02_wireframe][step3][wireframe][figure]") {
   std::vector<std::size_t> sizes;
   for (const auto& triangle : tri::ch02::tinyrenderer_triangles) {
     const int size = tri::ch02::tinyrenderer_image_size;
@@ -186,7 +191,7 @@ TEST_CASE("tinyrenderer's three test triangles outline as closed curves", "[wire
 }
 
 TEST_CASE("outline_edge_pixels gives each edge's pixels; only the joints are in two",
-          "[wireframe][figure]") {
+          "[02_wireframe][step1][wireframe][figure]") {
   const auto edges = tri::ch02::outline_edge_pixels({1, 1}, {7, 3}, {3, 6});
   PixelSet all, twice;
   for (std::size_t i = 0; i < edges.size(); ++i) {
@@ -210,7 +215,7 @@ TEST_CASE("outline_edge_pixels gives each edge's pixels; only the joints are in 
 }
 
 TEST_CASE("tinyrenderer's red triangle: both edges at its top also draw (50,159)",
-          "[wireframe][figure]") {
+          "[02_wireframe][step1][wireframe][figure]") {
   const auto [a, b, c] = tri::ch02::tinyrenderer_triangles[0].vertices;
   const auto edges = tri::ch02::outline_edge_pixels(a, b, c);
   for (const std::size_t i : {0, 1}) {

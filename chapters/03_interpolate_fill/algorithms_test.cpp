@@ -34,7 +34,8 @@ std::uint32_t most_writes(const Canvas& canvas) {
 
 }  // namespace
 
-TEST_CASE("Chapter 03 registers gambetta_interpolate_fill as approximate", "[registry]") {
+TEST_CASE("Chapter 03 registers gambetta_interpolate_fill as approximate",
+          "[03_interpolate_fill][algorithms][registry]") {
   REQUIRE(triangle_algorithms().size() == 1);
   CHECK(registered().name == "gambetta_interpolate_fill");
   CHECK(registered().chapter == "03_interpolate_fill");
@@ -43,7 +44,7 @@ TEST_CASE("Chapter 03 registers gambetta_interpolate_fill as approximate", "[reg
 }
 
 TEST_CASE("The registered fill is draw_filled_triangle on the nearest pixel centres",
-          "[registry]") {
+          "[03_interpolate_fill][algorithms][registry]") {
   tri::testing::Random random(331);
   for (int i = 0; i < 500; ++i) {
     tri::Triangle triangle;
@@ -56,7 +57,7 @@ TEST_CASE("The registered fill is draw_filled_triangle on the nearest pixel cent
 }
 
 TEST_CASE("Against inclusive coverage the fill misses nothing and draws a pinned excess",
-          "[registry][deviation]") {
+          "[03_interpolate_fill][algorithms][registry][deviation]") {
   // 1000 seeded triangles of non-zero area with vertices in -8..71 on a 64x64 canvas.
   // Measured: 0 missed, 31508 extra against 457737 inclusive pixels (6.9%): centres up to half
   // a pixel outside a left or right edge, because span ends round to the nearest column.
@@ -78,13 +79,15 @@ TEST_CASE("Against inclusive coverage the fill misses nothing and draws a pinned
   CHECK(extra == 31508);
 }
 
-TEST_CASE("tri 0 0 0 0 0 0 draws the one pixel at the origin", "[registry][safety]") {
+TEST_CASE("tri 0 0 0 0 0 0 draws the one pixel at the origin",
+          "[03_interpolate_fill][algorithms][registry][safety]") {
   const Canvas canvas = draw_registered({{{0, 0}, {0, 0}, {0, 0}}}, 16, 16);
   CHECK(tri::testing::written_pixels(canvas) == PixelSet{{0, 0}});
   CHECK(canvas.outside_writes() == 0);
 }
 
-TEST_CASE("Collinear vertices draw a thin line of pixels, each once", "[registry][safety]") {
+TEST_CASE("Collinear vertices draw a thin line of pixels, each once",
+          "[03_interpolate_fill][algorithms][registry][safety]") {
   const tri::Triangle cases[] = {{{{2, 5}, {9, 5}, {5, 5}}},   // horizontal
                                  {{{4, 1}, {4, 12}, {4, 7}}},  // vertical
                                  {{{1, 1}, {13, 7}, {7, 4}}},  // diagonal
@@ -100,7 +103,8 @@ TEST_CASE("Collinear vertices draw a thin line of pixels, each once", "[registry
         PixelSet{{2, 5}, {3, 5}, {4, 5}, {5, 5}, {6, 5}, {7, 5}, {8, 5}, {9, 5}});
 }
 
-TEST_CASE("Vertices at ±1e7 and ±2^30 stay bounded and on the canvas", "[registry][safety]") {
+TEST_CASE("Vertices at ±1e7 and ±2^30 stay bounded and on the canvas",
+          "[03_interpolate_fill][traps][registry][safety]") {
   constexpr double e7 = 1e7, big = 1073741824.0;  // 2^30, the scene limit
   // Both cover the whole 64x64 canvas.
   for (const double r : {e7, big}) {

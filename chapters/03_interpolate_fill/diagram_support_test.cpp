@@ -12,7 +12,8 @@ using namespace tri::ch03;
 using namespace tri::ch03::testing;
 using namespace tri::ch03::figures;
 
-TEST_CASE("Figure labels show at most two decimals and no trailing zeros", "[figures]") {
+TEST_CASE("Figure labels show at most two decimals and no trailing zeros",
+          "[03_interpolate_fill][diagram_support][figures]") {
   CHECK(short_number(8.0 / 3.0) == "2.67");
   CHECK(short_number(1.2) == "1.2");
   CHECK(short_number(6.0) == "6");
@@ -20,7 +21,7 @@ TEST_CASE("Figure labels show at most two decimals and no trailing zeros", "[fig
 }
 
 TEST_CASE("centre_in_triangle counts centres on an edge as inside, in either winding",
-          "[figures]") {
+          "[03_interpolate_fill][diagram_support][figures]") {
   const glm::ivec2 a{0, 0}, b{4, 0}, c{0, 4};
   for (const bool clockwise : {false, true}) {
     const auto inside = [&](glm::ivec2 p) {
@@ -35,7 +36,7 @@ TEST_CASE("centre_in_triangle counts centres on an edge as inside, in either win
 }
 
 TEST_CASE("Step 5's rounded ends reach past the edge at exactly (1,1), (3,1) and (1,2)",
-          "[figures][step5]") {
+          "[03_interpolate_fill][step5][figures]") {
   const auto [a, b, c] = hand_triangle;
   PixelSet outside;
   for (const auto& p : fill_pixels(hand_triangle, 16, 16)) {
@@ -45,7 +46,7 @@ TEST_CASE("Step 5's rounded ends reach past the edge at exactly (1,1), (3,1) and
 }
 
 TEST_CASE("Figure 7-3's wide edge ties every fourth column: in the fill upright, out flipped",
-          "[figures][outline]") {
+          "[03_interpolate_fill][diagram_support][figures][outline]") {
   // Canvas coordinates of the 600x600 figure: the book's centred ones plus 300.
   for (const int flip : {1, -1}) {
     const Vertices v{{{100, 300 - 250 * flip}, {500, 300 + 50 * flip}, {320, 300 + 250 * flip}}};
@@ -66,7 +67,8 @@ TEST_CASE("Figure 7-3's wide edge ties every fourth column: in the fill upright,
   }
 }
 
-TEST_CASE("A half-way tie is found on edges given either way round", "[figures]") {
+TEST_CASE("A half-way tie is found on edges given either way round",
+          "[03_interpolate_fill][diagram_support][figures]") {
   glm::ivec2 forward, backward;
   REQUIRE(halfway_tie({0, 0}, {4, 3}, 2, forward));
   REQUIRE(halfway_tie({4, 3}, {0, 0}, 2, backward));
@@ -76,9 +78,8 @@ TEST_CASE("A half-way tie is found on edges given either way round", "[figures]"
 }
 
 TEST_CASE(
-    "tinyrenderer's green triangle: its 30 outline pixels outside the fill are on the wide "
-    "edges",
-    "[figures][outline]") {
+    "Tinyrenderer's green triangle: its 30 outline pixels outside the fill are on the wide edges",
+    "[03_interpolate_fill][diagram_support][figures][outline]") {
   const Vertices green{{{180, 150}, {120, 160}, {130, 180}}};
   const PixelSet fill = fill_pixels(green, 200, 200);
   const auto line = [](glm::ivec2 a, glm::ivec2 b) {

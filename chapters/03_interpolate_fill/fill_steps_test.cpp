@@ -24,7 +24,8 @@ std::vector<double> values(std::initializer_list<double> list) {
 
 }  // namespace
 
-TEST_CASE("Step 1 sorts the vertices by increasing y whatever their order", "[steps][sort]") {
+TEST_CASE("Step 1 sorts the vertices by increasing y whatever their order",
+          "[03_interpolate_fill][step1][steps][sort]") {
   std::array<int, 3> order{0, 1, 2};
   do {
     const SortedTriangle t = sort_by_y(hand[order[0]], hand[order[1]], hand[order[2]]);
@@ -34,14 +35,16 @@ TEST_CASE("Step 1 sorts the vertices by increasing y whatever their order", "[st
   } while (std::next_permutation(order.begin(), order.end()));
 }
 
-TEST_CASE("Step 1 keeps vertices of equal y in the order they came", "[steps][sort]") {
+TEST_CASE("Step 1 keeps vertices of equal y in the order they came",
+          "[03_interpolate_fill][step1][steps][sort]") {
   const SortedTriangle a = sort_by_y({4, 0}, {0, 0}, {2, 2});
   CHECK((a.p0 == glm::ivec2(4, 0) && a.p1 == glm::ivec2(0, 0)));
   const SortedTriangle b = sort_by_y({0, 0}, {2, 2}, {4, 0});
   CHECK((b.p0 == glm::ivec2(0, 0) && b.p1 == glm::ivec2(4, 0)));
 }
 
-TEST_CASE("Step 2 gives each edge one x per row, both end rows included", "[steps][interpolate]") {
+TEST_CASE("Step 2 gives each edge one x per row, both end rows included",
+          "[03_interpolate_fill][step2][steps][interpolate]") {
   const SortedTriangle t = sort_by_y(hand[0], hand[1], hand[2]);
   const EdgeXs e = interpolate_edges(t, triangle_rows(t));
   CHECK_THAT(e.x01, Approx(values({1, 1 + 5 / 3.0, 1 + 10 / 3.0, 6})).margin(1e-12));
@@ -54,7 +57,7 @@ TEST_CASE("Step 2 gives each edge one x per row, both end rows included", "[step
 }
 
 TEST_CASE("Step 2 on a clipped row range keeps each edge's rows in that range",
-          "[steps][interpolate][clip]") {
+          "[03_interpolate_fill][step2][steps][interpolate][clip]") {
   const SortedTriangle t = sort_by_y(hand[0], hand[1], hand[2]);
   const EdgeXs e = interpolate_edges(t, {2, 4});
   CHECK_THAT(e.x01, Approx(values({1 + 10 / 3.0, 6})).margin(1e-12));  // rows 2..3
@@ -64,14 +67,15 @@ TEST_CASE("Step 2 on a clipped row range keeps each edge's rows in that range",
   CHECK(interpolate_edges(t, {-3, 1}).x12.empty());                    // below P1
 }
 
-TEST_CASE("Step 2 gives a flat edge the single x of its first end", "[steps][interpolate]") {
+TEST_CASE("Step 2 gives a flat edge the single x of its first end",
+          "[03_interpolate_fill][step2][steps][interpolate]") {
   const SortedTriangle t = sort_by_y({0, 0}, {4, 0}, {2, 2});
   const EdgeXs e = interpolate_edges(t, triangle_rows(t));
   CHECK(e.x01 == values({0}));
 }
 
 TEST_CASE("Step 2 refuses to allocate more rows than a canvas has",
-          "[steps][interpolate][safety]") {
+          "[03_interpolate_fill][step2][steps][interpolate][safety]") {
   const SortedTriangle t = sort_by_y({0, -(1 << 30)}, {5, 0}, {0, 1 << 30});
   CHECK_THROWS_AS(interpolate_edges(t, triangle_rows(t)), std::length_error);
   const EdgeXs clipped = interpolate_edges(t, visible_rows(t, 64));
@@ -80,7 +84,8 @@ TEST_CASE("Step 2 refuses to allocate more rows than a canvas has",
   CHECK(clipped.x12.size() == 64);
 }
 
-TEST_CASE("Step 3 makes x012 exactly as long as x02", "[steps][concatenate]") {
+TEST_CASE("Step 3 makes x012 exactly as long as x02",
+          "[03_interpolate_fill][step3][steps][concatenate]") {
   tri::testing::Random random(301);
   for (int i = 0; i < 1000; ++i) {
     const Vertices v = random_vertices(random, -40, 40);
@@ -93,7 +98,8 @@ TEST_CASE("Step 3 makes x012 exactly as long as x02", "[steps][concatenate]") {
   }
 }
 
-TEST_CASE("Step 3 drops x01's copy of row y1 and keeps x12's", "[steps][concatenate]") {
+TEST_CASE("Step 3 drops x01's copy of row y1 and keeps x12's",
+          "[03_interpolate_fill][step3][steps][concatenate]") {
   const SortedTriangle t = sort_by_y(hand[0], hand[1], hand[2]);
   EdgeXs e = interpolate_edges(t, triangle_rows(t));
   const auto x012 = concatenate_short_sides(e.x01, e.x12);
@@ -104,7 +110,8 @@ TEST_CASE("Step 3 drops x01's copy of row y1 and keeps x12's", "[steps][concaten
   CHECK(concatenate_short_sides(values({3, 4}), {}) == values({3, 4}));
 }
 
-TEST_CASE("Step 4 compares x02 and x012 at the middle row", "[steps][left-right]") {
+TEST_CASE("Step 4 compares x02 and x012 at the middle row",
+          "[03_interpolate_fill][step4][steps][left-right]") {
   CHECK(middle_row_index(6) == 3);
   CHECK(middle_row_index(5) == 2);
   CHECK(middle_row_index(1) == 0);
@@ -118,7 +125,8 @@ TEST_CASE("Step 4 compares x02 and x012 at the middle row", "[steps][left-right]
   CHECK(flat_top.x_right == values({2, 3, 4}));
 }
 
-TEST_CASE("Step 4 looks past a middle row where both sides meet", "[steps][left-right]") {
+TEST_CASE("Step 4 looks past a middle row where both sides meet",
+          "[03_interpolate_fill][step4][steps][left-right]") {
   // (0,0) (4,0) (2,1) is two rows tall: its middle row (index 1) is the apex, x = 2 on both.
   const SortedTriangle t = sort_by_y({0, 0}, {4, 0}, {2, 1});
   EdgeXs e = interpolate_edges(t, triangle_rows(t));
@@ -131,7 +139,8 @@ TEST_CASE("Step 4 looks past a middle row where both sides meet", "[steps][left-
   CHECK(spans.x_right == values({4, 2}));
 }
 
-TEST_CASE("Step 5 draws from the nearest column of x_left to that of x_right", "[steps][spans]") {
+TEST_CASE("Step 5 draws from the nearest column of x_left to that of x_right",
+          "[03_interpolate_fill][step5][steps][spans]") {
   Canvas canvas(10, 4);
   canvas.enable_write_counts();
   // Row 0 rounds 2.7 -> 3 and 5.2 -> 5; row 1 rounds halves up: 2.5 -> 3, 4.5 -> 5;
@@ -142,7 +151,8 @@ TEST_CASE("Step 5 draws from the nearest column of x_left to that of x_right", "
         PixelSet{{3, 0}, {4, 0}, {5, 0}, {3, 1}, {4, 1}, {5, 1}, {6, 2}});
 }
 
-TEST_CASE("Step 5 clips rows and spans to the canvas before drawing", "[steps][spans][safety]") {
+TEST_CASE("Step 5 clips rows and spans to the canvas before drawing",
+          "[03_interpolate_fill][step5][steps][spans][safety]") {
   Canvas canvas(4, 3);
   canvas.enable_write_counts();
   // Rows -2..3 of which 0..2 exist; ends far beyond both sides of the canvas.

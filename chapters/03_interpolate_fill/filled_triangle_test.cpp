@@ -45,7 +45,8 @@ bool on_halfway_tie(const Vertices& v, int x, int y) {
 
 }  // namespace
 
-TEST_CASE("A small hand-checked triangle fills exactly these pixels", "[fill]") {
+TEST_CASE("A small hand-checked triangle fills exactly these pixels",
+          "[03_interpolate_fill][step6][fill]") {
   // P0 (1,0), P1 (6,3), P2 (2,5). Rows 0..5 have x02 = 1, 1.2, 1.4, 1.6, 1.8, 2 on the left
   // and x012 = 1, 2.67, 4.33, 6, 4, 2 on the right; each end rounds to the nearest column.
   const PixelSet expected{{1, 0},                                  // 1..1
@@ -59,7 +60,8 @@ TEST_CASE("A small hand-checked triangle fills exactly these pixels", "[fill]") 
   }
 }
 
-TEST_CASE("Every row from y0 to y2 has exactly one span, and no other row is drawn", "[fill]") {
+TEST_CASE("Every row from y0 to y2 has exactly one span, and no other row is drawn",
+          "[03_interpolate_fill][step6][fill]") {
   tri::testing::Random random(311);
   for (int i = 0; i < 1000; ++i) {
     const Vertices v = random_vertices(random, 0, side - 1);
@@ -80,7 +82,7 @@ TEST_CASE("Every row from y0 to y2 has exactly one span, and no other row is dra
   }
 }
 
-TEST_CASE("The three vertices are always filled", "[fill]") {
+TEST_CASE("The three vertices are always filled", "[03_interpolate_fill][step6][fill]") {
   tri::testing::Random random(312);
   for (int i = 0; i < 1000; ++i) {
     const Vertices v = random_vertices(random, 0, side - 1);
@@ -89,7 +91,8 @@ TEST_CASE("The three vertices are always filled", "[fill]") {
   }
 }
 
-TEST_CASE("A horizontal bottom edge (y0 == y1) fills its bottom row", "[fill][flat]") {
+TEST_CASE("A horizontal bottom edge (y0 == y1) fills its bottom row",
+          "[03_interpolate_fill][step6][fill][flat]") {
   const PixelSet expected{
       {0, 0}, {1, 0}, {2, 0}, {3, 0}, {4, 0},  // the flat bottom, 0..4
       {1, 1}, {2, 1}, {3, 1},                  // 1..3
@@ -100,7 +103,8 @@ TEST_CASE("A horizontal bottom edge (y0 == y1) fills its bottom row", "[fill][fl
   }
 }
 
-TEST_CASE("A horizontal top edge (y1 == y2) fills its top row", "[fill][flat]") {
+TEST_CASE("A horizontal top edge (y1 == y2) fills its top row",
+          "[03_interpolate_fill][step6][fill][flat]") {
   const PixelSet expected{
       {2, 0},                                  // the apex
       {1, 1}, {2, 1}, {3, 1},                  // 1..3
@@ -111,7 +115,8 @@ TEST_CASE("A horizontal top edge (y1 == y2) fills its top row", "[fill][flat]") 
   }
 }
 
-TEST_CASE("A triangle two rows tall keeps both rows in every order", "[fill][flat]") {
+TEST_CASE("A triangle two rows tall keeps both rows in every order",
+          "[03_interpolate_fill][step6][fill][flat]") {
   const PixelSet expected{{0, 0}, {1, 0}, {2, 0}, {3, 0}, {4, 0}, {2, 1}};
   for (const PixelSet& pixels : pixels_in_every_order({{{0, 0}, {4, 0}, {2, 1}}})) {
     CHECK(pixels == expected);
@@ -119,14 +124,15 @@ TEST_CASE("A triangle two rows tall keeps both rows in every order", "[fill][fla
 }
 
 TEST_CASE("All three vertices on one row fill one span from the leftmost to the rightmost",
-          "[fill][degenerate]") {
+          "[03_interpolate_fill][step6][fill][degenerate]") {
   const PixelSet expected{{1, 3}, {2, 3}, {3, 3}, {4, 3}, {5, 3}, {6, 3}, {7, 3}, {8, 3}};
   for (const PixelSet& pixels : pixels_in_every_order({{{5, 3}, {1, 3}, {8, 3}}})) {
     CHECK(pixels == expected);
   }
 }
 
-TEST_CASE("Each of the six vertex orders gives the same pixels", "[fill][order]") {
+TEST_CASE("Each of the six vertex orders gives the same pixels",
+          "[03_interpolate_fill][step6][fill][order]") {
   // Measured: 0 pixels differ. Coordinates in 0..11 make many flat edges and exact ties.
   tri::testing::Random random(313);
   int differing = 0;
@@ -137,7 +143,7 @@ TEST_CASE("Each of the six vertex orders gives the same pixels", "[fill][order]"
   CHECK(differing == 0);
 }
 
-TEST_CASE("Each pixel is written at most once", "[fill]") {
+TEST_CASE("Each pixel is written at most once", "[03_interpolate_fill][step6][fill]") {
   tri::testing::Random random(314);
   for (int i = 0; i < 500; ++i) {
     const Vertices v = random_vertices(random, -10, side + 10);
@@ -149,7 +155,8 @@ TEST_CASE("Each pixel is written at most once", "[fill]") {
   }
 }
 
-TEST_CASE("Clipping the rows before step 2 moves only exact halfway ties", "[fill][clip]") {
+TEST_CASE("Clipping the rows before step 2 moves only exact halfway ties",
+          "[03_interpolate_fill][step6][fill][clip]") {
   // Triangles reaching up to 40 pixels past a 32x32 canvas, drawn with and without clipping the
   // rows first. A clipped edge starts from its x evaluated directly at the first visible row,
   // which is exact; the book's running sum may land a hair either side of a halfway x.

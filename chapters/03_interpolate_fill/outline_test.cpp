@@ -39,7 +39,8 @@ PixelSet outline_outside_fill(const Vertices& v, int width, int height) {
   return minus(outline_pixels(v, width, height), fill_pixels(v, width, height));
 }
 
-TEST_CASE("Figure 7-3: the outline stays in the fill, but not upside down", "[outline][figure]") {
+TEST_CASE("Figure 7-3: the outline stays in the fill, but not upside down",
+          "[03_interpolate_fill][step6][outline][figure]") {
   const int size = tri::ch02::figure_7_1_canvas_size;
   const Canvas canvas(size, size);
   const tri::CenteredView view(canvas);
@@ -60,7 +61,7 @@ TEST_CASE("Figure 7-3: the outline stays in the fill, but not upside down", "[ou
 }
 
 TEST_CASE("tinyrenderer's triangles: the outline leaves the fill on edges wider than tall",
-          "[outline][figure]") {
+          "[03_interpolate_fill][step6][outline][figure]") {
   // Measured: 20, 0 and 30 outline pixels outside the fill.
   const auto& triangles = tri::ch02::tinyrenderer_triangles;
   const int size = tri::ch02::tinyrenderer_image_size;
@@ -69,7 +70,8 @@ TEST_CASE("tinyrenderer's triangles: the outline leaves the fill on edges wider 
   CHECK(outline_outside_fill(triangles[2].vertices, size, size).size() == 30);
 }
 
-TEST_CASE("Outline pixels of edges drawn as x = f(y) always lie in the fill", "[outline]") {
+TEST_CASE("Outline pixels of edges drawn as x = f(y) always lie in the fill",
+          "[03_interpolate_fill][step6][outline]") {
   tri::testing::Random random(321);
   for (int i = 0; i < 1000; ++i) {
     const Vertices v = random_vertices(random, 0, 39);

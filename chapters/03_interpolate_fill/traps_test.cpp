@@ -25,7 +25,8 @@ PixelSet spans_pixels(int first_row, const LeftRightXs& spans) {
 
 }  // namespace
 
-TEST_CASE("Trap `i < i1`: every edge array reaches its upper vertex's row", "[traps]") {
+TEST_CASE("Trap `i < i1`: every edge array reaches its upper vertex's row",
+          "[03_interpolate_fill][traps]") {
   const SortedTriangle t = sort_by_y(hand[0], hand[1], hand[2]);
   const EdgeXs e = interpolate_edges(t, triangle_rows(t));
   CHECK(e.x01.size() == 4);  // rows 0..3, not 0..2
@@ -36,7 +37,7 @@ TEST_CASE("Trap `i < i1`: every edge array reaches its upper vertex's row", "[tr
 }
 
 TEST_CASE("Traps `y < P2.y` and `x < x_right`: the top row and each span's right end are drawn",
-          "[traps]") {
+          "[03_interpolate_fill][traps]") {
   const PixelSet pixels = fill_pixels(hand, 16, 16);
   CHECK(pixels.count({2, 5}) == 1);  // row y2, the apex P2
   // The right end of every row: round(x012) = 1, 3, 4, 6, 4, 2 on rows 0..5.
@@ -48,7 +49,7 @@ TEST_CASE("Traps `y < P2.y` and `x < x_right`: the top row and each span's right
 }
 
 TEST_CASE("Trap: without the pop_back, x012 is one row too long and every row above P1 shifts",
-          "[traps][pop_back]") {
+          "[03_interpolate_fill][traps][pop_back]") {
   const SortedTriangle t = sort_by_y(hand[0], hand[1], hand[2]);
   const EdgeXs e = interpolate_edges(t, triangle_rows(t));
   const std::vector<double> x012 = concatenate_short_sides(e.x01, e.x12);
@@ -68,7 +69,7 @@ TEST_CASE("Trap: without the pop_back, x012 is one row too long and every row ab
 }
 
 TEST_CASE("Trap: the port's one-short Interpolate hides its missing pop_back",
-          "[traps][pop_back]") {
+          "[03_interpolate_fill][traps][pop_back]") {
   // Dropping each array's last value mimics `i < i1`. Then x01 no longer ends on row y1, so
   // x01 + x12 happens to have the right length and values, and only the top row is lost.
   const SortedTriangle t = sort_by_y(hand[0], hand[1], hand[2]);
@@ -82,7 +83,7 @@ TEST_CASE("Trap: the port's one-short Interpolate hides its missing pop_back",
 }
 
 TEST_CASE("Trap: span ends are rounded to the nearest column, not cut by an int loop counter",
-          "[traps][rounding]") {
+          "[03_interpolate_fill][traps][rounding]") {
   // The port's `for (int x = x_left; x < x_right; x++)`: the int truncates the start, and the
   // strict comparison drops a right end that is a whole number.
   const auto port_columns = [](double x_left, double x_right) {
@@ -97,7 +98,7 @@ TEST_CASE("Trap: span ends are rounded to the nearest column, not cut by an int 
 }
 
 TEST_CASE("Trap: real vertices are rounded to the nearest pixel centre, also below zero",
-          "[traps][rounding]") {
+          "[03_interpolate_fill][traps][rounding]") {
   const tri::TriangleAlgorithm& fill = triangle_algorithms()[0];
   const auto registered_pixels = [&](const tri::Triangle& triangle) {
     Canvas canvas(16, 16);

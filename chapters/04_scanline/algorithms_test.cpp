@@ -58,7 +58,7 @@ Deviation deviation_on_random_triangles(const TriangleAlgorithm& algorithm) {
 }  // namespace
 
 TEST_CASE("Chapter 04 registers the two-loop and the single-loop fills as approximate",
-          "[registry]") {
+          "[04_scanline][algorithms][registry]") {
   const auto algorithms = tri::ch04::triangle_algorithms();
   REQUIRE(algorithms.size() == 2);
   CHECK(algorithms[0].name == "scanline_two_loops");
@@ -73,7 +73,7 @@ TEST_CASE("Chapter 04 registers the two-loop and the single-loop fills as approx
 }
 
 TEST_CASE("The single-loop fill never misses an inclusive pixel and its int casts add extras",
-          "[registry][deviation]") {
+          "[04_scanline][traps][registry][deviation]") {
   const Deviation d = deviation_on_random_triangles(registered("scanline_single_loop"));
   CHECK(d.triangles == 999);
   CHECK(d.covered == 392828);
@@ -82,7 +82,7 @@ TEST_CASE("The single-loop fill never misses an inclusive pixel and its int cast
 }
 
 TEST_CASE("The two-loop fill both misses and adds pixels against the inclusive truth",
-          "[registry][deviation]") {
+          "[04_scanline][traps][registry][deviation]") {
   const Deviation d = deviation_on_random_triangles(registered("scanline_two_loops"));
   CHECK(d.triangles == 999);
   CHECK(d.covered == 392828);
@@ -90,7 +90,8 @@ TEST_CASE("The two-loop fill both misses and adds pixels against the inclusive t
   CHECK(d.extra == 41734);
 }
 
-TEST_CASE("Registered fills round each vertex to its nearest pixel centre", "[registry]") {
+TEST_CASE("Registered fills round each vertex to its nearest pixel centre",
+          "[04_scanline][algorithms][registry]") {
   for (const auto& algorithm : tri::ch04::triangle_algorithms()) {
     const PixelSet exact = drawn(algorithm, {{{0, 0}, {6, 2}, {2, 5}}});
     CHECK(drawn(algorithm, {{{0.4, -0.5}, {5.5, 2.49}, {1.6, 4.5}}}) == exact);
@@ -99,7 +100,7 @@ TEST_CASE("Registered fills round each vertex to its nearest pixel centre", "[re
 }
 
 TEST_CASE("Registered fills draw nothing for a point or a horizontal segment",
-          "[registry][safety]") {
+          "[04_scanline][algorithms][registry][safety]") {
   for (const auto& algorithm : tri::ch04::triangle_algorithms()) {
     CHECK(drawn(algorithm, {{{0, 0}, {0, 0}, {0, 0}}}).empty());
     CHECK(drawn(algorithm, {{{3, 7}, {30, 7}, {12, 7}}}).empty());
@@ -107,7 +108,7 @@ TEST_CASE("Registered fills draw nothing for a point or a horizontal segment",
 }
 
 TEST_CASE("Registered fills draw a slanted collinear triangle as a thin line of pixels",
-          "[registry][safety]") {
+          "[04_scanline][algorithms][registry][safety]") {
   // Zero area, so the inclusive truth is empty; the article's fills still draw the diagonal.
   const PixelSet diagonal{{0, 0}, {1, 1}, {2, 2}, {3, 3}, {4, 4}};
   CHECK(drawn(registered("scanline_single_loop"), {{{0, 0}, {2, 2}, {4, 4}}}) == diagonal);
@@ -115,9 +116,8 @@ TEST_CASE("Registered fills draw a slanted collinear triangle as a thin line of 
 }
 
 TEST_CASE(
-    "Registered fills stay on the canvas and bounded for vertices at plus or minus 1e7 "
-    "and 2^30",
-    "[registry][safety]") {
+    "Registered fills stay on the canvas and bounded for vertices at plus or minus 1e7 and 2^30",
+    "[04_scanline][traps][registry][safety]") {
   for (const double far : {1e7, 1e7 + 0.3, 1073741824.0}) {
     for (const auto& algorithm : tri::ch04::triangle_algorithms()) {
       Canvas canvas(64, 64);

@@ -25,7 +25,8 @@ int article_float_x(glm::ivec2 start, glm::ivec2 end, int step, int steps) {
 
 }  // namespace
 
-TEST_CASE("Sorting by y puts the vertices bottom to top for all six orders", "[step2]") {
+TEST_CASE("Sorting by y puts the vertices bottom to top for all six orders",
+          "[04_scanline][step2]") {
   for (const auto& triangle : tinyrenderer_triangles) {
     const auto [a, b, c] = triangle.vertices;
     const auto expected = sort_by_y(a, b, c);
@@ -44,7 +45,8 @@ TEST_CASE("Sorting by y puts the vertices bottom to top for all six orders", "[s
   CHECK(sorted.p2 == glm::ivec2(50, 160));
 }
 
-TEST_CASE("Sorting keeps vertices of equal y in the order they were passed", "[step2]") {
+TEST_CASE("Sorting keeps vertices of equal y in the order they were passed",
+          "[04_scanline][step2]") {
   const auto one = sort_by_y({4, 0}, {0, 0}, {2, 3});
   CHECK(one.p0 == glm::ivec2(4, 0));
   CHECK(one.p1 == glm::ivec2(0, 0));
@@ -53,7 +55,8 @@ TEST_CASE("Sorting keeps vertices of equal y in the order they were passed", "[s
   CHECK(other.p1 == glm::ivec2(4, 0));
 }
 
-TEST_CASE("A boundary's x is truncated toward its start vertex, not rounded", "[int-cast]") {
+TEST_CASE("A boundary's x is truncated toward its start vertex, not rounded",
+          "[04_scanline][step2][int-cast]") {
   // Red triangle, boundary A from (10,70) to (50,160), row 72: exact x = 10 + 80/90 = 10.89.
   CHECK(truncated_boundary_x(red[0], red[1], 2, 90) == 10);  // rounding would give 11
   // White triangle, boundary A from (150,1) to (70,180), row 3: exact x = 150 - 160/179 = 149.11.
@@ -65,9 +68,8 @@ TEST_CASE("A boundary's x is truncated toward its start vertex, not rounded", "[
 }
 
 TEST_CASE(
-    "The exact quotient gives the article's float span ends on every row of the test "
-    "triangles",
-    "[int-cast]") {
+    "The exact quotient gives the article's float span ends on every row of the test triangles",
+    "[04_scanline][step2][int-cast]") {
   for (const auto& triangle : tinyrenderer_triangles) {
     const auto [a, b, c] = triangle.vertices;
     const auto t = sort_by_y(a, b, c);
@@ -93,13 +95,14 @@ TEST_CASE(
 }
 
 TEST_CASE("Float arithmetic can land one pixel short where the exact quotient is whole",
-          "[int-cast]") {
+          "[04_scanline][traps][int-cast]") {
   // 7/12 of 108 is exactly 63, but 7/12 in float times 108 is 62.99999 and truncates to 62.
   CHECK(article_float_x({0, 0}, {108, 12}, 7, 12) == 62);
   CHECK(truncated_boundary_x({0, 0}, {108, 12}, 7, 12) == 63);
 }
 
-TEST_CASE("Boundary arithmetic stays exact for vertices at plus or minus 2^30", "[safety]") {
+TEST_CASE("Boundary arithmetic stays exact for vertices at plus or minus 2^30",
+          "[04_scanline][step2][safety]") {
   constexpr int far = 1 << 30;
   constexpr std::int64_t steps = std::int64_t{1} << 31;
   CHECK(truncated_boundary_x({-far, -far}, {far, far}, steps - 1, steps) == far - 1);

@@ -7,7 +7,7 @@
 using tri::testing::PixelSet;
 using tri::testing::written_pixels;
 
-TEST_CASE("The row range of a loop is cut to the canvas rows", "[safety]") {
+TEST_CASE("The row range of a loop is cut to the canvas rows", "[04_scanline][clip][safety]") {
   const tri::Canvas canvas(10, 20);
   const auto inside = tri::ch04::rows_on_canvas(canvas, 3, 7);
   CHECK(inside.first == 3);
@@ -20,7 +20,8 @@ TEST_CASE("The row range of a loop is cut to the canvas rows", "[safety]") {
   CHECK(below.first > below.last);  // empty: the loop body never runs
 }
 
-TEST_CASE("A span is filled between its ends in either order, both ends included", "[spans]") {
+TEST_CASE("A span is filled between its ends in either order, both ends included",
+          "[04_scanline][clip][spans]") {
   tri::Canvas canvas(10, 4);
   canvas.enable_write_counts();
   tri::ch04::fill_span_between(canvas, 1, 6, 3, tri::colors::white);
@@ -31,7 +32,7 @@ TEST_CASE("A span is filled between its ends in either order, both ends included
 }
 
 TEST_CASE("A span reaching far past the canvas is clipped before any pixel is written",
-          "[safety]") {
+          "[04_scanline][clip][safety]") {
   tri::Canvas canvas(10, 4);
   canvas.enable_write_counts();
   const std::int64_t far = std::int64_t{1} << 31;

@@ -10,7 +10,7 @@ using namespace tri::ch04;
 using namespace tri::ch04::figures;
 
 TEST_CASE("On the green triangle the +1 leaves B's last lower-half point at x = 126, not 120",
-          "[figures][step3]") {
+          "[04_scanline][step3][figures]") {
   const auto [a, b, c] = diagram_triangle().vertices;
   const SortedTriangle t = sort_by_y(a, b, c);
   REQUIRE(t.p1 == glm::ivec2(120, 160));
@@ -18,7 +18,7 @@ TEST_CASE("On the green triangle the +1 leaves B's last lower-half point at x = 
 }
 
 TEST_CASE("The green triangle's lower half leaves out 35 centres that lie inside it",
-          "[figures][step4]") {
+          "[04_scanline][step4][figures]") {
   const auto [a, b, c] = diagram_triangle().vertices;
   const SortedTriangle t = sort_by_y(a, b, c);
   const tri::Canvas drawn =

@@ -56,7 +56,7 @@ Gaps gaps_along(glm::ivec2 a, glm::ivec2 b, glm::ivec2 c, bool boundary_a) {
 }  // namespace
 
 TEST_CASE("Boundary B of the lower half stops short of t1 because of the +1 height",
-          "[step3][trap]") {
+          "[04_scanline][step3][trap]") {
   // Red triangle: t0 = (10,70), t1 = (70,80), t2 = (50,160). At row 80, B is 10/11 of the way.
   const auto t = sort_by_y(red[0], red[1], red[2]);
   const auto top = lower_half_ends(t, 80);
@@ -67,7 +67,8 @@ TEST_CASE("Boundary B of the lower half stops short of t1 because of the +1 heig
   CHECK(bottom.b == 10);
 }
 
-TEST_CASE("Step 3 draws exactly the two boundary points of every lower-half row", "[step3]") {
+TEST_CASE("Step 3 draws exactly the two boundary points of every lower-half row",
+          "[04_scanline][step3]") {
   for (const auto& triangle : tinyrenderer_triangles) {
     const auto [a, b, c] = triangle.vertices;
     const auto t = sort_by_y(a, b, c);
@@ -81,7 +82,8 @@ TEST_CASE("Step 3 draws exactly the two boundary points of every lower-half row"
   }
 }
 
-TEST_CASE("Step 3 leaves gaps where a boundary moves more than one column per row", "[step3]") {
+TEST_CASE("Step 3 leaves gaps where a boundary moves more than one column per row",
+          "[04_scanline][step3]") {
   // {triangle index, boundary A?} -> {breaks, missing pixels}, counted on the article's image.
   const std::map<std::pair<int, bool>, std::pair<int, int>> expected{
       {{0, true}, {0, 0}}, {{0, false}, {10, 44}},  // red: B is the shallow bottom edge
@@ -101,7 +103,8 @@ TEST_CASE("Step 3 leaves gaps where a boundary moves more than one column per ro
   CHECK(total_breaks == 26);
 }
 
-TEST_CASE("Step 4 fills each lower-half row from boundary A to boundary B", "[step4]") {
+TEST_CASE("Step 4 fills each lower-half row from boundary A to boundary B",
+          "[04_scanline][step4]") {
   const int expected_counts[] = {286, 1288, 218};
   for (int i = 0; i < 3; ++i) {
     const auto [a, b, c] = tinyrenderer_triangles[i].vertices;
@@ -119,7 +122,7 @@ TEST_CASE("Step 4 fills each lower-half row from boundary A to boundary B", "[st
 }
 
 TEST_CASE("With t0.y == t1.y the lower half is the single pixel t0, whichever vertex that is",
-          "[step4][division-by-zero][order]") {
+          "[04_scanline][traps][step4][division-by-zero][order]") {
   // The +1 makes the segment height 1, so the one row runs B from t0 toward t1 by 0/1.
   CHECK(pixels_of(fill_lower_half, {0, 0}, {4, 0}, {2, 3}) == PixelSet{{0, 0}});
   CHECK(pixels_of(fill_lower_half, {4, 0}, {0, 0}, {2, 3}) == PixelSet{{4, 0}});
@@ -127,7 +130,7 @@ TEST_CASE("With t0.y == t1.y the lower half is the single pixel t0, whichever ve
 }
 
 TEST_CASE("With t1.y == t2.y the lower half misses t1 on the top edge",
-          "[step4][division-by-zero][order]") {
+          "[04_scanline][step4][division-by-zero][order]") {
   // t0 = (2,0); the top edge runs from (0,3) to (4,3). B reaches only 3/4 of the way to t1.
   PixelSet expected{{2, 0}, {2, 1}};
   add_row(expected, 2, 1, 3);
@@ -139,7 +142,7 @@ TEST_CASE("With t1.y == t2.y the lower half misses t1 on the top edge",
 }
 
 TEST_CASE("Steps 3 and 4 draw nothing when all three vertices share a row",
-          "[step3][step4][division-by-zero]") {
+          "[04_scanline][traps][step3][step4][division-by-zero]") {
   // The article would compute 0/0 for alpha and cast the NaN to int: undefined behaviour.
   CHECK(boundary_points({0, 2}, {5, 2}, {3, 2}).empty());
   CHECK(pixels_of(fill_lower_half, {0, 2}, {5, 2}, {3, 2}).empty());
@@ -147,7 +150,7 @@ TEST_CASE("Steps 3 and 4 draw nothing when all three vertices share a row",
 }
 
 TEST_CASE("Steps 3 and 4 stay on the canvas for vertices at plus or minus 1e7 and 2^30",
-          "[safety]") {
+          "[04_scanline][step3][safety]") {
   for (const int far : {10'000'000, 1 << 30}) {
     // Every canvas row lies in the lower half, with A far to the left and B far to the right.
     const glm::ivec2 a{-far, -far}, b{far, far / 2}, c{0, far};

@@ -45,14 +45,15 @@ PixelSet outline_pixels(glm::ivec2 a, glm::ivec2 b, glm::ivec2 c) {
 
 }  // namespace
 
-TEST_CASE("Step 1 draws the three edges of a small triangle and nothing inside", "[step1]") {
+TEST_CASE("Step 1 draws the three edges of a small triangle and nothing inside",
+          "[04_scanline][step1]") {
   // Legs along the axes, hypotenuse one pixel per row from (4,0) to (0,4).
   const PixelSet expected{{0, 0}, {1, 0}, {2, 0}, {3, 0}, {4, 0}, {0, 1},
                           {0, 2}, {0, 3}, {0, 4}, {3, 1}, {2, 2}, {1, 3}};
   CHECK(outline_pixels({0, 0}, {4, 0}, {0, 4}) == expected);
 }
 
-TEST_CASE("Step 1 draws the same pixels for all six vertex orders", "[step1][order]") {
+TEST_CASE("Step 1 draws the same pixels for all six vertex orders", "[04_scanline][step1][order]") {
   for (const auto& triangle : tinyrenderer_triangles) {
     const auto [a, b, c] = triangle.vertices;
     const PixelSet expected = outline_pixels(a, b, c);
@@ -66,7 +67,8 @@ TEST_CASE("Step 1 draws the same pixels for all six vertex orders", "[step1][ord
   }
 }
 
-TEST_CASE("Step 2 draws boundary A from t0 to t2 in red over boundary B in green", "[step2]") {
+TEST_CASE("Step 2 draws boundary A from t0 to t2 in red over boundary B in green",
+          "[04_scanline][step2]") {
   for (const auto& triangle : tinyrenderer_triangles) {
     const auto [a, b, c] = triangle.vertices;
     Canvas canvas(200, 200);
@@ -87,7 +89,8 @@ TEST_CASE("Step 2 draws boundary A from t0 to t2 in red over boundary B in green
   CHECK(canvas.pixel(70, 80) == tri::colors::green);
 }
 
-TEST_CASE("Steps 1 and 2 draw a triangle lying on one row as a segment", "[step1][step2]") {
+TEST_CASE("Steps 1 and 2 draw a triangle lying on one row as a segment",
+          "[04_scanline][step1][step2]") {
   PixelSet segment;
   tri::ch04::testing::add_row(segment, 2, 0, 5);
   CHECK(outline_pixels({0, 2}, {5, 2}, {3, 2}) == segment);
@@ -99,7 +102,7 @@ TEST_CASE("Steps 1 and 2 draw a triangle lying on one row as a segment", "[step1
 }
 
 TEST_CASE("Outline steps far off the canvas stay bounded and write nothing outside it",
-          "[safety]") {
+          "[04_scanline][traps][safety]") {
   // Chapter 01's Bresenham walks only the canvas columns (or rows) of the major axis and skips
   // the steps whose minor coordinate is off the canvas.
   constexpr int far = 10'000'000;

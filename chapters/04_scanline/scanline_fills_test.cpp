@@ -38,7 +38,7 @@ bool has_tied_y(glm::ivec2 a, glm::ivec2 b, glm::ivec2 c) {
 
 }  // namespace
 
-TEST_CASE("Step 6 fills a small hand-checked triangle row by row", "[step6]") {
+TEST_CASE("Step 6 fills a small hand-checked triangle row by row", "[04_scanline][step6]") {
   // t0 = (0,0), t1 = (6,2), t2 = (2,5). A: x = 2i/5. B: 6i/2 for i <= 2, then 6 - 4(i-2)/3.
   // Each truncated toward its start vertex: rows 0..5 span [0,0] [0,3] [0,6] [1,5] [1,4] [2,2].
   PixelSet expected;
@@ -57,7 +57,8 @@ TEST_CASE("Step 6 fills a small hand-checked triangle row by row", "[step6]") {
   CHECK(minus(filled, inside) == PixelSet{{0, 1}, {0, 2}, {1, 3}, {5, 3}, {1, 4}, {4, 4}});
 }
 
-TEST_CASE("Step 5 fills the same triangle with bent B boundaries and row t1.y twice", "[step5]") {
+TEST_CASE("Step 5 fills the same triangle with bent B boundaries and row t1.y twice",
+          "[04_scanline][step5]") {
   // Lower loop B = 6i/3 (the +1 height): [0,0] [0,2] [0,4]; upper loop B = 6 - 4i/4: rows 2..5
   // [0,6] [1,5] [1,4] [2,3].
   PixelSet expected;
@@ -78,7 +79,7 @@ TEST_CASE("Step 5 fills the same triangle with bent B boundaries and row t1.y tw
 }
 
 TEST_CASE("The int cast puts (10,72) into the red triangle though its centre lies outside",
-          "[int-cast][trap]") {
+          "[04_scanline][traps][int-cast][trap]") {
   // Row 72 of the red triangle: boundary A is at x = 10 + 40 * 2/90 = 10.89. Truncation starts
   // the span at 10; rounding would start it at 11, the first centre inside.
   const PixelSet filled = pixels_of(fill_single_loop, red[0], red[1], red[2]);
@@ -90,7 +91,7 @@ TEST_CASE("The int cast puts (10,72) into the red triangle though its centre lie
   CHECK(tri::ch04::single_loop_ends(t, 2).a == 10);
 }
 
-TEST_CASE("The two-loop fill draws row t1.y twice", "[step5]") {
+TEST_CASE("The two-loop fill draws row t1.y twice", "[04_scanline][step5]") {
   const std::size_t expected_overdraw[] = {51, 51, 39};
   for (int i = 0; i < 3; ++i) {
     const auto [a, b, c] = tinyrenderer_triangles[i].vertices;
@@ -101,7 +102,7 @@ TEST_CASE("The two-loop fill draws row t1.y twice", "[step5]") {
 }
 
 TEST_CASE("The published single loop stops one row short and never draws row t2.y",
-          "[step6][trap]") {
+          "[04_scanline][traps][step6][trap]") {
   int missing_rows = 0;
   std::size_t missing_pixels = 0;
   for (const auto& triangle : tinyrenderer_triangles) {
@@ -126,7 +127,7 @@ TEST_CASE("The published single loop stops one row short and never draws row t2.
 }
 
 TEST_CASE("The single loop takes the second half from the first row when t0.y == t1.y",
-          "[step6][division-by-zero]") {
+          "[04_scanline][traps][step6][division-by-zero]") {
   // Without `|| t1.y == t0.y`, row 0 would divide 0 by a lower height of 0.
   const auto t = sort_by_y({0, 0}, {4, 0}, {2, 3});
   const auto first_row = tri::ch04::single_loop_ends(t, 0);
@@ -143,7 +144,7 @@ TEST_CASE("The single loop takes the second half from the first row when t0.y ==
 }
 
 TEST_CASE("The single loop stays in the first half to the top when t1.y == t2.y",
-          "[step6][division-by-zero]") {
+          "[04_scanline][step6][division-by-zero]") {
   PixelSet expected{{2, 0}, {2, 1}};
   add_row(expected, 2, 1, 3);
   add_row(expected, 3, 0, 4);
@@ -154,7 +155,7 @@ TEST_CASE("The single loop stays in the first half to the top when t1.y == t2.y"
 }
 
 TEST_CASE("The two-loop fill on a flat bottom depends on which bottom vertex is t0",
-          "[step5][division-by-zero][order]") {
+          "[04_scanline][step5][division-by-zero][order]") {
   // The second loop runs A over the exact height from t0 and B over height + 1 from t1.
   PixelSet common;
   add_row(common, 0, 0, 4);
@@ -168,7 +169,7 @@ TEST_CASE("The two-loop fill on a flat bottom depends on which bottom vertex is 
 }
 
 TEST_CASE("The two-loop fill on a flat top covers the top edge with its second loop",
-          "[step5][division-by-zero]") {
+          "[04_scanline][step5][division-by-zero]") {
   const PixelSet single = pixels_of(fill_single_loop, {2, 0}, {0, 3}, {4, 3});
   for (const auto& order : vertex_orders({2, 0}, {0, 3}, {4, 3})) {
     const Canvas canvas = drawn_by(fill_two_loops, order[0], order[1], order[2]);
@@ -179,7 +180,7 @@ TEST_CASE("The two-loop fill on a flat top covers the top edge with its second l
 }
 
 TEST_CASE("Fill steps 5 and 6 draw nothing when all three vertices share a row",
-          "[step5][step6][division-by-zero]") {
+          "[04_scanline][traps][step5][step6][division-by-zero]") {
   for (const auto fill : {fill_two_loops, fill_single_loop, fill_single_loop_as_published}) {
     CHECK(pixels_of(fill, {0, 2}, {5, 2}, {3, 2}).empty());
     CHECK(pixels_of(fill, {0, 0}, {0, 0}, {0, 0}).empty());
@@ -187,14 +188,15 @@ TEST_CASE("Fill steps 5 and 6 draw nothing when all three vertices share a row",
 }
 
 TEST_CASE("Collinear vertices on a slant fill a staircase, though the triangle has no area",
-          "[step5][step6]") {
+          "[04_scanline][step5][step6]") {
   CHECK(pixels_of(fill_single_loop, {0, 0}, {2, 2}, {4, 4}) ==
         PixelSet{{0, 0}, {1, 1}, {2, 2}, {3, 3}, {4, 4}});
   CHECK(pixels_of(fill_two_loops, {0, 0}, {2, 2}, {4, 4}) ==
         PixelSet{{0, 0}, {0, 1}, {1, 1}, {1, 2}, {2, 2}, {2, 3}, {3, 3}, {3, 4}, {4, 4}});
 }
 
-TEST_CASE("The two fills part ways on the article's triangles by these pixels", "[step5][step6]") {
+TEST_CASE("The two fills part ways on the article's triangles by these pixels",
+          "[04_scanline][step6][step5]") {
   // {pixels only the two loops draw, pixels only the single loop draws}, per triangle.
   const std::pair<std::size_t, std::size_t> expected[] = {{20, 29}, {60, 10}, {10, 29}};
   for (int i = 0; i < 3; ++i) {
@@ -212,7 +214,7 @@ TEST_CASE("The two fills part ways on the article's triangles by these pixels", 
 }
 
 TEST_CASE("The single loop draws each pixel once and the same pixels for all six vertex orders",
-          "[step6][order]") {
+          "[04_scanline][step6][order]") {
   tri::testing::Random random(4);
   int tied = 0;
   for (int n = 0; n < 300; ++n) {
@@ -231,7 +233,7 @@ TEST_CASE("The single loop draws each pixel once and the same pixels for all six
 }
 
 TEST_CASE("The two-loop fill depends on vertex order only when two vertices share a row",
-          "[step5][order]") {
+          "[04_scanline][step5][order]") {
   tri::testing::Random random(4);
   int order_dependent = 0;
   for (int n = 0; n < 300; ++n) {
@@ -252,7 +254,7 @@ TEST_CASE("The two-loop fill depends on vertex order only when two vertices shar
 }
 
 TEST_CASE("Fill steps stay on the canvas and write each pixel at most twice for huge vertices",
-          "[safety]") {
+          "[04_scanline][traps][safety]") {
   for (const int far : {10'000'000, 1 << 30}) {
     const std::array<std::array<glm::ivec2, 3>, 4> cases{{
         {{{-far, -far}, {far, -far}, {0, far}}},         // covers the whole canvas

@@ -36,7 +36,8 @@ PixelSet drawn(const Triangle& triangle, int size = 32) {
 
 }  // namespace
 
-TEST_CASE("Chapter 05 registers edge_function as an inclusive algorithm", "[registry]") {
+TEST_CASE("Chapter 05 registers edge_function as an inclusive algorithm",
+          "[05_edge_function][step4][registry]") {
   const tri::TriangleAlgorithm& algorithm = edge_function();
   CHECK(algorithm.name == "edge_function");
   CHECK(algorithm.chapter == "05_edge_function");
@@ -46,7 +47,7 @@ TEST_CASE("Chapter 05 registers edge_function as an inclusive algorithm", "[regi
 }
 
 TEST_CASE("edge_function covers exactly the inclusive pixels of random integer triangles",
-          "[registry][random]") {
+          "[05_edge_function][step4][registry][random]") {
   tri::testing::Random random(5301);
   int tested = 0;
   for (int i = 0; i < 3000; ++i) {
@@ -60,7 +61,8 @@ TEST_CASE("edge_function covers exactly the inclusive pixels of random integer t
   CHECK(tested == 2988);  // the other 12 have zero area
 }
 
-TEST_CASE("edge_function rounds each vertex to the nearest pixel centre first", "[registry]") {
+TEST_CASE("edge_function rounds each vertex to the nearest pixel centre first",
+          "[05_edge_function][step4][registry]") {
   tri::testing::Random random(5302);
   for (int i = 0; i < 500; ++i) {
     Triangle triangle{};
@@ -76,7 +78,7 @@ TEST_CASE("edge_function rounds each vertex to the nearest pixel centre first", 
 }
 
 TEST_CASE("edge_function draws the pixel centres on a zero-area triangle's segment",
-          "[registry][degenerate]") {
+          "[05_edge_function][step4][registry][degenerate]") {
   // The truth (docs/DESIGN.md section 6) covers nothing here; the inclusive sign test covers the
   // pixel centres on the segment. Pinned as a documented deviation.
   PixelSet diagonal;
@@ -86,7 +88,8 @@ TEST_CASE("edge_function draws the pixel centres on a zero-area triangle's segme
   CHECK(drawn({glm::dvec2(3, 7), glm::dvec2(3, 7), glm::dvec2(12, 7)}).size() == 10);
 }
 
-TEST_CASE("edge_function stays on the canvas for vertices at 1e7 and 2^30", "[registry][huge]") {
+TEST_CASE("edge_function stays on the canvas for vertices at 1e7 and 2^30",
+          "[05_edge_function][step4][registry][huge]") {
   for (const double far : {1e7, two_to_30}) {
     CHECK(drawn({glm::dvec2(-far, -far), glm::dvec2(far, -far), glm::dvec2(0, far)}).size() ==
           32 * 32);

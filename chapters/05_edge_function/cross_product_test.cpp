@@ -29,7 +29,7 @@ glm::ivec2 random_point(tri::testing::Random& random, int low, int high) {
 }  // namespace
 
 TEST_CASE("The 2-D cross product is u.x v.y - u.y v.x, positive when v turns left of u",
-          "[cross product]") {
+          "[05_edge_function][step2][cross product]") {
   CHECK(cross_2d({1, 0}, {0, 1}) == 1);   // y up: (0, 1) is left of (1, 0)
   CHECK(cross_2d({0, 1}, {1, 0}) == -1);  // and (1, 0) right of (0, 1)
   CHECK(cross_2d({3, 2}, {1, 4}) == 10);
@@ -38,7 +38,7 @@ TEST_CASE("The 2-D cross product is u.x v.y - u.y v.x, positive when v turns lef
 }
 
 TEST_CASE("AB x AP is positive left of AB, zero on its line and negative right of it",
-          "[cross product]") {
+          "[05_edge_function][step2][cross product]") {
   const glm::ivec2 a(1, 1), b(7, 4);
   CHECK(edge_cross(a, b, {2, 5}) == 6 * 4 - 3 * 1);  // left
   CHECK(edge_cross(a, b, {5, 3}) == 0);              // on the line, between a and b
@@ -47,7 +47,7 @@ TEST_CASE("AB x AP is positive left of AB, zero on its line and negative right o
 }
 
 TEST_CASE("The three edge values of any point sum to twice the triangle's signed area",
-          "[cross product]") {
+          "[05_edge_function][step2][cross product]") {
   tri::testing::Random random(5001);
   for (int i = 0; i < 2000; ++i) {
     // ±2^29 keeps the sum itself within 64 bits.
@@ -60,7 +60,8 @@ TEST_CASE("The three edge values of any point sum to twice the triangle's signed
   }
 }
 
-TEST_CASE("Edge values are exact for vertices at plus or minus 2^30", "[cross product][huge]") {
+TEST_CASE("Edge values are exact for vertices at plus or minus 2^30",
+          "[05_edge_function][step2][cross product][huge]") {
   const glm::ivec2 low_left(-two_to_30, -two_to_30), low_right(two_to_30, -two_to_30);
   const glm::ivec2 top_right(two_to_30, two_to_30);
   // The largest magnitude possible: twice the area of half the 2^31 x 2^31 square, 2^62.
@@ -79,7 +80,7 @@ TEST_CASE("Edge values are exact for vertices at plus or minus 2^30", "[cross pr
 }
 
 TEST_CASE("The published edge values are off by BC.x (B.y - A.y) and CA.x (C.y - A.y)",
-          "[cross product][published bug]") {
+          "[05_edge_function][step2][cross product][published bug]") {
   tri::testing::Random random(5003);
   for (int i = 0; i < 5000; ++i) {
     const glm::ivec2 a = random_point(random, -two_to_30, two_to_30);
@@ -95,7 +96,7 @@ TEST_CASE("The published edge values are off by BC.x (B.y - A.y) and CA.x (C.y -
 }
 
 TEST_CASE("The published bug vanishes when AB is horizontal and CA vertical",
-          "[cross product][published bug]") {
+          "[05_edge_function][step2][cross product][published bug]") {
   const glm::ivec2 a(2, 3), b(12, 3), c(2, 9);
   for (int y = 0; y < 16; ++y) {
     for (int x = 0; x < 16; ++x) {

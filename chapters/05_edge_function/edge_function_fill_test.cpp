@@ -59,7 +59,7 @@ using tri::ch02::tinyrenderer_triangles;
 }  // namespace
 
 TEST_CASE("The fill paints exactly the 16 hand-checked pixels of a small triangle, once each",
-          "[fill]") {
+          "[05_edge_function][step4][fill]") {
   const PixelSet expected{{0, 0}, {1, 1}, {2, 1}, {3, 1}, {1, 2}, {2, 2}, {3, 2}, {4, 2},
                           {5, 2}, {6, 2}, {2, 3}, {3, 3}, {4, 3}, {2, 4}, {3, 4}, {2, 5}};
   CHECK(filled({0, 0}, {6, 2}, {2, 5}, 8, 7) == expected);
@@ -67,7 +67,7 @@ TEST_CASE("The fill paints exactly the 16 hand-checked pixels of a small triangl
 }
 
 TEST_CASE("The fill covers the inclusive pixels of random triangles in all six vertex orders",
-          "[fill][random]") {
+          "[05_edge_function][step4][fill][random]") {
   tri::testing::Random random(5201);
   int clockwise = 0, counter_clockwise = 0;
   for (int i = 0; i < 1000; ++i) {
@@ -88,7 +88,8 @@ TEST_CASE("The fill covers the inclusive pixels of random triangles in all six v
   CHECK(counter_clockwise == 3 * 995);
 }
 
-TEST_CASE("The three tinyrenderer triangles cover 2521, 4652 and 666 pixels", "[fill]") {
+TEST_CASE("The three tinyrenderer triangles cover 2521, 4652 and 666 pixels",
+          "[05_edge_function][step4][fill]") {
   const std::array<std::size_t, 3> counts{2521, 4652, 666};
   for (std::size_t i = 0; i < 3; ++i) {
     const auto& [a, b, c] = tinyrenderer_triangles[i].vertices;
@@ -99,7 +100,7 @@ TEST_CASE("The three tinyrenderer triangles cover 2521, 4652 and 666 pixels", "[
 }
 
 TEST_CASE("The published test draws other pixels than the right one on the tinyrenderer triangles",
-          "[fill][published bug]") {
+          "[05_edge_function][step4][fill][published bug]") {
   struct Counts {
     std::size_t right, published, both;
   };
@@ -116,13 +117,14 @@ TEST_CASE("The published test draws other pixels than the right one on the tinyr
   }
 }
 
-TEST_CASE("The published fill draws 2 pixels of the small triangle", "[fill][published bug]") {
+TEST_CASE("The published fill draws 2 pixels of the small triangle",
+          "[05_edge_function][step4][fill][published bug]") {
   CHECK(drawn(fill_triangle_published_bug, {0, 0}, {6, 2}, {2, 5}, 8, 7) ==
         PixelSet{{3, 1}, {3, 2}});
 }
 
 TEST_CASE("Zero-area triangles draw the pixel centres lying exactly on their segment",
-          "[fill][degenerate]") {
+          "[05_edge_function][step4][fill][degenerate]") {
   // tri 0 0 10 10 20 20: the 21 diagonal pixels (0,0) to (20,20).
   PixelSet diagonal;
   for (int i = 0; i <= 20; ++i) diagonal.emplace(i, i);
@@ -145,7 +147,8 @@ TEST_CASE("Zero-area triangles draw the pixel centres lying exactly on their seg
   }
 }
 
-TEST_CASE("Every vertex on the canvas is drawn, up to the last row and column", "[fill][box]") {
+TEST_CASE("Every vertex on the canvas is drawn, up to the last row and column",
+          "[05_edge_function][traps][fill][box]") {
   // A `<` in either box loop, or a clamp to the width instead of width - 1, would break this.
   const PixelSet pixels = filled({0, 0}, {31, 31}, {0, 31}, 32, 32);
   CHECK(pixels.count({0, 0}) == 1);
@@ -154,13 +157,14 @@ TEST_CASE("Every vertex on the canvas is drawn, up to the last row and column", 
   CHECK(pixels.size() == 32 * 33 / 2);
 }
 
-TEST_CASE("A triangle entirely off the canvas draws nothing", "[fill][box]") {
+TEST_CASE("A triangle entirely off the canvas draws nothing",
+          "[05_edge_function][step4][fill][box]") {
   CHECK(filled({-30, -50}, {-2, 60}, {-9, 4}, 32, 32).empty());
   CHECK(filled({40, 0}, {50, 10}, {45, 30}, 32, 32).empty());
 }
 
 TEST_CASE("Vertices at 1e7 and 2^30 are clipped to the canvas with no outside writes",
-          "[fill][huge]") {
+          "[05_edge_function][step4][fill][huge]") {
   // Covers the whole canvas.
   CHECK(filled({-two_to_30, -two_to_30}, {two_to_30, -two_to_30}, {0, two_to_30}, 32, 32).size() ==
         32 * 32);

@@ -37,7 +37,7 @@ const PixelSet hand_checked_pixels{{0, 0}, {1, 1}, {2, 1}, {3, 1}, {1, 2}, {2, 2
 }  // namespace
 
 TEST_CASE("The sign test accepts three values of one sign, zeros included, and nothing mixed",
-          "[inside]") {
+          "[05_edge_function][step3][inside]") {
   CHECK(same_sign_or_zero({1, 2, 3}));
   CHECK(same_sign_or_zero({-1, -2, -3}));
   CHECK(same_sign_or_zero({0, 2, 3}));
@@ -47,7 +47,8 @@ TEST_CASE("The sign test accepts three values of one sign, zeros included, and n
   CHECK_FALSE(same_sign_or_zero({-1, 0, 3}));
 }
 
-TEST_CASE("The inside test picks exactly the hand-checked pixels of a small triangle", "[inside]") {
+TEST_CASE("The inside test picks exactly the hand-checked pixels of a small triangle",
+          "[05_edge_function][step3][inside]") {
   const PixelSet inside =
       pixels_passing(8, 7, [](glm::ivec2 p) { return inside_triangle(a, b, c, p); });
   CHECK(inside == hand_checked_pixels);
@@ -55,14 +56,15 @@ TEST_CASE("The inside test picks exactly the hand-checked pixels of a small tria
   CHECK(edge_cross(a, b, c) == 26);
 }
 
-TEST_CASE("The inside test includes the vertices and the pixel centres on the edges", "[inside]") {
+TEST_CASE("The inside test includes the vertices and the pixel centres on the edges",
+          "[05_edge_function][step3][inside]") {
   for (const glm::ivec2 vertex : {a, b, c}) CHECK(inside_triangle(a, b, c, vertex));
   CHECK(inside_triangle(a, b, c, {3, 1}));        // on AB
   CHECK_FALSE(inside_triangle(a, b, c, {4, 1}));  // just right of AB
 }
 
 TEST_CASE("The inside test answers the same for both windings and all six vertex orders",
-          "[inside]") {
+          "[05_edge_function][step3][inside]") {
   tri::testing::Random random(5101);
   for (int i = 0; i < 300; ++i) {
     std::array<glm::ivec2, 3> v{};
@@ -80,7 +82,7 @@ TEST_CASE("The inside test answers the same for both windings and all six vertex
 }
 
 TEST_CASE("The article's all-non-negative test alone loses every clockwise triangle",
-          "[inside][winding]") {
+          "[05_edge_function][step3][inside][winding]") {
   // tinyrenderer's first triangle is clockwise with y up: AB x AC < 0.
   const auto [t0, t1, t2] = tri::ch02::tinyrenderer_triangles[0].vertices;
   REQUIRE(edge_cross(t0, t1, t2) == -5000);
@@ -96,7 +98,8 @@ TEST_CASE("The article's all-non-negative test alone loses every clockwise trian
         }).size() == 2521);
 }
 
-TEST_CASE("For a zero-area triangle only the points on its line pass", "[inside][degenerate]") {
+TEST_CASE("For a zero-area triangle only the points on its line pass",
+          "[05_edge_function][step3][inside][degenerate]") {
   // Collinear vertices: the three values sum to 0, so they pass only when all three are 0.
   const glm::ivec2 p0(0, 0), p1(10, 10), p2(20, 20);
   CHECK(inside_triangle(p0, p1, p2, {7, 7}));
@@ -107,7 +110,7 @@ TEST_CASE("For a zero-area triangle only the points on its line pass", "[inside]
 }
 
 TEST_CASE("The published inside test keeps 2 of the 16 pixels of the small triangle",
-          "[inside][published bug]") {
+          "[05_edge_function][step3][inside][published bug]") {
   const PixelSet published =
       pixels_passing(8, 7, [](glm::ivec2 p) { return inside_triangle_published_bug(a, b, c, p); });
   CHECK(published == PixelSet{{3, 1}, {3, 2}});

@@ -80,7 +80,8 @@ std::vector<PixelTriangle> triangles_reaching(std::uint64_t seed, int count, int
 
 }  // namespace
 
-TEST_CASE("Chapter 06 registers barycentric_float and barycentric_double", "[06][registry]") {
+TEST_CASE("Chapter 06 registers barycentric_float and barycentric_double",
+          "[06_barycentric][step6][06][registry]") {
   const auto algorithms = tri::ch06::triangle_algorithms();
   REQUIRE(algorithms.size() == 2);
   CHECK(algorithms[0].name == "barycentric_float");
@@ -94,7 +95,7 @@ TEST_CASE("Chapter 06 registers barycentric_float and barycentric_double", "[06]
 }
 
 TEST_CASE("The registered algorithms round the vertices to the nearest pixel centre",
-          "[06][registry]") {
+          "[06_barycentric][step6][06][registry]") {
   for (const TriangleAlgorithm& algorithm : tri::ch06::triangle_algorithms()) {
     Canvas canvas(8, 8);
     canvas.enable_write_counts();
@@ -107,7 +108,7 @@ TEST_CASE("The registered algorithms round the vertices to the nearest pixel cen
 }
 
 TEST_CASE("Both algorithms cover exactly the inclusive pixels on a 256x256 canvas",
-          "[06][registry][deviation]") {
+          "[06_barycentric][step6][06][registry][deviation]") {
   const auto triangles = triangles_on_canvas(608, 200, 256);
   for (const TriangleAlgorithm& algorithm : tri::ch06::triangle_algorithms()) {
     const Deviation deviation = measure(algorithm, triangles, 256);
@@ -119,7 +120,7 @@ TEST_CASE("Both algorithms cover exactly the inclusive pixels on a 256x256 canva
 }
 
 TEST_CASE("Far outside the canvas float deviates from 10^4 on, double only beyond 10^7",
-          "[06][registry][deviation]") {
+          "[06_barycentric][step6][06][registry][deviation]") {
   const TriangleAlgorithm& with_float = algorithm_named("barycentric_float");
   const TriangleAlgorithm& with_double = algorithm_named("barycentric_double");
   struct Expected {
@@ -152,7 +153,8 @@ TEST_CASE("Far outside the canvas float deviates from 10^4 on, double only beyon
   }
 }
 
-TEST_CASE("Degenerate and huge triangles draw safely through the registry", "[06][registry]") {
+TEST_CASE("Degenerate and huge triangles draw safely through the registry",
+          "[06_barycentric][step6][06][registry]") {
   constexpr double huge = 1 << 30;
   for (const TriangleAlgorithm& algorithm : tri::ch06::triangle_algorithms()) {
     INFO(algorithm.name);

@@ -21,7 +21,7 @@ using tri::testing::Random;
 namespace {}  // namespace
 
 TEST_CASE("The cross product of the two rows holds both weights and twice the area",
-          "[06][barycentric]") {
+          "[06_barycentric][step2][06][barycentric]") {
   const auto [a, b, c] = tri::ch06::hand_checked_triangle;
   // P - A = (2, 2) = 2/9 AB + 4/9 AC, and AB x AC = 5*4 - 2*1 = 18.
   CHECK(cross_of_rows<double>(a, b, c, {3, 3}) == glm::dvec3(4, 8, 18));
@@ -30,7 +30,8 @@ TEST_CASE("The cross product of the two rows holds both weights and twice the ar
   CHECK(cross_of_rows<double>(a, b, c, {-40, 7}).z == 18);
 }
 
-TEST_CASE("The weights of a hand-checked point are 1/3, 2/9 and 4/9", "[06][barycentric]") {
+TEST_CASE("The weights of a hand-checked point are 1/3, 2/9 and 4/9",
+          "[06_barycentric][step2][06][barycentric]") {
   const auto [a, b, c] = tri::ch06::hand_checked_triangle;
   const Weights<double> w = barycentric<double>(a, b, c, {3, 3});
   CHECK(w.x == Approx(1.0 / 3.0).epsilon(1e-15));
@@ -39,7 +40,7 @@ TEST_CASE("The weights of a hand-checked point are 1/3, 2/9 and 4/9", "[06][bary
 }
 
 TEST_CASE("The article's return order puts C's weight second, ours is A, B, C",
-          "[06][barycentric]") {
+          "[06_barycentric][traps][06][barycentric]") {
   // The article returns (1 - (u.x + u.y)/u.z, u.y/u.z, u.x/u.z): with its rows starting AB, AC,
   // u.x/u.z belongs to B, so its vector reads (A, C, B). At P = B that shows as (0, 0, 1).
   const glm::ivec2 a(0, 0), b(1, 0), c(0, 1);
@@ -50,7 +51,7 @@ TEST_CASE("The article's return order puts C's weight second, ours is A, B, C",
 }
 
 TEST_CASE("Each vertex has the weights (1,0,0), (0,1,0), (0,0,1) exactly, even at 2^30",
-          "[06][barycentric]") {
+          "[06_barycentric][step2][06][barycentric]") {
   Random random(601);
   int checked = 0;
   for (int i = 0; i < 2000; ++i) {
@@ -75,7 +76,7 @@ TEST_CASE("Each vertex has the weights (1,0,0), (0,1,0), (0,0,1) exactly, even a
 }
 
 TEST_CASE("The weights sum to 1 and rebuild the pixel they were computed for",
-          "[06][barycentric]") {
+          "[06_barycentric][step2][06][barycentric]") {
   Random random(602);
   for (int i = 0; i < 2000; ++i) {
     const glm::ivec2 a = random_point(random, -1000, 1000);
@@ -91,7 +92,8 @@ TEST_CASE("The weights sum to 1 and rebuild the pixel they were computed for",
   }
 }
 
-TEST_CASE("Swapping two vertices swaps their weights, whatever the winding", "[06][barycentric]") {
+TEST_CASE("Swapping two vertices swaps their weights, whatever the winding",
+          "[06_barycentric][step2][06][barycentric]") {
   const auto [a, b, c] = tri::ch06::hand_checked_triangle;
   const glm::ivec2 p(3, 3);
   const Weights<double> abc = barycentric<double>(a, b, c, p);
@@ -105,7 +107,8 @@ TEST_CASE("Swapping two vertices swaps their weights, whatever the winding", "[0
   CHECK(cab.z == Approx(abc.y));
 }
 
-TEST_CASE("A zero-area triangle gets the weights (-1,1,1) from the guard", "[06][barycentric]") {
+TEST_CASE("A zero-area triangle gets the weights (-1,1,1) from the guard",
+          "[06_barycentric][step2][06][barycentric]") {
   const std::array<std::array<glm::ivec2, 3>, 5> degenerate{{
       {{{0, 0}, {0, 0}, {0, 0}}},  // all three equal
       {{{2, 2}, {2, 2}, {9, 6}}},  // two equal
@@ -122,7 +125,8 @@ TEST_CASE("A zero-area triangle gets the weights (-1,1,1) from the guard", "[06]
   }
 }
 
-TEST_CASE("The smallest non-zero area of integer vertices passes the guard", "[06][barycentric]") {
+TEST_CASE("The smallest non-zero area of integer vertices passes the guard",
+          "[06_barycentric][traps][06][barycentric]") {
   // Twice the area is a whole number: 0 or at least 1. So the guard's threshold belongs between
   // 0 and 1 - any float epsilon, 1e-7 or 1e-45, lands there only because of that.
   const glm::ivec2 a(0, 0), b(1, 0), c(0, 1);
@@ -131,7 +135,8 @@ TEST_CASE("The smallest non-zero area of integer vertices passes the guard", "[0
   CHECK(barycentric<double>({0, 0}, {2, 1}, {4, 3}, {2, 1}) == Weights<double>(0, 1, 0));
 }
 
-TEST_CASE("The inside test keeps zero weights and rejects a negative one", "[06][inside]") {
+TEST_CASE("The inside test keeps zero weights and rejects a negative one",
+          "[06_barycentric][step2][06][inside]") {
   CHECK(is_inside(Weights<double>(1, 0, 0)));
   CHECK(is_inside(Weights<double>(0.5, 0.5, 0)));
   CHECK(is_inside(Weights<double>(0.5, 0.5, -0.0)));
@@ -140,7 +145,7 @@ TEST_CASE("The inside test keeps zero weights and rejects a negative one", "[06]
 }
 
 TEST_CASE("NaN weights pass the inside test, because every comparison with NaN is false",
-          "[06][inside]") {
+          "[06_barycentric][step3][06][inside]") {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const double inf = std::numeric_limits<double>::infinity();
   CHECK(is_inside(Weights<double>(nan, nan, nan)));
@@ -150,7 +155,7 @@ TEST_CASE("NaN weights pass the inside test, because every comparison with NaN i
 }
 
 TEST_CASE("Without the guard a zero area gives NaN on the line and opposite infinities off it",
-          "[06][barycentric]") {
+          "[06_barycentric][step2][06][barycentric]") {
   const glm::ivec2 a(1, 1), b(9, 5), c(3, 2);
   // (5, 3) lies on the line: every weight is 0/0.
   const Weights<double> on_line = barycentric_unguarded<double>(a, b, c, {5, 3});

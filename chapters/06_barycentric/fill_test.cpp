@@ -32,7 +32,8 @@ PixelSet unguarded_pixels(const PixelTriangle& t, int width, int height) {
 
 }  // namespace
 
-TEST_CASE("The hand-checked triangle fills exactly its 13 pixels", "[06][fill]") {
+TEST_CASE("The hand-checked triangle fills exactly its 13 pixels",
+          "[06_barycentric][step4][06][fill]") {
   // Rows from the three edge inequalities x <= 5y - 4, x + y <= 8 and 2x >= y + 1.
   const PixelSet expected{{1, 1},                                  // y = 1
                           {2, 2}, {3, 2}, {4, 2}, {5, 2}, {6, 2},  // y = 2
@@ -43,7 +44,7 @@ TEST_CASE("The hand-checked triangle fills exactly its 13 pixels", "[06][fill]")
   CHECK(filled_pixels<float>(tri::ch06::hand_checked_triangle, 8, 8) == expected);
 }
 
-TEST_CASE("Every vertex order fills the same pixels", "[06][fill]") {
+TEST_CASE("Every vertex order fills the same pixels", "[06_barycentric][step4][06][fill]") {
   Random random(603);
   std::vector<PixelTriangle> triangles{tri::ch06::hand_checked_triangle};
   for (const auto& t : tri::ch02::tinyrenderer_triangles) triangles.push_back(t.vertices);
@@ -62,7 +63,8 @@ TEST_CASE("Every vertex order fills the same pixels", "[06][fill]") {
   }
 }
 
-TEST_CASE("No pixel is written twice and none outside the canvas", "[06][fill]") {
+TEST_CASE("No pixel is written twice and none outside the canvas",
+          "[06_barycentric][step4][06][fill]") {
   Random random(604);
   for (int i = 0; i < 100; ++i) {
     const glm::ivec2 a = random_point(random, -40, 104);
@@ -74,7 +76,8 @@ TEST_CASE("No pixel is written twice and none outside the canvas", "[06][fill]")
   }
 }
 
-TEST_CASE("tinyrenderer's three triangles cover exactly their inclusive pixels", "[06][fill]") {
+TEST_CASE("tinyrenderer's three triangles cover exactly their inclusive pixels",
+          "[06_barycentric][step4][06][fill]") {
   const std::array<std::size_t, 3> counts{2521, 4652, 666};
   for (std::size_t i = 0; i < 3; ++i) {
     const auto [a, b, c] = tri::ch02::tinyrenderer_triangles[i].vertices;
@@ -85,7 +88,7 @@ TEST_CASE("tinyrenderer's three triangles cover exactly their inclusive pixels",
   }
 }
 
-TEST_CASE("Zero-area triangles draw nothing", "[06][fill][degenerate]") {
+TEST_CASE("Zero-area triangles draw nothing", "[06_barycentric][step3][06][fill][degenerate]") {
   const std::array<PixelTriangle, 6> degenerate{{
       {{{0, 0}, {0, 0}, {0, 0}}},  // tri 0 0 0 0 0 0
       {{{3, 4}, {3, 4}, {3, 4}}},  // all three equal, inside the canvas
@@ -105,7 +108,7 @@ TEST_CASE("Zero-area triangles draw nothing", "[06][fill][degenerate]") {
 }
 
 TEST_CASE("Without the guard a zero-area triangle draws the pixel centres on its segment",
-          "[06][fill][degenerate]") {
+          "[06_barycentric][step3][06][fill][degenerate]") {
   // Each of these pixels has the weights (NaN, NaN, NaN), which the inside test lets through.
   CHECK(unguarded_pixels({{{0, 0}, {0, 0}, {0, 0}}}, 12, 12) == PixelSet{{0, 0}});
   CHECK(unguarded_pixels({{{1, 1}, {3, 2}, {9, 5}}}, 12, 12) ==
@@ -117,7 +120,7 @@ TEST_CASE("Without the guard a zero-area triangle draws the pixel centres on its
 }
 
 TEST_CASE("With the guard removed a triangle of non-zero area fills the same pixels",
-          "[06][fill]") {
+          "[06_barycentric][step4][06][fill]") {
   Random random(605);
   for (int i = 0; i < 50; ++i) {
     const glm::ivec2 a = random_point(random, -10, 40);
@@ -129,7 +132,7 @@ TEST_CASE("With the guard removed a triangle of non-zero area fills the same pix
 }
 
 TEST_CASE("Colouring by the weights shows each vertex's own colour at its pixel",
-          "[06][fill][weights]") {
+          "[06_barycentric][step5][06][fill][weights]") {
   const auto [a, b, c] = tri::ch06::hand_checked_triangle;
   Canvas canvas(8, 8);
   canvas.enable_write_counts();

@@ -44,7 +44,7 @@ std::optional<SearchResult> first_float_double_disagreement() {
 }  // namespace
 
 TEST_CASE("A seeded search finds the triangle where float and double fill different pixels",
-          "[06][precision]") {
+          "[06_barycentric][step6][06][precision]") {
   const auto found = first_float_double_disagreement();
   REQUIRE(found.has_value());
   CHECK(found->attempt == 3);
@@ -52,7 +52,7 @@ TEST_CASE("A seeded search finds the triangle where float and double fill differ
 }
 
 TEST_CASE("On the kept triangle double fills the exact set and float misses one edge pixel",
-          "[06][precision]") {
+          "[06_barycentric][step6][06][precision]") {
   const auto [a, b, c] = tri::ch06::float_double_disagreement;
   const PixelSet exact = inclusive_pixels(a, b, c, 16, 16);
   const PixelSet with_double = filled_pixels<double>({a, b, c}, 16, 16);
@@ -67,7 +67,7 @@ TEST_CASE("On the kept triangle double fills the exact set and float misses one 
 }
 
 TEST_CASE("Float sees an area of 2^21 in a zero-area triangle 10^7 away and draws 7 pixels",
-          "[06][precision][degenerate]") {
+          "[06_barycentric][step6][06][precision][degenerate]") {
   const auto [a, b, c] = tri::ch06::collinear_at_ten_million;
   // Exactly collinear: the 64-bit cross product is 0.
   CHECK((static_cast<long long>(b.x) - a.x) * (static_cast<long long>(c.y) - a.y) ==
@@ -84,7 +84,7 @@ TEST_CASE("Float sees an area of 2^21 in a zero-area triangle 10^7 away and draw
 }
 
 TEST_CASE("At 10^7 and 2^30 float weights stay finite and the fill stays on the canvas",
-          "[06][precision]") {
+          "[06_barycentric][float_vs_double][06][precision]") {
   Random random(607);
   for (const int reach : {10'000'000, (1 << 30) - 64}) {
     for (int i = 0; i < 100; ++i) {

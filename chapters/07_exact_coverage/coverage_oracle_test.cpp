@@ -38,7 +38,8 @@ constexpr double unit = 1.0 / 256;
 
 }  // namespace
 
-TEST_CASE("top and left edges are recognised with y up and counter-clockwise winding") {
+TEST_CASE("Top and left edges are recognised with y up and counter-clockwise winding",
+          "[07_exact_coverage][step1]") {
   using tri::ch07::is_top_left_edge;
   CHECK(is_top_left_edge({4, 4}, {0, 4}));        // horizontal, right to left: top
   CHECK_FALSE(is_top_left_edge({0, 0}, {4, 0}));  // horizontal, left to right: bottom
@@ -48,7 +49,8 @@ TEST_CASE("top and left edges are recognised with y up and counter-clockwise win
   CHECK_FALSE(is_top_left_edge({4, 0}, {0, 4}));
 }
 
-TEST_CASE("the oracle covers a right triangle with legs on pixel centres by the top-left rule") {
+TEST_CASE("The oracle covers a right triangle with legs on pixel centres by the top-left rule",
+          "[07_exact_coverage][step3]") {
   // Inside: (1,1) (1,2) (2,1). On the left leg x = 0: (0,1) (0,2) (0,3) are kept; the bottom leg
   // and the hypotenuse are bottom and right edges; the vertices (0,0) and (0,4) touch one.
   const PixelSet expected{{0, 1}, {0, 2}, {0, 3}, {1, 1}, {1, 2}, {2, 1}};
@@ -59,7 +61,8 @@ TEST_CASE("the oracle covers a right triangle with legs on pixel centres by the 
   CHECK(covered_pixels(ccw) == expected);
 }
 
-TEST_CASE("the oracle covers a rectangle split in two exactly once per pixel") {
+TEST_CASE("The oracle covers a rectangle split in two exactly once per pixel",
+          "[07_exact_coverage][step1]") {
   const Triangle lower{{{0, 0}, {4, 0}, {4, 3}}};
   const Triangle upper{{{0, 0}, {4, 3}, {0, 3}}};
   const PixelSet a = oracle_pixels(lower), b = oracle_pixels(upper);
@@ -76,24 +79,28 @@ TEST_CASE("the oracle covers a rectangle split in two exactly once per pixel") {
   CHECK(a == PixelSet{{2, 1}, {3, 1}, {3, 2}});
 }
 
-TEST_CASE("a 1/256-pixel triangle covers a centre exactly on its horizontal top edge") {
+TEST_CASE("a 1/256-pixel triangle covers a centre exactly on its horizontal top edge",
+          "[07_exact_coverage][step3]") {
   const Triangle t{{{5 + unit, 5}, {5 - unit, 5}, {5, 5 - unit}}};
   CHECK(oracle_pixels(t) == PixelSet{{5, 5}});
 }
 
-TEST_CASE("a 1/256-pixel triangle does not cover a centre exactly on its horizontal bottom edge") {
+TEST_CASE("a 1/256-pixel triangle does not cover a centre exactly on its horizontal bottom edge",
+          "[07_exact_coverage][step1]") {
   const Triangle t{{{5 - unit, 5}, {5 + unit, 5}, {5, 5 + unit}}};
   CHECK(oracle_pixels(t).empty());
 }
 
-TEST_CASE("a 1/256-pixel triangle covers a centre strictly inside it") {
+TEST_CASE("a 1/256-pixel triangle covers a centre strictly inside it",
+          "[07_exact_coverage][step1]") {
   const Triangle t{{{5 - unit, 5 - unit}, {5 + unit, 5 - unit}, {5, 5 + unit}}};
   CHECK(oracle_pixels(t) == PixelSet{{5, 5}});
   const Triangle beside{{{5.5 - unit, 5 - unit}, {5.5 + unit, 5 - unit}, {5.5, 5 + unit}}};
   CHECK(oracle_pixels(beside).empty());
 }
 
-TEST_CASE("edges through pixel centres give each centre to exactly one of two neighbours") {
+TEST_CASE("Edges through pixel centres give each centre to exactly one of two neighbours",
+          "[07_exact_coverage][step3]") {
   // Two triangles on either side of a shared edge a-b through several centres.
   struct Case {
     glm::dvec2 a, b, left, right;
@@ -128,14 +135,15 @@ TEST_CASE("edges through pixel centres give each centre to exactly one of two ne
   for (int k = 1; k <= 7; ++k) CHECK(lower.contains({k, k}));
 }
 
-TEST_CASE("the oracle covers nothing for zero-area triangles") {
+TEST_CASE("The oracle covers nothing for zero-area triangles", "[07_exact_coverage][step1]") {
   CHECK(oracle_pixels({{{3, 3}, {3, 3}, {3, 3}}}).empty());
   CHECK(oracle_pixels({{{1, 1}, {5, 5}, {3, 3}}}).empty());
   CHECK(oracle_pixels({{{1, 4}, {9, 4}, {5, 4}}}).empty());
   CHECK(oracle_pixels({{{0.1, 0.2}, {0.3, 0.6}, {0.2, 0.4}}}).empty());  // as doubles, not quite
 }
 
-TEST_CASE("the oracle gives the same pixels for all six vertex orders") {
+TEST_CASE("The oracle gives the same pixels for all six vertex orders",
+          "[07_exact_coverage][step1]") {
   tri::testing::Random random(5);
   for (int i = 0; i < 300; ++i) {
     Triangle t;
@@ -149,7 +157,7 @@ TEST_CASE("the oracle gives the same pixels for all six vertex orders") {
   }
 }
 
-TEST_CASE("the oracle handles vertices far outside the canvas") {
+TEST_CASE("The oracle handles vertices far outside the canvas", "[07_exact_coverage][step1]") {
   // A triangle with huge vertices that contains the whole 16x16 canvas.
   const Triangle huge{{{-1e9, -1e9}, {1e9, -1e9}, {0, 1e9}}};
   CHECK(oracle_pixels(huge).size() == 256);

@@ -21,7 +21,8 @@ __extension__ using Int128 = __int128;
 
 }  // namespace
 
-TEST_CASE("orientation is +1 to the left, -1 to the right and 0 on the line") {
+TEST_CASE("Orientation is +1 to the left, -1 to the right and 0 on the line",
+          "[07_exact_coverage][step2]") {
   const glm::dvec2 a(0, 0), b(4, 2);
   CHECK(exact_orientation(a, b, {0, 1}) == 1);
   CHECK(exact_orientation(a, b, {0, -1}) == -1);
@@ -30,7 +31,8 @@ TEST_CASE("orientation is +1 to the left, -1 to the right and 0 on the line") {
   CHECK(exact_orientation(a, a, {3, 7}) == 0);
 }
 
-TEST_CASE("orientation is exact on points a double determinant cannot separate") {
+TEST_CASE("Orientation is exact on points a double determinant cannot separate",
+          "[07_exact_coverage][step2]") {
   // On the line through (0.5, 0.25) with slope 1/2, and one unit in the last place above it.
   const glm::dvec2 a(0.5, 0.25), b(8.5, 4.25);
   CHECK(exact_orientation(a, b, {4.5, 2.25}) == 0);
@@ -38,7 +40,7 @@ TEST_CASE("orientation is exact on points a double determinant cannot separate")
   CHECK(exact_orientation(a, b, {4.5, std::nextafter(2.25, 2.0)}) == -1);
 }
 
-TEST_CASE("orientation is exact for subnormal coordinates") {
+TEST_CASE("Orientation is exact for subnormal coordinates", "[07_exact_coverage][step2]") {
   const double tiny = std::numeric_limits<double>::denorm_min();  // 2^-1074
   // The determinant is 2^-2148: far below what a double holds, yet positive.
   CHECK(naive_orientation({tiny, 0}, {0, tiny}, {0, 0}) == 0);
@@ -47,7 +49,8 @@ TEST_CASE("orientation is exact for subnormal coordinates") {
   CHECK(exact_orientation({tiny, tiny}, {2 * tiny, 2 * tiny}, {3 * tiny, 3 * tiny}) == 0);
 }
 
-TEST_CASE("orientation is exact for coordinates whose products overflow doubles") {
+TEST_CASE("Orientation is exact for coordinates whose products overflow doubles",
+          "[07_exact_coverage][step2]") {
   // a -> b runs down the diagonal y = x; (1, 0) is 2e300 units of area to its left.
   const glm::dvec2 a(1e300, 1e300), b(-1e300, -1e300);
   CHECK(naive_orientation(a, b, {1, 0}) == 0);  // inf - inf is NaN, and NaN compares false
@@ -58,7 +61,8 @@ TEST_CASE("orientation is exact for coordinates whose products overflow doubles"
   CHECK(exact_orientation({-max, -max}, {max, max}, {0, 1}) == 1);
 }
 
-TEST_CASE("orientation agrees with 128-bit integers on near-collinear points of a fine grid") {
+TEST_CASE("Orientation agrees with 128-bit integers on near-collinear points of a fine grid",
+          "[07_exact_coverage][step2]") {
   // Coordinates k / 2^40 with |k| < 2^21: the determinant times 2^80 is an exact 128-bit integer.
   tri::testing::Random random(7);
   int naive_wrong = 0;
@@ -84,7 +88,8 @@ TEST_CASE("orientation agrees with 128-bit integers on near-collinear points of 
   CHECK(naive_wrong == 0);
 }
 
-TEST_CASE("orientation is antisymmetric and cyclic on random doubles of every magnitude") {
+TEST_CASE("Orientation is antisymmetric and cyclic on random doubles of every magnitude",
+          "[07_exact_coverage][step2]") {
   tri::testing::Random random(11);
   for (int i = 0; i < 20000; ++i) {
     const auto coordinate = [&] {
@@ -100,7 +105,8 @@ TEST_CASE("orientation is antisymmetric and cyclic on random doubles of every ma
   }
 }
 
-TEST_CASE("orientation's fast and exact paths agree near the line where doubles round") {
+TEST_CASE("Orientation's fast and exact paths agree near the line where doubles round",
+          "[07_exact_coverage][step2]") {
   // Points one ulp off a line with awkward slope: the filter must hand these to the exact path.
   tri::testing::Random random(3);
   for (int i = 0; i < 20000; ++i) {

@@ -44,7 +44,8 @@ Triangle snapped(const Triangle& t, int bits) {
 
 }  // namespace
 
-TEST_CASE("snapping rounds to the nearest 1/256 with halves rounding up") {
+TEST_CASE("Snapping rounds to the nearest 1/256 with halves rounding up",
+          "[07_exact_coverage][step4]") {
   using tri::ch07::snap_to_subpixel;
   CHECK(snap_to_subpixel({1.0, -1.0}, 8).x == 256);
   CHECK(snap_to_subpixel({1.0, -1.0}, 8).y == -256);
@@ -61,7 +62,8 @@ TEST_CASE("snapping rounds to the nearest 1/256 with halves rounding up") {
   CHECK(snap_to_subpixel({0.49999999999999994, -0.5000000000000001}, 0).y == -1);
 }
 
-TEST_CASE("64-bit edge functions are used only while every snapped coordinate is within 2^29") {
+TEST_CASE("64-bit edge functions are used only while every snapped coordinate is within 2^29",
+          "[07_exact_coverage][step5]") {
   using tri::ch07::fits_64_bit_edge_functions;
   const std::int64_t limit = std::int64_t{1} << 29;
   CHECK(fits_64_bit_edge_functions({limit, -limit}, {0, 0}, {-limit, limit}));
@@ -69,7 +71,8 @@ TEST_CASE("64-bit edge functions are used only while every snapped coordinate is
   CHECK_FALSE(fits_64_bit_edge_functions({0, 0}, {0, -limit - 1}, {0, 0}));
 }
 
-TEST_CASE("candidate pixels are the centres within the snapped extent, clipped to the canvas") {
+TEST_CASE("candidate pixels are the centres within the snapped extent, clipped to the canvas",
+          "[07_exact_coverage][step7]") {
   using tri::ch07::candidate_pixels;
   // x from 1.5 to 4 pixels, y from -3 to 2.25 (in 1/256 units).
   const auto r = candidate_pixels({384, -768}, {1024, 0}, {512, 576}, 8, 10, 10);
@@ -83,7 +86,8 @@ TEST_CASE("candidate pixels are the centres within the snapped extent, clipped t
   CHECK(candidate_pixels({far, far}, {far, far + 1}, {far + 1, far}, 8, 10, 10).empty());
 }
 
-TEST_CASE("the fixed-point rasterizer matches the oracle exactly on the 1/256 grid") {
+TEST_CASE("The fixed-point rasterizer matches the oracle exactly on the 1/256 grid",
+          "[07_exact_coverage][step4]") {
   tri::testing::Random random(2024);
   for (int i = 0; i < 3000; ++i) {
     // Small, medium and slivers, partly off the canvas.
@@ -99,7 +103,8 @@ TEST_CASE("the fixed-point rasterizer matches the oracle exactly on the 1/256 gr
   }
 }
 
-TEST_CASE("the fixed-point rasterizer matches the oracle for vertices far outside, in 128 bits") {
+TEST_CASE("The fixed-point rasterizer matches the oracle for vertices far outside, in 128 bits",
+          "[07_exact_coverage][step5]") {
   tri::testing::Random random(99);
   for (int i = 0; i < 200; ++i) {
     Triangle t;
@@ -116,7 +121,8 @@ TEST_CASE("the fixed-point rasterizer matches the oracle for vertices far outsid
   CHECK(pixels_of(tri::ch07::draw_triangle_fixed_point_8, covering).size() == 48 * 48);
 }
 
-TEST_CASE("on arbitrary doubles the only deviations are the ones snapping explains") {
+TEST_CASE("On arbitrary doubles the only deviations are the ones snapping explains",
+          "[07_exact_coverage][step4]") {
   tri::testing::Random random(77);
   int differs_from_unsnapped = 0;
   for (int i = 0; i < 2000; ++i) {
@@ -132,7 +138,8 @@ TEST_CASE("on arbitrary doubles the only deviations are the ones snapping explai
   CHECK(differs_from_unsnapped < 2000 / 10);
 }
 
-TEST_CASE("fewer fractional bits snap harder and still follow the top-left rule exactly") {
+TEST_CASE("Fewer fractional bits snap harder and still follow the top-left rule exactly",
+          "[07_exact_coverage][step4]") {
   tri::testing::Random random(4);
   for (const int bits : {0, 2, 4}) {
     for (int i = 0; i < 500; ++i) {
@@ -147,7 +154,8 @@ TEST_CASE("fewer fractional bits snap harder and still follow the top-left rule 
   }
 }
 
-TEST_CASE("zero-area triangles draw nothing and non-finite ones are refused by the entry point") {
+TEST_CASE("Zero-area triangles draw nothing and non-finite ones are refused by the entry point",
+          "[07_exact_coverage][step4]") {
   CHECK(pixels_of(tri::ch07::draw_triangle_fixed_point_8, {{{0, 0}, {0, 0}, {0, 0}}}).empty());
   CHECK(pixels_of(tri::ch07::draw_triangle_fixed_point_8, {{{1, 1}, {9, 9}, {5, 5}}}).empty());
   // Distinct doubles that snap onto one line cover nothing either.
@@ -163,7 +171,7 @@ TEST_CASE("zero-area triangles draw nothing and non-finite ones are refused by t
   }
 }
 
-TEST_CASE("a shared-edge fan is covered exactly once per pixel") {
+TEST_CASE("A shared-edge fan is covered exactly once per pixel", "[07_exact_coverage][step4]") {
   // 24 triangles around a centre off the pixel grid, the whole disc exactly once.
   tri::Canvas canvas(48, 48);
   canvas.enable_write_counts();

@@ -41,7 +41,8 @@ void check_decision(const Triangle& t, glm::ivec2 p, bool kept) {
 
 }  // namespace
 
-TEST_CASE("a centre on a top edge belongs to the triangle below it, not to the one above") {
+TEST_CASE("A centre on a top edge belongs to the triangle below it, not to the one above",
+          "[07_exact_coverage][step1]") {
   // (7,5) -> (1,5) is horizontal and runs right to left: the top edge of `below`. The same edge
   // runs left to right in `above`, where it is a bottom edge.
   const Triangle below{{{4, 1}, {7, 5}, {1, 5}}};
@@ -50,7 +51,8 @@ TEST_CASE("a centre on a top edge belongs to the triangle below it, not to the o
   check_decision(above, {3, 5}, false);
 }
 
-TEST_CASE("a centre on a left edge belongs to the triangle right of it, not to its neighbour") {
+TEST_CASE("A centre on a left edge belongs to the triangle right of it, not to its neighbour",
+          "[07_exact_coverage][step1]") {
   // (4,6) -> (2,2) runs downward through (3,4): the left edge of `right`. In `left` the same edge
   // runs upward, so there it is a right edge.
   const Triangle right{{{4, 6}, {2, 2}, {6, 2}}};
@@ -59,7 +61,8 @@ TEST_CASE("a centre on a left edge belongs to the triangle right of it, not to i
   check_decision(left, {3, 4}, false);
 }
 
-TEST_CASE("a centre on a right edge goes to the neighbour right of it, whose left edge it is") {
+TEST_CASE("A centre on a right edge goes to the neighbour right of it, whose left edge it is",
+          "[07_exact_coverage][step1]") {
   // (6,1) -> (8,7) runs upward through (7,4): a right edge of `left`, which does not get the
   // centre. `right` has the same edge running downward, a left edge, and gets it.
   const Triangle left{{{2, 4}, {6, 1}, {8, 7}}};
@@ -68,7 +71,8 @@ TEST_CASE("a centre on a right edge goes to the neighbour right of it, whose lef
   check_decision(right, {7, 4}, true);
 }
 
-TEST_CASE("a centre on a bottom edge goes to the neighbour below it, whose top edge it is") {
+TEST_CASE("A centre on a bottom edge goes to the neighbour below it, whose top edge it is",
+          "[07_exact_coverage][step1]") {
   // (2,3) -> (9,3) is horizontal and runs left to right: the bottom edge of `above`, which does
   // not get (6,3). In `below` it runs right to left, a top edge, and gets it.
   const Triangle above{{{2, 3}, {9, 3}, {5, 7}}};
@@ -77,7 +81,8 @@ TEST_CASE("a centre on a bottom edge goes to the neighbour below it, whose top e
   check_decision(below, {6, 3}, true);
 }
 
-TEST_CASE("six triangles around a vertex give it and each centre on a spoke to one of them") {
+TEST_CASE("Six triangles around a vertex give it and each centre on a spoke to one of them",
+          "[07_exact_coverage][step1]") {
   // The fan of the rule diagram (07_top_left_rule): six triangles around V = (6,6), listed
   // counter-clockwise. Each spoke is top or left in exactly one of its two triangles; V goes to
   // the one triangle whose two edges at V are top and left: F, with (12,6) -> V on top and
@@ -134,7 +139,8 @@ TEST_CASE("six triangles around a vertex give it and each centre on a spoke to o
   }
 }
 
-TEST_CASE("without the tie rule both neighbours keep a centre on their shared edge") {
+TEST_CASE("Without the tie rule both neighbours keep a centre on their shared edge",
+          "[07_exact_coverage][top_left_rule]") {
   // The inclusive variant of the figures: every edge keeps its zeros, top-left or not.
   const std::array<std::array<Triangle, 2>, 4> pairs{{
       {{{{{4, 1}, {7, 5}, {1, 5}}}, {{{1, 5}, {7, 5}, {3, 8}}}}},

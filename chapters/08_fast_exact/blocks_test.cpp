@@ -27,7 +27,8 @@ int area(const PixelRange& r) {
 
 }  // namespace
 
-TEST_CASE("an accepted block is covered everywhere and a rejected one nowhere") {
+TEST_CASE("An accepted block is covered everywhere and a rejected one nowhere",
+          "[08_fast_exact][step4]") {
   tri::testing::Random random(44);
   int counts[3] = {0, 0, 0};
   tri::ch08::testing::for_each_random_setup(
@@ -51,7 +52,8 @@ TEST_CASE("an accepted block is covered everywhere and a rejected one nowhere") 
   CHECK(counts[2] > 100);
 }
 
-TEST_CASE("the blocks tile the candidate pixels exactly once, 8x8 from the range's corner") {
+TEST_CASE("The blocks tile the candidate pixels exactly once, 8x8 from the range's corner",
+          "[08_fast_exact][step4]") {
   tri::testing::Random random(45);
   tri::ch08::testing::for_each_random_setup(
       random, 300, 70, 53, [&](int, const tri::ch08::TriangleSetup& setup) {
@@ -70,7 +72,8 @@ TEST_CASE("the blocks tile the candidate pixels exactly once, 8x8 from the range
       });
 }
 
-TEST_CASE("runs of inside blocks and partial blocks hold every covered pixel exactly once") {
+TEST_CASE("Runs of inside blocks and partial blocks hold every covered pixel exactly once",
+          "[08_fast_exact][step4]") {
   tri::testing::Random random(46);
   tri::ch08::testing::for_each_random_setup(
       random, 300, 70, 53, [&](int, const tri::ch08::TriangleSetup& setup) {

@@ -49,7 +49,8 @@ bool same_colors(const Canvas& a, const Canvas& b) {
 
 }  // namespace
 
-TEST_CASE("the chapter registers seven exact variants under stable names") {
+TEST_CASE("The chapter registers seven exact variants under stable names",
+          "[08_fast_exact][exactness]") {
   const auto algorithms = tri::ch08::triangle_algorithms();
   REQUIRE(algorithms.size() == 7);
   const char* names[] = {"fast_incremental", "fast_all_edges", "fast_spans",   "fast_blocks_8x8",
@@ -62,7 +63,8 @@ TEST_CASE("the chapter registers seven exact variants under stable names") {
   }
 }
 
-TEST_CASE("every variant draws exactly the oracle's pixels on 1/256-grid triangles") {
+TEST_CASE("Every variant draws exactly the oracle's pixels on 1/256-grid triangles",
+          "[08_fast_exact][exactness]") {
   // All shapes (tiny to huge, slivers, pixel-centre ties, far and ±2^30 vertices), all six vertex
   // orders (both windings), on canvases whose sides are not multiples of 8 or 16.
   tri::testing::Random random(2024);
@@ -88,7 +90,8 @@ TEST_CASE("every variant draws exactly the oracle's pixels on 1/256-grid triangl
   }
 }
 
-TEST_CASE("on arbitrary doubles every variant snaps exactly as chapter 07's fixed_point_8") {
+TEST_CASE("On arbitrary doubles every variant snaps exactly as chapter 07's fixed_point_8",
+          "[08_fast_exact][exactness]") {
   tri::testing::Random random(77);
   for (int i = 0; i < 1500; ++i) {
     Triangle t;
@@ -101,7 +104,8 @@ TEST_CASE("on arbitrary doubles every variant snaps exactly as chapter 07's fixe
   }
 }
 
-TEST_CASE("every variant is safe on degenerate, tiny-canvas and refused input") {
+TEST_CASE("Every variant is safe on degenerate, tiny-canvas and refused input",
+          "[08_fast_exact][exactness]") {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const double far = 1073741824.0;
   const std::vector<Triangle> cases{
@@ -132,7 +136,8 @@ TEST_CASE("every variant is safe on degenerate, tiny-canvas and refused input") 
   }
 }
 
-TEST_CASE("batches through the registry's entry point equal drawing one by one") {
+TEST_CASE("Batches through the registry's entry point equal drawing one by one",
+          "[08_fast_exact][step6]") {
   // fast_hybrid and fast_threaded have batch entries; draw_triangles uses them.
   tri::testing::Random random(31);
   std::vector<tri::SceneTriangle> scene;

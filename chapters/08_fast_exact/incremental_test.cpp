@@ -8,7 +8,8 @@
 
 using tri::Triangle;
 
-TEST_CASE("the incremental walk visits every candidate pixel once with the direct edge values") {
+TEST_CASE("The incremental walk visits every candidate pixel once with the direct edge values",
+          "[08_fast_exact][step1]") {
   tri::testing::Random random(11);
   tri::ch08::testing::for_each_random_setup(
       random, 600, 24, 19, [&](int, const tri::ch08::TriangleSetup& setup) {
@@ -34,7 +35,8 @@ TEST_CASE("the incremental walk visits every candidate pixel once with the direc
       });
 }
 
-TEST_CASE("the OR of three values is non-negative exactly when all three are") {
+TEST_CASE("The OR of three values is non-negative exactly when all three are",
+          "[08_fast_exact][step2]") {
   constexpr std::int64_t low = std::numeric_limits<std::int64_t>::min();
   constexpr std::int64_t high = std::numeric_limits<std::int64_t>::max();
   const std::int64_t values[] = {0, 1, -1, 2, -2, 255, -256, high, low, low + 1, high - 1};

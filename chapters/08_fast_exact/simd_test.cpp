@@ -10,7 +10,8 @@
 using tri::Triangle;
 using tri::ch08::LaneWidth;
 
-TEST_CASE("every lane of the lane test agrees with direct evaluation, in 32 and 64 bits") {
+TEST_CASE("Every lane of the lane test agrees with direct evaluation, in 32 and 64 bits",
+          "[08_fast_exact][step5]") {
   tri::testing::Random random(55);
   int tested32 = 0;
   tri::ch08::testing::for_each_random_setup(
@@ -37,7 +38,8 @@ TEST_CASE("every lane of the lane test agrees with direct evaluation, in 32 and 
   CHECK(tested32 > 10000);
 }
 
-TEST_CASE("32-bit lanes are chosen only when every value the lanes form fits in 32 bits") {
+TEST_CASE("32-bit lanes are chosen only when every value the lanes form fits in 32 bits",
+          "[08_fast_exact][step5]") {
   // Triangles up to 4096 pixels across, half of them exactly at the 1024-pixel limit, anywhere
   // near a large canvas: whenever 32-bit lanes are chosen, the largest edge value over the range
   // widened by 7 columns and 1 row (it sits at one of the corners) must fit.
@@ -72,7 +74,8 @@ TEST_CASE("32-bit lanes are chosen only when every value the lanes form fits in 
   CHECK(chosen > 5000);
 }
 
-TEST_CASE("a triangle within one 8x8 block skips the blocks, one beyond it does not") {
+TEST_CASE("A triangle within one 8x8 block skips the blocks, one beyond it does not",
+          "[08_fast_exact][step5]") {
   const auto small = tri::ch08::setup_triangle({{{1, 1}, {8.5, 1}, {1, 8.5}}}, 32, 32);
   const auto wide = tri::ch08::setup_triangle({{{1, 1}, {9, 1}, {1, 8}}}, 32, 32);
   REQUIRE(small);

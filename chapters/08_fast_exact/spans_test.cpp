@@ -8,7 +8,7 @@
 using tri::Triangle;
 using tri::ch08::RowSpan;
 
-TEST_CASE("floor_div rounds toward minus infinity for every sign") {
+TEST_CASE("floor_div rounds toward minus infinity for every sign", "[08_fast_exact][traps]") {
   using tri::ch08::floor_div;
   CHECK(floor_div(7, 2) == 3);
   CHECK(floor_div(-7, 2) == -4);
@@ -25,7 +25,8 @@ TEST_CASE("floor_div rounds toward minus infinity for every sign") {
   }
 }
 
-TEST_CASE("a row's span ends are exact: covered inside, uncovered just beyond, nothing else") {
+TEST_CASE("a row's span ends are exact: covered inside, uncovered just beyond, nothing else",
+          "[08_fast_exact][step3]") {
   tri::testing::Random random(21);
   tri::ch08::testing::for_each_random_setup(
       random, 3000, 40, 37, [&](int i, const tri::ch08::TriangleSetup& setup) {
@@ -44,7 +45,7 @@ TEST_CASE("a row's span ends are exact: covered inside, uncovered just beyond, n
       });
 }
 
-TEST_CASE("a horizontal edge limits the rows the walker visits") {
+TEST_CASE("a horizontal edge limits the rows the walker visits", "[08_fast_exact][step3]") {
   // A bottom edge exactly on row 3 is not top-left: the walker starts one row higher.
   const auto bottom = tri::ch08::setup_triangle({{{2, 3}, {12, 3}, {7, 9}}}, 16, 16);
   REQUIRE(bottom);
@@ -60,7 +61,7 @@ TEST_CASE("a horizontal edge limits the rows the walker visits") {
   CHECK(to_the_top.last_row() == 9);
 }
 
-TEST_CASE("the division-free walker gives the direct span on every row") {
+TEST_CASE("The division-free walker gives the direct span on every row", "[08_fast_exact][step3]") {
   tri::testing::Random random(22);
   tri::ch08::testing::for_each_random_setup(
       random, 3000, 64, 61, [&](int i, const tri::ch08::TriangleSetup& setup) {
@@ -82,7 +83,8 @@ TEST_CASE("the division-free walker gives the direct span on every row") {
       });
 }
 
-TEST_CASE("a sliver costs its rows: one short span per row instead of its bounding box") {
+TEST_CASE("a sliver costs its rows: one short span per row instead of its bounding box",
+          "[08_fast_exact][step3]") {
   // A needle from (2, 3) to (60, 40), a quarter of a pixel thick: a 59 x 38 bounding box.
   const Triangle sliver{{{2, 3}, {60, 40}, {31, 21.75}}};
   const auto setup = tri::ch08::setup_triangle(sliver, 64, 64);

@@ -35,7 +35,8 @@ bool same_canvas(const Canvas& a, const Canvas& b) {
 
 }  // namespace
 
-TEST_CASE("bands are 16 to 64 rows, about four per thread, dealt to the threads in turn") {
+TEST_CASE("bands are 16 to 64 rows, about four per thread, dealt to the threads in turn",
+          "[08_fast_exact][step7]") {
   using tri::ch08::bands_for;
   CHECK(bands_for(512, 2).rows == 64);
   CHECK(bands_for(512, 4).rows == 32);
@@ -52,7 +53,8 @@ TEST_CASE("bands are 16 to 64 rows, about four per thread, dealt to the threads 
   CHECK(tri::ch08::Bands{16, 3}.owner(47) == 2);
 }
 
-TEST_CASE("the threaded batch equals the serial one pixel for pixel, colours and write counts") {
+TEST_CASE("The threaded batch equals the serial one pixel for pixel, colours and write counts",
+          "[08_fast_exact][step7]") {
   for (const auto& [width, height] : {std::pair{50, 45}, std::pair{64, 64}, std::pair{13, 100}}) {
     const auto scene = overlapping_scene(static_cast<std::uint64_t>(width * height), 400, 48);
     for (const bool counting : {true, false}) {
@@ -75,7 +77,8 @@ TEST_CASE("the threaded batch equals the serial one pixel for pixel, colours and
   }
 }
 
-TEST_CASE("each thread writes only the rows of its own bands, and together they write all") {
+TEST_CASE("Each thread writes only the rows of its own bands, and together they write all",
+          "[08_fast_exact][step7]") {
   const auto scene = overlapping_scene(9, 300, 60);
   Canvas serial(60, 70);
   serial.enable_write_counts();

@@ -35,7 +35,8 @@ PixelSet oracle_pixels(const Triangle& t, int width, int height) {
 
 }  // namespace
 
-TEST_CASE("floor_to_integer is std::floor for every kind of double it meets") {
+TEST_CASE("floor_to_integer is std::floor for every kind of double it meets",
+          "[08_fast_exact][triangle_setup]") {
   using tri::ch08::floor_to_integer;
   for (const double x : {0.0, -0.0, 0.5, -0.5, 1.0, -1.0, 2.999999, -2.000001, 1e-300, -1e-300,
                          274877906944.5, -274877906944.5, 274877906943.99997}) {
@@ -49,7 +50,8 @@ TEST_CASE("floor_to_integer is std::floor for every kind of double it meets") {
   }
 }
 
-TEST_CASE("snap_to_256ths gives exactly chapter 07's snap_to_subpixel with 8 bits") {
+TEST_CASE("snap_to_256ths gives exactly chapter 07's snap_to_subpixel with 8 bits",
+          "[08_fast_exact][triangle_setup]") {
   tri::testing::Random random(256);
   const auto same = [](glm::dvec2 p) {
     const tri::ch07::SubpixelPoint ours = tri::ch08::snap_to_256ths(p);
@@ -69,7 +71,8 @@ TEST_CASE("snap_to_256ths gives exactly chapter 07's snap_to_subpixel with 8 bit
   }
 }
 
-TEST_CASE("a hand-checked triangle on pixel centres follows the top-left rule") {
+TEST_CASE("A hand-checked triangle on pixel centres follows the top-left rule",
+          "[08_fast_exact][triangle_setup]") {
   // (0,0), (4,0), (0,4): the bottom edge is not top-left (centres on it are out), the left edge
   // is (in), the hypotenuse is a right edge (out).
   const Triangle t{{{0, 0}, {4, 0}, {0, 4}}};
@@ -82,7 +85,8 @@ TEST_CASE("a hand-checked triangle on pixel centres follows the top-left rule") 
         PixelSet{{1, 1}, {2, 1}, {3, 1}, {1, 2}, {2, 2}, {1, 3}});
 }
 
-TEST_CASE("edge steps are the vertex differences and values are whole-pixel edge functions") {
+TEST_CASE("edge steps are the vertex differences and values are whole-pixel edge functions",
+          "[08_fast_exact][triangle_setup]") {
   // Counter-clockwise (0,0), (4,0), (0,4) in 1/256 units; the origin is pixel (0, 0).
   const auto setup = tri::ch08::setup_triangle({{{0, 0}, {4, 0}, {0, 4}}}, 8, 8);
   REQUIRE(setup);
@@ -102,7 +106,8 @@ TEST_CASE("edge steps are the vertex differences and values are whole-pixel edge
   CHECK(e2.value == -1);
 }
 
-TEST_CASE("direct evaluation of the setup equals the oracle for every shape of triangle") {
+TEST_CASE("Direct evaluation of the setup equals the oracle for every shape of triangle",
+          "[08_fast_exact][triangle_setup]") {
   tri::testing::Random random(808);
   for (int i = 0; i < 4000; ++i) {
     const Triangle t =
@@ -113,7 +118,8 @@ TEST_CASE("direct evaluation of the setup equals the oracle for every shape of t
   }
 }
 
-TEST_CASE("a triangle around the whole canvas has clamped edges that pass everywhere") {
+TEST_CASE("A triangle around the whole canvas has clamped edges that pass everywhere",
+          "[08_fast_exact][triangle_setup]") {
   const double far = 1073741824.0;
   const auto setup = tri::ch08::setup_triangle({{{-far, -far}, {far, -far}, {0, far}}}, 20, 10);
   REQUIRE(setup);
@@ -125,7 +131,8 @@ TEST_CASE("a triangle around the whole canvas has clamped edges that pass everyw
   CHECK(covered_by(setup).size() == 200);
 }
 
-TEST_CASE("zero area, a miss of the canvas and an edge far beyond it give no setup") {
+TEST_CASE("Zero area, a miss of the canvas and an edge far beyond it give no setup",
+          "[08_fast_exact][triangle_setup]") {
   CHECK_FALSE(tri::ch08::setup_triangle({{{0, 0}, {0, 0}, {0, 0}}}, 8, 8));
   CHECK_FALSE(tri::ch08::setup_triangle({{{1, 1}, {9, 9}, {5, 5}}}, 8, 8));
   CHECK_FALSE(tri::ch08::setup_triangle({{{20, 20}, {30, 20}, {20, 30}}}, 8, 8));
@@ -137,7 +144,8 @@ TEST_CASE("zero area, a miss of the canvas and an edge far beyond it give no set
   CHECK_FALSE(tri::ch08::setup_triangle(below, 8, 8));
 }
 
-TEST_CASE("clipping a setup keeps exactly its pixels inside the clip") {
+TEST_CASE("Clipping a setup keeps exactly its pixels inside the clip",
+          "[08_fast_exact][triangle_setup]") {
   tri::testing::Random random(5);
   tri::ch08::testing::for_each_random_setup(
       random, 500, 32, 32, [&](int, const tri::ch08::TriangleSetup& setup) {

@@ -107,8 +107,8 @@ TEST_CASE("A listing shows the region without its marker lines and common indent
 }
 
 TEST_CASE(
-    "A README whose listing differs from its region fails, naming the README line, the source, "
-    "the region and the refresh command",
+    "A README whose listing differs from its region fails, naming the README line, the source, the "
+    "region and the refresh command",
     "[listings]") {
   TempRepo repo;
   repo.write("ch/walk.cpp", kSource);
