@@ -9,12 +9,6 @@
 namespace tri {
 namespace {
 
-Color random_color(Random& random) {
-  return Color{static_cast<std::uint8_t>(random.integer(64, 255)),
-               static_cast<std::uint8_t>(random.integer(64, 255)),
-               static_cast<std::uint8_t>(random.integer(64, 255)), 255};
-}
-
 glm::dvec2 snapped(glm::dvec2 p, int bits) {
   return {snap_to_grid(p.x, bits), snap_to_grid(p.y, bits)};
 }
@@ -24,14 +18,25 @@ void add(Scene& scene, Random& random, glm::dvec2 a, glm::dvec2 b, glm::dvec2 c,
       SceneTriangle{{snapped(a, bits), snapped(b, bits), snapped(c, bits)}, random_color(random)});
 }
 
+double area_of(const SceneTriangle& t) {
+  const auto& [a, b, c] = t.vertices;
+  return std::abs((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x)) / 2;
+}
+
 void random_triangles(const SceneRecipe& r, Scene& scene, Random& random) {
-  for (int i = 0; i < r.triangles; ++i) {
+  for (int i = 0; i < r.triangles;) {
     const double extent = random.real(r.min_extent, r.max_extent);
     const glm::dvec2 centre(random.real(0, r.width), random.real(0, r.height));
     const auto vertex = [&] {
       return centre + glm::dvec2(random.real(-extent, extent), random.real(-extent, extent));
     };
     add(scene, random, vertex(), vertex(), vertex(), r.grid_bits);
+    const double area = area_of(std::get<SceneTriangle>(scene.primitives.back()));
+    if (area < r.min_area || area > r.max_area) {
+      scene.primitives.pop_back();  // outside the asked areas: drawn again
+    } else {
+      ++i;
+    }
   }
 }
 
@@ -98,6 +103,12 @@ void jittered_grid(const SceneRecipe& r, Scene& scene, Random& random) {
 }
 
 }  // namespace
+
+Color random_color(Random& random) {
+  return Color{static_cast<std::uint8_t>(random.integer(64, 255)),
+               static_cast<std::uint8_t>(random.integer(64, 255)),
+               static_cast<std::uint8_t>(random.integer(64, 255)), 255};
+}
 
 double snap_to_grid(double value, int bits) noexcept {
   const double scale = std::ldexp(1.0, bits);

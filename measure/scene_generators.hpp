@@ -4,8 +4,10 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <string>
 
+#include "common/random.hpp"
 #include "common/scene.hpp"
 
 namespace tri {
@@ -24,7 +26,9 @@ struct SceneRecipe {
   int triangles = 1000;      ///< how many (a mesh or fan may round to its shape)
   double min_extent = 1.0;   ///< random: vertices within ±extent of a centre, extent drawn from
   double max_extent = 10.0;  ///< [min_extent, max_extent]
-  int grid_bits = 8;         ///< vertices rounded to 1/2^grid_bits (0: integer pixel centres)
+  double min_area = 0;       ///< random: a triangle whose area is outside [min_area, max_area]
+  double max_area = std::numeric_limits<double>::infinity();  ///< is drawn again
+  int grid_bits = 8;  ///< vertices rounded to 1/2^grid_bits (0: integer pixel centres)
   std::uint64_t seed = 1;
 };
 
@@ -34,6 +38,10 @@ Scene generate_scene(const SceneRecipe& recipe);
 /// True when the scene's triangles tile a region without overlap (fan, jittered grid), so gaps
 /// and overdraw are meaningful.
 bool is_mesh(const SceneRecipe& recipe) noexcept;
+
+/// A random opaque colour, each channel in [64, 255] so it stands out on black: the colour of
+/// every generated triangle.
+Color random_color(Random& random);
 
 /// Rounds a coordinate to the 1/2^bits grid.
 double snap_to_grid(double value, int bits) noexcept;

@@ -42,7 +42,8 @@ std::vector<Family> families() {
 
 }  // namespace
 
-TEST_CASE("every top-left algorithm matches the oracle on 10,000-triangle scenes of every family") {
+TEST_CASE("Every top-left algorithm matches the oracle on 10,000-triangle scenes of every family",
+          "[scene_suite]") {
   for (const auto& family : families()) {
     const tri::Scene scene = tri::generate_scene(family.recipe);
     REQUIRE(scene.primitives.size() >= 10000);
@@ -63,7 +64,8 @@ TEST_CASE("every top-left algorithm matches the oracle on 10,000-triangle scenes
   }
 }
 
-TEST_CASE("meshes drawn by a top-left algorithm cover each interior pixel exactly once") {
+TEST_CASE("Meshes drawn by a top-left algorithm cover each interior pixel exactly once",
+          "[scene_suite]") {
   for (const Kind kind : {Kind::fan, Kind::jittered_grid}) {
     tri::SceneRecipe recipe;
     recipe.kind = kind;
@@ -94,7 +96,8 @@ TEST_CASE("meshes drawn by a top-left algorithm cover each interior pixel exactl
   }
 }
 
-TEST_CASE("the scene generators are deterministic and give the families their shapes") {
+TEST_CASE("The scene generators are deterministic and give the families their shapes",
+          "[scene_suite]") {
   for (const auto& family : families()) {
     const tri::Scene a = tri::generate_scene(family.recipe);
     const tri::Scene b = tri::generate_scene(family.recipe);

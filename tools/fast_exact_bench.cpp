@@ -1,17 +1,16 @@
 // Chapter 08's speed table: the chapter's variants, chapter 07's fixed_point_8 and chapter 06's
 // barycentric_double on the scenes the chapter's targets name, beside the std::fill rate of the
-// same canvas measured in the same rounds. Medians of repeated timed runs, interleaved, from the
-// thread's CPU time (the wall clock for the threaded variant).
+// same canvas measured in the same rounds. Timed with the book's one method (measure/timing.hpp,
+// docs/DESIGN.md section 8): warm-up, calibrated repetitions, interleaved rounds, median and
+// spread on the steady clock.
 #include <algorithm>
 #include <array>
-#include <chrono>
-#include <cmath>
 #include <cstdint>
-#include <ctime>
 #include <functional>
 #include <iomanip>
 #include <iostream>
 #include <numeric>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -24,140 +23,133 @@
 #include "common/cli.hpp"
 #include "common/printable_text.hpp"
 #include "common/progress.hpp"
-#include "common/random.hpp"
 #include "measure/registry.hpp"
+#include "measure/render_scene.hpp"
 #include "measure/scene_generators.hpp"
+#include "measure/timing.hpp"
 
 namespace {
 
 using tri::Canvas;
 using tri::SceneTriangle;
+using tri::Timing;
+using tri::TimingPlan;
 using tri::TriangleAlgorithm;
-using Clock = std::chrono::steady_clock;
 
 constexpr int canvas_side = 512;
+constexpr double min_sample_seconds = 0.03;  // one sample of a variant: about 30 ms of draws
+
+// What the command line asks for, checked before anything is measured.
+struct Options {
+  int repeats = 7;                  // timed samples (rounds) per measurement
+  std::string scene_filter;         // only scenes whose name contains this
+  std::optional<long long> frames;  // draws per sample, fixed; none: calibrated
+  bool probes = false;              // only the two-thread probes
+  bool force = false;
+  std::vector<std::string> algorithm_names;
+};
 
 struct BenchScene {
   std::string name;
   std::vector<SceneTriangle> triangles;
 };
 
-double grid(double v) {
-  return tri::snap_to_grid(v, 8);
-}
-
-double doubled_area(const tri::Triangle& t) {
-  return (t[1].x - t[0].x) * (t[2].y - t[0].y) - (t[1].y - t[0].y) * (t[2].x - t[0].x);
-}
-
-tri::Color random_color(tri::Random& random) {
-  return {static_cast<std::uint8_t>(random.integer(64, 255)),
-          static_cast<std::uint8_t>(random.integer(64, 255)),
-          static_cast<std::uint8_t>(random.integer(64, 255)), 255};
-}
-
-// Triangles with vertices anywhere on the canvas whose area lies in [min_area, max_area], found
-// by drawing vertices within `extent` of a random centre and keeping the ones that qualify.
-std::vector<SceneTriangle> triangles_by_area(int count, double extent, double min_area,
-                                             double max_area, std::uint64_t seed) {
-  tri::Random random(seed);
-  std::vector<SceneTriangle> triangles;
-  while (static_cast<int>(triangles.size()) < count) {
-    const double cx = random.real(extent, canvas_side - extent);
-    const double cy = random.real(extent, canvas_side - extent);
-    tri::Triangle t;
-    for (auto& v : t) {
-      v = {grid(cx + random.real(-extent, extent)), grid(cy + random.real(-extent, extent))};
-    }
-    const double area = std::abs(doubled_area(t)) / 2;
-    if (area >= min_area && area <= max_area) triangles.push_back({t, random_color(random)});
-  }
-  return triangles;
-}
-
-std::vector<SceneTriangle> generated(tri::SceneRecipe recipe) {
+// The scene a recipe describes on the benchmark's canvas, every vertex on the 1/256 grid.
+BenchScene bench_scene(std::string name, tri::SceneRecipe recipe) {
   recipe.width = recipe.height = canvas_side;
-  const tri::Scene scene = tri::generate_scene(recipe);
-  std::vector<SceneTriangle> triangles;
-  for (const auto& p : scene.primitives) triangles.push_back(std::get<SceneTriangle>(p));
-  return triangles;
+  recipe.grid_bits = 8;
+  return {std::move(name), tri::scene_triangles(tri::generate_scene(recipe))};
+}
+
+tri::SceneRecipe random_recipe(int triangles, double min_extent, double max_extent,
+                               std::uint64_t seed) {
+  tri::SceneRecipe recipe;
+  recipe.triangles = triangles;
+  recipe.min_extent = min_extent;
+  recipe.max_extent = max_extent;
+  recipe.seed = seed;
+  return recipe;
 }
 
 std::vector<BenchScene> bench_scenes() {
   using Kind = tri::SceneRecipe::Kind;
   std::vector<BenchScene> scenes;
-  scenes.push_back({"large (area >= 10000)", triangles_by_area(200, 255, 10000, 1e9, 1)});
-  scenes.push_back({"tiny (area 1-10)", triangles_by_area(100000, 3, 1, 10, 2)});
-  tri::SceneRecipe mesh;
+  tri::SceneRecipe large = random_recipe(200, 255, 255, 1);
+  large.min_area = 10000;
+  scenes.push_back(bench_scene("large (area >= 10000)", large));
+  tri::SceneRecipe tiny = random_recipe(100000, 3, 3, 2);
+  tiny.min_area = 1;
+  tiny.max_area = 10;
+  scenes.push_back(bench_scene("tiny (area 1-10)", tiny));
+  // The same scene as chapter 09's --full "mesh" on the 1/256 grid (224x224 cells, seed 9012),
+  // so the two programs can be checked against each other.
+  tri::SceneRecipe mesh = random_recipe(100352, 0, 0, 9012);
   mesh.kind = Kind::jittered_grid;
-  mesh.triangles = 100000;
-  scenes.push_back({"jittered-grid mesh", generated(mesh)});
-  tri::SceneRecipe mixed;
-  mixed.triangles = 10000;
-  mixed.min_extent = 1;
-  mixed.max_extent = 100;
-  mixed.seed = 3;
-  scenes.push_back({"random mixed (extent 1-100)", generated(mixed)});
-  tri::SceneRecipe slivers;
+  scenes.push_back(bench_scene("jittered-grid mesh", mesh));
+  scenes.push_back(bench_scene("random mixed (extent 1-100)", random_recipe(10000, 1, 100, 3)));
+  tri::SceneRecipe slivers = random_recipe(10000, 10, 200, 4);
   slivers.kind = Kind::slivers;
-  slivers.triangles = 10000;
-  slivers.min_extent = 10;
-  slivers.max_extent = 200;
-  slivers.seed = 4;
-  scenes.push_back({"slivers (length 10-200)", generated(slivers)});
+  scenes.push_back(bench_scene("slivers (length 10-200)", slivers));
   return scenes;
 }
 
-// CPU time of the calling thread: unlike wall time it does not count the moments another
-// process had the core, which matters on a shared machine.
-double thread_cpu_seconds() {
-  timespec now{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
-  return static_cast<double>(now.tv_sec) + 1e-9 * static_cast<double>(now.tv_nsec);
-}
-
-// One thing to time: a name, the work of one call, and how many calls a timed run makes.
-struct Measurable {
-  Measurable(std::string name_, std::function<void()> run_, bool threaded_ = false)
-      : name(std::move(name_)), run(std::move(run_)), threaded(threaded_) {}
-  std::string name;
-  std::function<void()> run;
-  bool threaded;
-  int frames = 1;
-  std::vector<double> wall, cpu;  // seconds per call, one entry per round
-};
-
-// The wall time of one call.
-double seconds_of_one_call(const std::function<void()>& run) {
-  const auto start = Clock::now();
-  run();
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
-// Enough calls for about 30 ms per timed run, for a call that took `once` seconds.
-int frames_for(double once) {
-  return std::clamp(static_cast<int>(0.03 / std::max(once, 1e-9)), 1, 100000);
-}
-
-double median(std::vector<double> values) {
-  std::sort(values.begin(), values.end());
-  return values[values.size() / 2];
-}
-
-// Times every measurable once per round, round after round, so that whatever else the machine
-// does slows them all alike; keeps each one's seconds per call by both clocks.
-void measure_in_rounds(std::vector<Measurable>& measurables, int rounds, tri::Progress& progress) {
-  for (Measurable& m : measurables) m.run();  // warm-up
-  for (int r = 0; r < rounds; ++r) {
-    progress.advance(static_cast<std::uint64_t>(r));
-    for (Measurable& m : measurables) {
-      const auto start = Clock::now();
-      const double cpu_start = thread_cpu_seconds();
-      for (int f = 0; f < m.frames; ++f) m.run();
-      m.cpu.push_back((thread_cpu_seconds() - cpu_start) / m.frames);
-      m.wall.push_back(std::chrono::duration<double>(Clock::now() - start).count() / m.frames);
-    }
+// barycentric_double and fixed_point_8 from the registry, then every chapter 08 variant.
+std::vector<TriangleAlgorithm> compared_algorithms() {
+  std::vector<TriangleAlgorithm> algorithms;
+  for (const auto& a : tri::registered_algorithms()) {
+    if (a.name == "barycentric_double" || a.name == "fixed_point_8") algorithms.push_back(a);
   }
+  for (const auto& a : tri::ch08::triangle_algorithms()) {
+    if (tri::find_algorithm(algorithms, a.name) == nullptr) algorithms.push_back(a);
+  }
+  return algorithms;
+}
+
+// Names and scenes are checked before anything is measured: a typo is an error, not a table
+// without rows.
+Options options_from(const tri::CliArguments& args,
+                     const std::vector<TriangleAlgorithm>& algorithms,
+                     const std::vector<BenchScene>& scenes) {
+  Options options;
+  options.repeats = static_cast<int>(args.integer("repeats", 1, 1000).value_or(7));
+  options.scene_filter = args.value_or("scene", "");
+  options.frames = args.integer("frames", 1, 1000000);
+  options.probes = args.has("probes");
+  options.force = args.has("force");
+  for (const auto& a : algorithms) options.algorithm_names.emplace_back(a.name);
+  if (const auto list = args.value("algos")) {
+    options.algorithm_names = tri::parse_name_list("algos", *list, options.algorithm_names);
+  }
+  if (std::none_of(scenes.begin(), scenes.end(), [&](const BenchScene& scene) {
+        return scene.name.find(options.scene_filter) != std::string::npos;
+      })) {
+    std::string choices;
+    for (const auto& scene : scenes) choices += (choices.empty() ? "" : "; ") + scene.name;
+    throw tri::UsageError("--scene '" + tri::printable_excerpt(options.scene_filter) +
+                          "' matches no scene (the scenes: " + choices + ")");
+  }
+  return options;
+}
+
+TimingPlan timing_plan(const Options& options) {
+  TimingPlan plan;
+  plan.min_sample_seconds = min_sample_seconds;
+  plan.samples = options.repeats;
+  plan.max_repetitions = 100000;
+  plan.repetitions = static_cast<int>(options.frames.value_or(0));
+  return plan;
+}
+
+// The algorithms the options name, in the table's order.
+std::vector<const TriangleAlgorithm*> selected(const std::vector<TriangleAlgorithm>& algorithms,
+                                               const Options& options) {
+  std::vector<const TriangleAlgorithm*> chosen;
+  for (const TriangleAlgorithm& algorithm : algorithms) {
+    const auto& names = options.algorithm_names;
+    if (std::find(names.begin(), names.end(), algorithm.name) != names.end())
+      chosen.push_back(&algorithm);
+  }
+  return chosen;
 }
 
 // The timed work, kept out of line so a profiler can single it out
@@ -176,12 +168,112 @@ std::uint64_t covered_pixels(const TriangleAlgorithm& algorithm,
   return std::accumulate(counts.begin(), counts.end(), std::uint64_t{0});
 }
 
+// What one scene's rounds time: the two fills first, then one draw per algorithm.
+std::vector<std::function<void()>> scene_runs(const BenchScene& scene,
+                                              const std::vector<const TriangleAlgorithm*>& timed,
+                                              Canvas& canvas) {
+  static constexpr std::array<std::uint32_t, 8> words{};
+  std::vector<std::function<void()>> runs;
+  // std::fill over the canvas's Color pixels (what Canvas::clear does, and what the targets
+  // name) and this chapter's fill_pixels over the same memory.
+  runs.emplace_back([&canvas] { canvas.clear(tri::Color{1, 2, 3, 255}); });
+  runs.emplace_back([&canvas] {
+    for (int y = 0; y < canvas.height(); ++y)
+      tri::ch08::fill_pixels(canvas.row(y).data(), canvas.width(), words);
+  });
+  for (const TriangleAlgorithm* algorithm : timed) {
+    runs.emplace_back(
+        [&canvas, &scene, algorithm] { timed_draw(*algorithm, canvas, scene.triangles); });
+  }
+  return runs;
+}
+
+// One draw of each run tells how long the rounds will take: an absurd estimate is refused.
+void refuse_absurd_scene(const BenchScene& scene, const std::vector<std::function<void()>>& runs,
+                         const TimingPlan& plan, bool forced) {
+  double estimate = 0;
+  for (const auto& run : runs) {
+    const double once = tri::seconds_of(run);
+    const double sample =
+        plan.repetitions > 0 ? once * plan.repetitions : std::max(once, plan.min_sample_seconds);
+    estimate += once + 2 * sample + sample * plan.samples;  // warm-up, calibration, rounds
+  }
+  tri::refuse_absurd_run(estimate, "the " + scene.name + " scene", forced);
+}
+
+std::vector<Timing> time_scene(const BenchScene& scene,
+                               const std::vector<std::function<void()>>& runs,
+                               const TimingPlan& plan) {
+  tri::Progress progress("08_fast_exact_bench: " + scene.name,
+                         static_cast<std::uint64_t>(plan.samples), std::cerr);
+  return tri::time_interleaved(
+      runs, plan, [&](int rounds) { progress.advance(static_cast<std::uint64_t>(rounds)); });
+}
+
+void print_table_header(std::ostream& out) {
+  out << "| scene | algorithm | Mtriangles/s | Mpixels/s | × `barycentric_double` "
+         "| % of `std::fill` | ms per draw: median (min-max) |\n"
+         "|---|---|---:|---:|---:|---:|---:|\n";
+}
+
+std::string milliseconds(const tri::Spread& seconds) {
+  std::ostringstream text;
+  text << std::fixed << std::setprecision(3) << 1e3 * seconds.median << " (" << 1e3 * seconds.min
+       << "-" << 1e3 * seconds.max << ")";
+  return text.str();
+}
+
+// The rows of one scene: the two fills' rates, then one row per algorithm. timings holds the
+// fills first, as scene_runs made them.
+void print_scene_rows(const BenchScene& scene, const std::vector<const TriangleAlgorithm*>& timed,
+                      const std::vector<Timing>& timings, std::ostream& out) {
+  constexpr double pixels_per_canvas = static_cast<double>(canvas_side) * canvas_side;
+  const double std_fill_rate = tri::mpix_per_second(pixels_per_canvas, timings[0].seconds.median);
+  const double wide_fill_rate = tri::mpix_per_second(pixels_per_canvas, timings[1].seconds.median);
+  out << "| " << scene.name << " | (`std::fill`; `fill_pixels`) | | " << std::fixed
+      << std::setprecision(0) << std_fill_rate << "; " << wide_fill_rate << " | | 100 | "
+      << milliseconds(timings[0].seconds) << "; " << milliseconds(timings[1].seconds) << " |\n";
+  double baseline = 0;
+  const double triangles = static_cast<double>(scene.triangles.size());
+  for (std::size_t i = 0; i < timed.size(); ++i) {
+    const TriangleAlgorithm& algorithm = *timed[i];
+    const tri::Spread& seconds = timings[i + 2].seconds;
+    if (algorithm.name == "barycentric_double") baseline = seconds.median;
+    const double pixel_rate = tri::mpix_per_second(
+        static_cast<double>(covered_pixels(algorithm, scene.triangles)), seconds.median);
+    out << "|  | `" << algorithm.name << "`" << (algorithm.threaded ? " (threads)" : "") << " | "
+        << std::defaultfloat << std::setprecision(3) << triangles / seconds.median / 1e6 << " | "
+        << std::fixed << std::setprecision(0) << pixel_rate << " | ";
+    if (baseline > 0) out << std::setprecision(1) << baseline / seconds.median;
+    out << " | " << std::setprecision(0) << 100 * pixel_rate / std_fill_rate << " | "
+        << milliseconds(seconds) << " |\n";
+  }
+  out.flush();
+}
+
+void benchmark_scene(const BenchScene& scene, const std::vector<const TriangleAlgorithm*>& timed,
+                     const Options& options, Canvas& canvas, std::ostream& out) {
+  const TimingPlan plan = timing_plan(options);
+  const std::vector<std::function<void()>> runs = scene_runs(scene, timed, canvas);
+  refuse_absurd_scene(scene, runs, plan, options.force);
+  print_scene_rows(scene, timed, time_scene(scene, runs, plan), out);
+}
+
+// The median of `alone` over the median of `together`, timed against each other in rounds.
+double speedup(const std::function<void()>& alone, const std::function<void()>& together,
+               const TimingPlan& plan) {
+  const std::vector<std::function<void()>> runs{alone, together};
+  const std::vector<Timing> timings = tri::time_interleaved(runs, plan);
+  return timings[0].seconds.median / timings[1].seconds.median;
+}
+
 // What two threads gain on plain stores: each fills the rows of its own bands of the canvas (the
-// bands fast_threaded uses) with fill_pixels, against one thread filling all of them. Wall clock,
-// median over rounds. This is the ceiling of fast_threaded on large triangles.
-double two_thread_fill_speedup(Canvas& canvas, int rounds) {
+// bands fast_threaded uses) with fill_pixels, against one thread filling all of them. This is the
+// ceiling of fast_threaded on large triangles.
+double two_thread_fill_speedup(Canvas& canvas, const TimingPlan& plan) {
   const tri::ch08::Bands bands = tri::ch08::bands_for(canvas.height(), 2);
-  const std::array<std::uint32_t, 8> words{};
+  static constexpr std::array<std::uint32_t, 8> words{};
+  // 200 fills per thread start, so starting the thread is not what is measured.
   const auto fill_rows = [&](int thread, int threads) {
     for (int frame = 0; frame < 200; ++frame) {
       for (int y = 0; y < canvas.height(); ++y) {
@@ -190,24 +282,17 @@ double two_thread_fill_speedup(Canvas& canvas, int rounds) {
       }
     }
   };
-  std::vector<double> speedups;
-  for (int r = 0; r < rounds; ++r) {
-    auto start = Clock::now();
-    fill_rows(0, 1);
-    const double one = std::chrono::duration<double>(Clock::now() - start).count();
-    start = Clock::now();
-    {
-      std::jthread helper([&] { fill_rows(1, 2); });
-      fill_rows(0, 2);
-    }
-    speedups.push_back(one / std::chrono::duration<double>(Clock::now() - start).count());
-  }
-  return median(speedups);
+  return speedup([&] { fill_rows(0, 1); },
+                 [&] {
+                   std::jthread helper([&] { fill_rows(1, 2); });
+                   fill_rows(0, 2);
+                 },
+                 plan);
 }
 
 // What two threads gain on arithmetic alone: a chain of integer multiplications and shifts, split
-// in halves, against one thread doing all of it. Wall clock, median over rounds.
-double two_thread_arithmetic_speedup(int rounds) {
+// in halves, against one thread doing all of it.
+double two_thread_arithmetic_speedup(const TimingPlan& plan) {
   const auto work = [](long steps) {
     std::uint64_t a = 1, b = 2;
     for (long i = 0; i < steps; ++i) {
@@ -216,152 +301,75 @@ double two_thread_arithmetic_speedup(int rounds) {
     }
     return a + b;
   };
-  constexpr long steps = 20'000'000;
-  std::vector<double> speedups;
-  std::uint64_t sink = 0;
-  for (int r = 0; r < rounds; ++r) {
-    auto start = Clock::now();
-    sink += work(steps);
-    const double one = std::chrono::duration<double>(Clock::now() - start).count();
-    start = Clock::now();
-    std::uint64_t other = 0;
-    {
-      std::jthread helper([&] { other = work(steps / 2); });
-      sink += work(steps / 2);
-    }
-    sink += other;
-    speedups.push_back(one / std::chrono::duration<double>(Clock::now() - start).count());
-  }
-  return sink == 0 ? 0 : median(speedups);  // sink keeps the work from being optimized away
+  constexpr long steps = 2'000'000;
+  std::uint64_t sink = 0;  // keeps the work from being optimized away
+  const double gain = speedup([&] { sink += work(steps); },
+                              [&] {
+                                std::uint64_t other = 0;
+                                {
+                                  std::jthread helper([&] { other = work(steps / 2); });
+                                  sink += work(steps / 2);
+                                }
+                                sink += other;
+                              },
+                              plan);
+  return sink == 0 ? 0 : gain;
 }
 
-// fast_threaded on a scene with two threads against one (the same code with one thread), by the
-// wall clock, alternating, median over rounds; and each thread's share drawn alone on the calling
-// thread, by CPU time, which shows how evenly the bands split the work.
-void threaded_probe(const BenchScene& scene, Canvas& canvas, int rounds, std::ostream& out) {
-  std::vector<double> speedups, serial, shares[2];
-  const auto wall_of = [&](int threads) {
-    const auto start = Clock::now();
-    for (int f = 0; f < 10; ++f) tri::ch08::draw_batch_on_threads(canvas, scene.triangles, threads);
-    return std::chrono::duration<double>(Clock::now() - start).count();
+// fast_threaded on a scene with two threads against one (the same code with one thread), and
+// each thread's share drawn alone on the calling thread, which shows how evenly the bands split
+// the work: all five timed against each other in rounds.
+void threaded_probe(const BenchScene& scene, Canvas& canvas, const TimingPlan& plan,
+                    std::ostream& out) {
+  const auto on_threads = [&](int threads) {
+    return [&canvas, &scene, threads] {
+      tri::ch08::draw_batch_on_threads(canvas, scene.triangles, threads);
+    };
   };
-  const auto cpu_of = [&](int thread, int threads) {
-    const double start = thread_cpu_seconds();
-    for (int f = 0; f < 10; ++f)
+  const auto share = [&](int thread, int threads) {
+    return [&canvas, &scene, thread, threads] {
       tri::ch08::draw_bands_of_thread(canvas, scene.triangles, thread, threads);
-    return thread_cpu_seconds() - start;
+    };
   };
-  wall_of(2);
-  for (int r = 0; r < rounds; ++r) {
-    speedups.push_back(wall_of(1) / wall_of(2));
-    serial.push_back(cpu_of(0, 1));
-    shares[0].push_back(cpu_of(0, 2));
-    shares[1].push_back(cpu_of(1, 2));
-  }
-  const double whole = median(serial), first = median(shares[0]), second = median(shares[1]);
+  const std::vector<std::function<void()>> runs{on_threads(1), on_threads(2), share(0, 1),
+                                                share(0, 2), share(1, 2)};
+  const std::vector<Timing> t = tri::time_interleaved(runs, plan);
+  const double whole = t[2].seconds.median, first = t[3].seconds.median,
+               second = t[4].seconds.median;
   out << "fast_threaded on the " << scene.name << " scene: two threads " << std::fixed
-      << std::setprecision(2) << median(speedups)
-      << "x the speed of one (wall clock); each thread's share drawn alone costs "
-      << 100 * first / whole << "% and " << 100 * second / whole
-      << "% of the serial draw (CPU time), an ideal speed-up of " << whole / std::max(first, second)
-      << "\n";
+      << std::setprecision(2) << t[0].seconds.median / t[1].seconds.median
+      << "x the speed of one; each thread's share drawn alone takes " << 100 * first / whole
+      << "% and " << 100 * second / whole << "% of the serial draw, an ideal speed-up of "
+      << whole / std::max(first, second) << "\n";
+}
+
+void print_probes(const BenchScene& large, Canvas& canvas, const Options& options,
+                  std::ostream& out) {
+  TimingPlan plan = timing_plan(options);
+  plan.repetitions = 0;  // always calibrated: the probes' work differs in length
+  out << "\nTwo threads filling their own bands of the canvas with fill_pixels: " << std::fixed
+      << std::setprecision(2) << two_thread_fill_speedup(canvas, plan)
+      << "x the speed of one thread\n";
+  out << "Two threads sharing integer arithmetic: " << two_thread_arithmetic_speedup(plan)
+      << "x the speed of one thread\n";
+  threaded_probe(large, canvas, plan, out);
 }
 
 int run(const tri::CliArguments& args, std::ostream& out) {
-  const int repeats = static_cast<int>(args.integer("repeats", 1, 1000).value_or(7));
-  const std::string scene_filter = args.value_or("scene", "");
-  const auto frames = args.integer("frames", 1, 1000000);
-  std::vector<TriangleAlgorithm> algorithms;
-  for (const auto& a : tri::registered_algorithms()) {
-    if (a.name == "barycentric_double" || a.name == "fixed_point_8") algorithms.push_back(a);
-  }
-  for (const auto& a : tri::ch08::triangle_algorithms()) {
-    if (tri::find_algorithm(algorithms, a.name) == nullptr) algorithms.push_back(a);
-  }
-  // Names and scenes are checked before anything is measured: a typo is an error, not a table
-  // without rows.
-  std::vector<std::string> names;
-  for (const auto& a : algorithms) names.emplace_back(a.name);
-  if (const auto list = args.value("algos")) names = tri::parse_name_list("algos", *list, names);
+  const std::vector<TriangleAlgorithm> algorithms = compared_algorithms();
   const std::vector<BenchScene> scenes = bench_scenes();
-  if (std::none_of(scenes.begin(), scenes.end(), [&](const BenchScene& scene) {
-        return scene.name.find(scene_filter) != std::string::npos;
-      })) {
-    std::string choices;
-    for (const auto& scene : scenes) choices += (choices.empty() ? "" : "; ") + scene.name;
-    throw tri::UsageError("--scene '" + tri::printable_excerpt(scene_filter) +
-                          "' matches no scene (the scenes: " + choices + ")");
-  }
+  const Options options = options_from(args, algorithms, scenes);
+  const std::vector<const TriangleAlgorithm*> timed = selected(algorithms, options);
   Canvas canvas(canvas_side, canvas_side);
-  const double pixels_per_canvas = canvas_side * canvas_side;
-  const std::array<std::uint32_t, 8> words{};
   bool header_written = false;  // written with the first rows, so a refused run prints no table
   for (const BenchScene& scene : scenes) {
-    if (args.has("probes") || scene.name.find(scene_filter) == std::string::npos) continue;
-    // The two ceilings, timed in the same rounds: std::fill over the canvas's Color pixels (what
-    // Canvas::clear does, and what the targets name) and fill_pixels over the same memory.
-    std::vector<Measurable> measurables;
-    measurables.emplace_back("std::fill", [&] { canvas.clear(tri::Color{1, 2, 3, 255}); });
-    measurables.emplace_back("fill_pixels", [&] {
-      for (int y = 0; y < canvas_side; ++y)
-        tri::ch08::fill_pixels(canvas.row(y).data(), canvas_side, words);
-    });
-    std::vector<const TriangleAlgorithm*> timed;
-    for (const TriangleAlgorithm& algorithm : algorithms) {
-      if (std::find(names.begin(), names.end(), algorithm.name) == names.end()) continue;
-      timed.push_back(&algorithm);
-      measurables.emplace_back(
-          std::string(algorithm.name),
-          [&, a = &algorithm] { timed_draw(*a, canvas, scene.triangles); }, algorithm.threaded);
-    }
-    // One call each tells how long the rounds will take: an absurd estimate is refused.
-    double estimate = 0;
-    for (Measurable& m : measurables) {
-      const double once = seconds_of_one_call(m.run);
-      m.frames = frames ? static_cast<int>(*frames) : frames_for(once);
-      estimate += once * m.frames * (repeats + 1);
-    }
-    tri::refuse_absurd_run(estimate, "the " + scene.name + " scene", args.has("force"));
-    tri::Progress progress("08_fast_exact_bench: " + scene.name,
-                           static_cast<std::uint64_t>(repeats), std::cerr);
-    measure_in_rounds(measurables, repeats, progress);
-    if (!header_written) {
-      out << "| scene | algorithm | Mtriangles/s | Mpixels/s | % of std::fill "
-             "| x barycentric_double | Mtriangles/s, wall clock |\n"
-             "|---|---|---:|---:|---:|---:|---:|\n";
-      header_written = true;
-    }
-    const double std_fill_rate = pixels_per_canvas / median(measurables[0].cpu) / 1e6;
-    const double wide_fill_rate = pixels_per_canvas / median(measurables[1].cpu) / 1e6;
-    out << "| " << scene.name << " | (std::fill; fill_pixels) | | " << std::fixed
-        << std::setprecision(0) << std_fill_rate << "; " << wide_fill_rate << " | 100 | | |\n";
-    double baseline = 0;
-    for (std::size_t i = 0; i < timed.size(); ++i) {
-      const TriangleAlgorithm& algorithm = *timed[i];
-      const Measurable& m = measurables[i + 2];
-      // Threads spend CPU time on several cores at once: only the wall clock shows their gain.
-      const double seconds = m.threaded ? median(m.wall) : median(m.cpu);
-      if (algorithm.name == "barycentric_double") baseline = seconds;
-      const double pixels = static_cast<double>(covered_pixels(algorithm, scene.triangles));
-      const double pixel_rate = pixels / seconds / 1e6;
-      out << "| " << scene.name << " | " << algorithm.name << " | " << std::defaultfloat
-          << std::setprecision(3) << static_cast<double>(scene.triangles.size()) / seconds / 1e6
-          << " | " << std::fixed << std::setprecision(0) << pixel_rate << " | "
-          << 100 * pixel_rate / std_fill_rate << " | ";
-      if (baseline > 0) out << std::setprecision(1) << baseline / seconds;
-      out << " | " << std::defaultfloat << std::setprecision(3)
-          << static_cast<double>(scene.triangles.size()) / median(m.wall) / 1e6 << " |\n";
-    }
-    out.flush();
+    if (options.probes || scene.name.find(options.scene_filter) == std::string::npos) continue;
+    if (!header_written) print_table_header(out);
+    header_written = true;
+    benchmark_scene(scene, timed, options, canvas, out);
   }
-  if (scene_filter.empty() || args.has("probes")) {
-    out << "\nTwo threads filling their own bands of the canvas with fill_pixels: " << std::fixed
-        << std::setprecision(2) << two_thread_fill_speedup(canvas, repeats)
-        << "x the speed of one thread (wall clock)\n";
-    out << "Two threads sharing integer arithmetic: " << two_thread_arithmetic_speedup(repeats)
-        << "x the speed of one thread (wall clock)\n";
-    threaded_probe(scenes.front(), canvas, repeats, out);
-  }
+  if (options.scene_filter.empty() || options.probes)
+    print_probes(scenes.front(), canvas, options, out);
   return 0;
 }
 
@@ -371,12 +379,13 @@ int main(int argc, char** argv) {
   const tri::CommandLine command_line(
       "08_fast_exact_bench",
       "Times chapter 08's variants (and fixed_point_8, barycentric_double) on large, tiny, mesh,\n"
-      "mixed and sliver scenes of a 512x512 canvas, beside the std::fill rate of that canvas.\n"
-      "Prints a Markdown table of medians. Build in Release; run on an otherwise idle machine.",
-      {{"repeats", "N", "timed runs per measurement, the median is printed (default 7)"},
+      "mixed and sliver scenes of a 512x512 canvas, beside the std::fill rate of that canvas,\n"
+      "all in interleaved rounds on the steady clock. Prints a Markdown table of medians with\n"
+      "their spread. Build in Release; run on an otherwise idle machine.",
+      {{"repeats", "N", "timed rounds per measurement, the median is printed (default 7)"},
        {"algos", "A,B", "only these algorithms (comma-separated names)"},
        {"scene", "TEXT", "only the scenes whose name contains TEXT (e.g. tiny, mesh)"},
-       {"frames", "N", "draw each scene N times per timed run (default: about 30 ms worth)"},
+       {"frames", "N", "draw each scene N times per timed sample (default: about 30 ms worth)"},
        {"probes", "", "only the two-thread probes: filling the canvas, and integer arithmetic"},
        {"force", "", "measure even when the estimated time exceeds 10 minutes"}});
   return tri::run_command_line(command_line, argc, argv, std::cout, std::cerr,

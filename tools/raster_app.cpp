@@ -1,9 +1,9 @@
 #include "tools/raster_app.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <numeric>
 #include <string>
 
@@ -18,6 +18,7 @@
 #include "common/progress.hpp"
 #include "measure/registry.hpp"
 #include "measure/render_scene.hpp"
+#include "measure/timing.hpp"
 
 namespace tri {
 namespace {
@@ -43,7 +44,8 @@ CommandLine raster_command_line() {
           {"out", "FILE.png", "write the picture as PNG ('-': standard output)"},
           {"counts", "FILE.pgm",
            "write per-pixel write counts as binary PGM, saturating at 255 ('-': standard output)"},
-          {"bench", "N", "draw the scene N times after a warm-up and print the speed"},
+          {"bench", "N",
+           "time N draws of the scene after a warm-up; print the median frame's speed"},
           {"force", "", "run a --bench estimated to take more than 10 minutes anyway"},
       });
 }
@@ -57,39 +59,39 @@ void print_list(const std::vector<TriangleAlgorithm>& algorithms, std::ostream& 
 // Roughly how long stb takes per pixel to encode a PNG (16384x16384 took 40-53 s).
 constexpr double png_seconds_per_pixel = 170e-9;
 
-// Draws the scene `frames` times after untimed frames and prints the line of docs/DESIGN.md
-// section 9; refuses (unless forced) a run whose estimate from the warm-up is absurd.
-void benchmark(const Scene& scene, const TriangleAlgorithm* algorithm, long long frames,
-               bool forced, std::ostream& out, std::ostream& err) {
-  // One counted frame tells how many pixels a frame writes; it doubles as the warm-up.
+// How many pixels one frame of the scene writes, from one draw with write counts.
+std::uint64_t pixels_per_frame(const Scene& scene, const TriangleAlgorithm* algorithm) {
   Canvas counted = make_canvas(scene);
   counted.enable_write_counts();
   render_scene(scene, algorithm, counted);
   const auto counts = counted.write_counts();
-  const std::uint64_t pixels_per_frame =
-      std::accumulate(counts.begin(), counts.end(), std::uint64_t{0});
+  return std::accumulate(counts.begin(), counts.end(), std::uint64_t{0});
+}
 
+// Times `frames` frames with the book's one method (measure/timing.hpp): each frame is a sample
+// of one draw after an untimed warm-up, and the rates come from the median frame. Prints the line
+// of docs/DESIGN.md section 9; refuses (unless forced) a run whose estimate is absurd.
+void benchmark(const Scene& scene, const TriangleAlgorithm* algorithm, long long frames,
+               bool forced, std::ostream& out, std::ostream& err) {
   Canvas canvas = make_canvas(scene);
-  const auto warm_up = std::chrono::steady_clock::now();
-  render_scene(scene, algorithm, canvas);
-  const double frame_seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - warm_up).count();
+  const auto draw = [&] { render_scene(scene, algorithm, canvas); };
+  const double frame_seconds = seconds_of(draw);  // untimed by the plan: it estimates
   refuse_absurd_run(frame_seconds * static_cast<double>(frames),
                     "--bench " + std::to_string(frames), forced);
+  TimingPlan plan;
+  plan.samples = static_cast<int>(frames);
+  plan.repetitions = 1;
   Progress progress("raster: --bench", static_cast<std::uint64_t>(frames), err);
-  const auto start = std::chrono::steady_clock::now();
-  for (long long i = 0; i < frames; ++i) {
-    render_scene(scene, algorithm, canvas);
-    progress.advance(static_cast<std::uint64_t>(i + 1));
-  }
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const auto triangles = count_triangles(scene);
-  const double per_second = seconds > 0 ? 1.0 / seconds : 0.0;
-  out << "triangles=" << triangles << " frames=" << frames << " seconds=" << seconds
-      << " tris_per_s=" << static_cast<double>(triangles) * frames * per_second
-      << " mpix_per_s=" << static_cast<double>(pixels_per_frame) * frames * per_second / 1e6
-      << '\n';
+  const std::function<void()> run = draw;
+  const Timing timing = time_interleaved(std::span(&run, 1), plan, [&](int done) {
+                          progress.advance(static_cast<std::uint64_t>(done));
+                        }).front();
+  const double pixels = static_cast<double>(pixels_per_frame(scene, algorithm));
+  const double median = timing.seconds.median;
+  out << "triangles=" << count_triangles(scene) << " frames=" << frames << " seconds=" << median
+      << " min_seconds=" << timing.seconds.min << " max_seconds=" << timing.seconds.max
+      << " tris_per_s=" << (median > 0 ? static_cast<double>(count_triangles(scene)) / median : 0.0)
+      << " mpix_per_s=" << mpix_per_second(pixels, median) << '\n';
 }
 
 int run(const CliArguments& args, std::ostream& out, std::ostream& err) {
@@ -112,7 +114,7 @@ int run(const CliArguments& args, std::ostream& out, std::ostream& err) {
                        "' (raster --list shows the names)");
     }
   }
-  const auto frames = args.integer("bench", 1, 1'000'000'000);
+  const auto frames = args.integer("bench", 1, 1'000'000);  // every frame's time is kept
   if (frames && (args.has("out") || args.has("counts"))) {
     throw UsageError("--bench writes no image: drop --out and --counts");
   }

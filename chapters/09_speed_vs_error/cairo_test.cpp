@@ -11,7 +11,7 @@ using namespace tri::ch09::test;
 using Kind = tri::SceneRecipe::Kind;
 
 TEST_CASE("cairo without anti-aliasing matches the oracle where no centre lies on an edge",
-          "[cairo]") {
+          "[09_speed_vs_error][step7][cairo]") {
   // On the 1/256 grid no pixel centre falls on a shared edge of a fan or a mesh.
   for (const auto kind : {Kind::fan, Kind::jittered_grid}) {
     const auto triangles = tri::scene_triangles(small_scene(kind, 8, 11));
@@ -22,7 +22,7 @@ TEST_CASE("cairo without anti-aliasing matches the oracle where no centre lies o
 }
 
 TEST_CASE("cairo follows no exact tie rule: an integer-grid mesh gets centres twice or never",
-          "[cairo]") {
+          "[09_speed_vs_error][step7][cairo]") {
   const auto triangles = tri::scene_triangles(small_scene(Kind::jittered_grid, 0, 11));
   const auto counts = tri::ch09::cairo_write_counts(64, 48, triangles).counts;
   const auto oracle = oracle_counts(64, 48, triangles).counts;
@@ -35,13 +35,15 @@ TEST_CASE("cairo follows no exact tie rule: an integer-grid mesh gets centres tw
   CHECK(differing_pixels(counts, oracle) == twice + never);
 }
 
-TEST_CASE("cairo refuses a scene beyond its 24.8 fixed-point range, naming the limit", "[cairo]") {
+TEST_CASE("cairo refuses a scene beyond its 24.8 fixed-point range, naming the limit",
+          "[09_speed_vs_error][step7][cairo]") {
   const std::vector<tri::SceneTriangle> far{{{{{0, 0}, {1e7, 0}, {0, 5}}}, tri::colors::white}};
   CHECK_THROWS_WITH(tri::ch09::cairo_write_counts(8, 8, far),
                     Catch::Contains("cairo cannot draw this scene") && Catch::Contains("8000000"));
 }
 
-TEST_CASE("cairo's row in the report: timed, with its error measured", "[cairo]") {
+TEST_CASE("cairo's row in the report: timed, with its error measured",
+          "[09_speed_vs_error][step7][cairo]") {
   const auto settings = tri::ch09::bench_settings(tri::ch09::SuiteSize::tiny);
   const tri::ch09::ExternalPeer peer = tri::ch09::cairo_peer();
   CHECK(peer.name == "cairo_no_antialias");

@@ -6,7 +6,8 @@
 
 #include "measure/registry.hpp"
 
-TEST_CASE("External peers have their own names, filed under 'external'", "[external_peers]") {
+TEST_CASE("External peers have their own names, filed under 'external'",
+          "[09_speed_vs_error][external_peers]") {
   const auto peers = tri::ch09::external_peers();
   const auto algorithms = tri::registered_algorithms();
   std::set<std::string> names;
@@ -20,7 +21,7 @@ TEST_CASE("External peers have their own names, filed under 'external'", "[exter
 }
 
 TEST_CASE("The Machine line says which peers were measured, or why each was not",
-          "[external_peers]") {
+          "[09_speed_vs_error][external_peers]") {
   const auto peers = tri::ch09::external_peers();
   const std::string all = tri::ch09::external_peer_status(peers);
   const std::string none = tri::ch09::external_peer_status({});

@@ -56,7 +56,8 @@ std::vector<std::uint32_t> rows_flipped(const std::vector<std::uint32_t>& counts
 
 }  // namespace
 
-TEST_CASE("llvmpipe draws through OSMesa with the canvas's coordinates", "[llvmpipe]") {
+TEST_CASE("llvmpipe draws through OSMesa with the canvas's coordinates",
+          "[09_speed_vs_error][step6][llvmpipe]") {
   const std::string renderer = tri::ch09::run_in_child_process(
       [] { return LlvmpipeCanvas(8, 8, LlvmpipeCanvas::Pixels::write_counts).renderer(); });
   CHECK(renderer.starts_with("llvmpipe"));
@@ -76,7 +77,8 @@ TEST_CASE("llvmpipe draws through OSMesa with the canvas's coordinates", "[llvmp
   CHECK(oracle_counts(8, 8, square).counts[6 * 8 + 1] == 1);
 }
 
-TEST_CASE("llvmpipe's picture has each triangle's colour where it is the only one", "[llvmpipe]") {
+TEST_CASE("llvmpipe's picture has each triangle's colour where it is the only one",
+          "[09_speed_vs_error][step6][llvmpipe]") {
   struct Tally {
     std::size_t disagreements = 0, red = 0, blue = 0;
   };
@@ -105,7 +107,7 @@ TEST_CASE("llvmpipe's picture has each triangle's colour where it is the only on
 }
 
 TEST_CASE("llvmpipe is exact with the tie rule mirrored: its pixels are the oracle's upside down",
-          "[llvmpipe]") {
+          "[09_speed_vs_error][step6][llvmpipe]") {
   using Kind = tri::SceneRecipe::Kind;
   std::uint64_t seed = 70;
   for (const Kind kind : {Kind::random, Kind::slivers, Kind::fan, Kind::jittered_grid}) {
@@ -122,7 +124,7 @@ TEST_CASE("llvmpipe is exact with the tie rule mirrored: its pixels are the orac
 }
 
 TEST_CASE("With a viewport of just the buffer, llvmpipe's clipping moves border triangles' pixels",
-          "[llvmpipe]") {
+          "[09_speed_vs_error][step6][llvmpipe]") {
   const tri::Scene scene = tri::ch09::test::small_scene(tri::SceneRecipe::Kind::random, 0, 71);
   const auto triangles = tri::scene_triangles(scene);
   const auto inside_the_canvas = [&](const tri::SceneTriangle& t) {
@@ -146,7 +148,8 @@ TEST_CASE("With a viewport of just the buffer, llvmpipe's clipping moves border 
   CHECK(llvmpipe_counts_in_child(scene.width, scene.height, triangles) == truth(triangles));
 }
 
-TEST_CASE("The llvmpipe peer measures in a child what it measures here", "[llvmpipe]") {
+TEST_CASE("The llvmpipe peer measures in a child what it measures here",
+          "[09_speed_vs_error][step6][llvmpipe]") {
   tri::ch09::BenchSettings settings = tri::ch09::bench_settings(tri::ch09::SuiteSize::tiny);
   const tri::ch09::PreparedScene prepared = tri::ch09::prepare_scene(settings.scenes.front(), 0);
   const auto here = tri::ch09::run_in_child<tri::ch09::PeerResult>(

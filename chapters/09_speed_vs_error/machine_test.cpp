@@ -5,7 +5,8 @@
 #include "chapters/09_speed_vs_error/external_peers.hpp"
 #include "chapters/09_speed_vs_error/machine.hpp"
 
-TEST_CASE("The CPU model is the first model name line of /proc/cpuinfo", "[machine]") {
+TEST_CASE("The CPU model is the first model name line of /proc/cpuinfo",
+          "[09_speed_vs_error][machine]") {
   std::istringstream cpuinfo(
       "processor\t: 0\nvendor_id\t: AuthenticAMD\nmodel\t\t: 1\n"
       "model name\t: AMD EPYC 7B13 64-Core Processor  \nprocessor\t: 1\n"
@@ -13,7 +14,7 @@ TEST_CASE("The CPU model is the first model name line of /proc/cpuinfo", "[machi
   CHECK(tri::ch09::cpu_model_from(cpuinfo) == "AMD EPYC 7B13 64-Core Processor");
 }
 
-TEST_CASE("Without a model name line the CPU model is unknown", "[machine]") {
+TEST_CASE("Without a model name line the CPU model is unknown", "[09_speed_vs_error][machine]") {
   std::istringstream arm("processor\t: 0\nBogoMIPS\t: 50.00\nmodel name\t:   \n");
   CHECK(tri::ch09::cpu_model_from(arm) == "unknown");
   std::istringstream empty("");
@@ -21,7 +22,7 @@ TEST_CASE("Without a model name line the CPU model is unknown", "[machine]") {
 }
 
 TEST_CASE("The machine description names the compiler, the build type and the external peers",
-          "[machine]") {
+          "[09_speed_vs_error][machine]") {
   const auto peers = tri::ch09::external_peers();
   const tri::ch09::Machine machine = tri::ch09::describe_machine(peers);
   CHECK_FALSE(machine.cpu_model.empty());

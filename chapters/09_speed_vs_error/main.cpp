@@ -5,6 +5,7 @@
 #include <iostream>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "chapters/09_speed_vs_error/external_peers.hpp"
@@ -13,6 +14,7 @@
 #include "chapters/09_speed_vs_error/suites.hpp"
 #include "common/cli.hpp"
 #include "common/output_files.hpp"
+#include "common/printable_text.hpp"
 #include "measure/registry.hpp"
 
 namespace {
@@ -51,6 +53,28 @@ Selection selected(const std::optional<std::string>& names) {
   return chosen;
 }
 
+// The suite's scenes of one kind (--scene) and one grid (--grid); an unknown value is a usage
+// error that lists the valid ones.
+std::vector<tri::ch09::SuiteScene> filtered(std::vector<tri::ch09::SuiteScene> scenes,
+                                            const std::optional<std::string>& kind,
+                                            const std::optional<std::string>& grid) {
+  const auto keep_only = [&](const char* option, const std::string& wanted, auto field) {
+    std::string valid;
+    for (const auto& scene : scenes) {
+      const std::string& value = scene.*field;
+      if (valid.find(value) == std::string::npos) valid += (valid.empty() ? "" : ", ") + value;
+    }
+    std::erase_if(scenes, [&](const tri::ch09::SuiteScene& s) { return s.*field != wanted; });
+    if (scenes.empty()) {
+      throw tri::UsageError(std::string("--") + option + " '" + tri::printable_excerpt(wanted) +
+                            "' matches no scene (valid: " + valid + ")");
+    }
+  };
+  if (kind) keep_only("scene", *kind, &tri::ch09::SuiteScene::name);
+  if (grid) keep_only("grid", *grid, &tri::ch09::SuiteScene::grid);
+  return scenes;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -64,7 +88,10 @@ int main(int argc, char** argv) {
       {{"out", "DIR", "folder for the report (default: out)"},
        {"full", "", "complete sweep: 512x512 canvas, 100,000-triangle mesh, longer samples"},
        {"only", "NAMES",
-        "measure only these (comma-separated registry names, or an external peer's name)"}});
+        "measure only these (comma-separated registry names, or an external peer's name)"},
+       {"scene", "KIND",
+        "only the scenes of this kind (tiny, medium, large, slivers, mesh, fan, mixed)"},
+       {"grid", "GRID", "only the scenes on this vertex grid (integer or 1/256)"}});
   return tri::run_command_line(
       command_line, argc, argv, std::cout, std::cerr, [](const tri::CliArguments& args) {
         const auto size =
@@ -74,7 +101,9 @@ int main(int argc, char** argv) {
         const std::filesystem::path folder = args.value_or("out", "out");
         tri::check_output_folder(folder);
         tri::check_outputs(tri::ch09::report_paths(folder));
-        const tri::ch09::BenchSettings settings = tri::ch09::bench_settings(size);
+        tri::ch09::BenchSettings settings = tri::ch09::bench_settings(size);
+        settings.scenes =
+            filtered(std::move(settings.scenes), args.value("scene"), args.value("grid"));
         std::cout << "09_speed_vs_error: " << selection.algorithms.size() << " algorithms and "
                   << selection.peers.size() << " external peers x " << settings.scenes.size()
                   << " scenes, " << tri::ch09::size_name(size) << " setting\n";

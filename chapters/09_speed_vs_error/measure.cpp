@@ -45,7 +45,7 @@ double Measurement::triangles_per_second() const noexcept {
 }
 
 double Measurement::mpix_per_second() const noexcept {
-  return ch09::mpix_per_second(static_cast<double>(written_pixels), timing.seconds.median);
+  return tri::mpix_per_second(static_cast<double>(written_pixels), timing.seconds.median);
 }
 
 double Measurement::ratio_to_ceiling() const noexcept {
@@ -83,19 +83,34 @@ Measurement row_for(std::string_view name, std::string_view chapter, std::string
 }  // namespace
 
 // [listing measure]
+std::vector<Timing> time_algorithms(std::span<const TriangleAlgorithm> algorithms,
+                                    const PreparedScene& prepared, const TimingPlan& plan) {
+  Canvas canvas = make_canvas(prepared.scene);  // no write counts: they would be timed too
+  const std::span<const SceneTriangle> triangles(prepared.triangles);
+  std::vector<std::function<void()>> draws;
+  for (const TriangleAlgorithm& algorithm : algorithms) {
+    draws.emplace_back(
+        [&canvas, &algorithm, triangles] { draw_triangles(algorithm, canvas, triangles); });
+  }
+  return time_interleaved(draws, plan);
+}
+
 Measurement measure(const TriangleAlgorithm& algorithm, const PreparedScene& prepared,
-                    const TimingPlan& plan, const FillCeilings& ceilings) {
+                    const Timing& timing, const FillCeilings& ceilings) {
   Measurement m = row_for(algorithm.name, algorithm.chapter, rule_name(algorithm.rule),
                           algorithm.threaded, prepared, ceilings);
   m.written_pixels = count_written_pixels(algorithm, prepared.scene, prepared.triangles);
-
-  Canvas canvas = make_canvas(prepared.scene);  // no write counts: they would be timed too
-  const std::span<const SceneTriangle> triangles(prepared.triangles);
-  m.timing = time_runs([&] { draw_triangles(algorithm, canvas, triangles); }, plan);
+  m.timing = timing;
   m.error = measure_error(algorithm, prepared.error_scene);
   return m;
 }
 // [/listing]
+
+Measurement measure(const TriangleAlgorithm& algorithm, const PreparedScene& prepared,
+                    const TimingPlan& plan, const FillCeilings& ceilings) {
+  const Timing timing = time_algorithms(std::span(&algorithm, 1), prepared, plan).front();
+  return measure(algorithm, prepared, timing, ceilings);
+}
 
 Measurement measure(const ExternalPeer& peer, const PreparedScene& prepared, const TimingPlan& plan,
                     const FillCeilings& ceilings) {
@@ -151,8 +166,10 @@ BenchReport run_benchmark(std::span<const TriangleAlgorithm> algorithms,
       progress << progress_line(report.rows.size(), total, report.rows.back(), elapsed)
                << std::endl;  // flushed: the line is the progress
     };
-    for (const TriangleAlgorithm& algorithm : algorithms) {
-      record(measure(algorithm, prepared, settings.timing, ceilings));
+    // The algorithms are timed against each other in interleaved rounds, then measured one by one.
+    const std::vector<Timing> timings = time_algorithms(algorithms, prepared, settings.timing);
+    for (std::size_t i = 0; i < algorithms.size(); ++i) {
+      record(measure(algorithms[i], prepared, timings[i], ceilings));
     }
     for (const ExternalPeer& peer : peers)
       record(measure(peer, prepared, settings.timing, ceilings));

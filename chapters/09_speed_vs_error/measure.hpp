@@ -13,10 +13,10 @@
 
 #include "chapters/09_speed_vs_error/machine.hpp"
 #include "chapters/09_speed_vs_error/suites.hpp"
-#include "chapters/09_speed_vs_error/timing.hpp"
 #include "common/scene.hpp"
 #include "common/triangle_algorithm.hpp"
 #include "measure/error_metrics.hpp"
+#include "measure/timing.hpp"
 
 namespace tri::ch09 {
 
@@ -78,9 +78,18 @@ struct Measurement {
 std::uint64_t count_written_pixels(const TriangleAlgorithm& algorithm, const Scene& scene,
                                    std::span<const SceneTriangle> triangles);
 
-/// Measures one algorithm on one prepared scene: timed with draw_triangles on a canvas without
-/// write counts (allocated before the clock starts), pixels counted once in a separate draw, and
-/// the error from measure_error on the error scene.
+/// Times every algorithm drawing the prepared scene with draw_triangles, against each other in
+/// interleaved rounds (time_interleaved), on one canvas without write counts allocated before the
+/// clock starts. One Timing per algorithm, in order.
+std::vector<Timing> time_algorithms(std::span<const TriangleAlgorithm> algorithms,
+                                    const PreparedScene& prepared, const TimingPlan& plan);
+
+/// The row of one algorithm on one prepared scene with its timing: pixels counted once in a
+/// separate draw, and the error from measure_error on the error scene.
+Measurement measure(const TriangleAlgorithm& algorithm, const PreparedScene& prepared,
+                    const Timing& timing, const FillCeilings& ceilings);
+
+/// Times one algorithm alone (time_algorithms of one) and measures it.
 Measurement measure(const TriangleAlgorithm& algorithm, const PreparedScene& prepared,
                     const TimingPlan& plan, const FillCeilings& ceilings);
 
@@ -117,8 +126,8 @@ struct BenchReport {
   std::vector<Measurement> rows;  ///< scene by scene, every algorithm on each
 };
 
-/// Runs every algorithm, then every external peer, on every scene of the settings, printing one
-/// progress line per (algorithm or peer, scene) to progress.
+/// Runs every algorithm (timed in interleaved rounds), then every external peer, on every scene
+/// of the settings, printing one progress line per (algorithm or peer, scene) to progress.
 BenchReport run_benchmark(std::span<const TriangleAlgorithm> algorithms,
                           std::span<const ExternalPeer> peers, const BenchSettings& settings,
                           const Machine& machine, std::ostream& progress);

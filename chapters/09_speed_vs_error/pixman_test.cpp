@@ -28,9 +28,9 @@ double distance_to_segment(glm::dvec2 c, glm::dvec2 a, glm::dvec2 b) {
 }  // namespace
 
 TEST_CASE(
-    "pixman owns the centres on a shared edge once, like the oracle: the left column and "
-    "the top row",
-    "[pixman]") {
+    "pixman owns the centres on a shared edge once, like the oracle: the left column and the top "
+    "row",
+    "[09_speed_vs_error][step7][pixman]") {
   const auto square = split_square();
   const auto counts = tri::ch09::pixman_write_counts(8, 8, square).counts;
   REQUIRE(counts.size() == 64);
@@ -44,9 +44,8 @@ TEST_CASE(
 }
 
 TEST_CASE(
-    "pixman's pixels equal the oracle's on integer, 1/4, 1/16 and 1/256-grid scenes, ties "
-    "included",
-    "[pixman]") {
+    "pixman's pixels equal the oracle's on integer, 1/4, 1/16 and 1/256-grid scenes, ties included",
+    "[09_speed_vs_error][step7][pixman]") {
   for (const auto kind : {Kind::random, Kind::slivers, Kind::fan, Kind::jittered_grid}) {
     for (const int bits : {0, 2, 4, 8}) {
       const auto triangles = tri::scene_triangles(small_scene(kind, bits, 11));
@@ -58,13 +57,14 @@ TEST_CASE(
 }
 
 TEST_CASE("pixman refuses a scene beyond its 16.16 fixed-point range, naming the limit",
-          "[pixman]") {
+          "[09_speed_vs_error][step7][pixman]") {
   const std::vector<tri::SceneTriangle> far{{{{{0, 0}, {40000, 0}, {0, 5}}}, tri::colors::white}};
   CHECK_THROWS_WITH(tri::ch09::pixman_write_counts(8, 8, far),
                     Catch::Contains("pixman cannot draw this scene") && Catch::Contains("32767"));
 }
 
-TEST_CASE("pixman's row in the report: timed, and exact on the tiny suite", "[pixman]") {
+TEST_CASE("pixman's row in the report: timed, and exact on the tiny suite",
+          "[09_speed_vs_error][step7][pixman]") {
   const auto settings = tri::ch09::bench_settings(tri::ch09::SuiteSize::tiny);
   const tri::ch09::ExternalPeer peer = tri::ch09::pixman_peer();
   CHECK(peer.name == "pixman_a1");
@@ -80,7 +80,7 @@ TEST_CASE("pixman's row in the report: timed, and exact on the tiny suite", "[pi
 }
 
 TEST_CASE("pixman differs from the oracle only at centres within 2^-16 pixel of an edge",
-          "[pixman]") {
+          "[09_speed_vs_error][step7][pixman]") {
   // The report's mixed scene on the 1/256 grid is where the quick run finds pixman's few
   // differences: pixman computes its edges in 16.16 fixed point.
   const auto settings = tri::ch09::bench_settings(tri::ch09::SuiteSize::quick);

@@ -3,8 +3,13 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <initializer_list>
 #include <map>
+#include <ostream>
 #include <sstream>
+#include <string>
+#include <string_view>
+#include <utility>
 #include <vector>
 
 #include "chapters/09_speed_vs_error/report_csv.hpp"
@@ -101,6 +106,274 @@ void place_labels(std::vector<Label>& labels, const PlotLayout& layout) {
   }
 }
 
+// One attribute of an SVG element; numbers are written as number() writes them.
+struct Attribute {
+  Attribute(std::string_view name_, double value_) : name(name_), value(number(value_)) {}
+  Attribute(std::string_view name_, std::string value_) : name(name_), value(std::move(value_)) {}
+  Attribute(std::string_view name_, const char* value_) : name(name_), value(value_) {}
+  std::string_view name;
+  std::string value;
+};
+
+// `<name a="1" b="2"`, not yet closed.
+void open_tag(std::ostream& svg, std::string_view name,
+              std::initializer_list<Attribute> attributes) {
+  svg << '<' << name;
+  for (const Attribute& a : attributes) svg << ' ' << a.name << "=\"" << a.value << '"';
+}
+
+// An element without content: `<line x1="0" .../>`.
+void element(std::ostream& svg, std::string_view name,
+             std::initializer_list<Attribute> attributes) {
+  open_tag(svg, name, attributes);
+  svg << "/>\n";
+}
+
+// An element with content, which is written as given (escape text first).
+void element(std::ostream& svg, std::string_view name, std::initializer_list<Attribute> attributes,
+             std::string_view content) {
+  open_tag(svg, name, attributes);
+  svg << '>' << content << "</" << name << ">\n";
+}
+
+void open_group(std::ostream& svg, std::initializer_list<Attribute> attributes = {}) {
+  open_tag(svg, "g", attributes);
+  svg << ">\n";
+}
+
+void close_group(std::ostream& svg) {
+  svg << "</g>\n";
+}
+
+void line(std::ostream& svg, double x1, double y1, double x2, double y2,
+          std::initializer_list<Attribute> style = {}) {
+  open_tag(svg, "line", {{"x1", x1}, {"y1", y1}, {"x2", x2}, {"y2", y2}});
+  for (const Attribute& a : style) svg << ' ' << a.name << "=\"" << a.value << '"';
+  svg << "/>\n";
+}
+
+// One colour per chapter, in the order the chapters first appear.
+struct ChapterColours {
+  explicit ChapterColours(std::span<const AlgorithmSummary> summaries) {
+    for (const AlgorithmSummary& s : summaries) {
+      if (index.try_emplace(s.chapter, chapters.size()).second) chapters.push_back(s.chapter);
+    }
+  }
+  const char* of(const std::string& chapter) const {
+    return palette[index.at(chapter) % palette.size()];
+  }
+  std::map<std::string, std::size_t> index;
+  std::vector<std::string> chapters;
+};
+
+// The document's opening tag, white background and the three lines of title.
+void write_header(std::ostream& svg, const BenchReport& report, const PlotLayout& layout) {
+  open_tag(svg, "svg",
+           {{"xmlns", "http://www.w3.org/2000/svg"},
+            {"width", layout.width},
+            {"height", layout.height},
+            {"viewBox", "0 0 " + number(layout.width) + ' ' + number(layout.height)},
+            {"font-family", "sans-serif"},
+            {"font-size", "11"}});
+  svg << ">\n";
+  element(svg, "rect",
+          {{"x", "0"},
+           {"y", "0"},
+           {"width", layout.width},
+           {"height", layout.height},
+           {"fill", "white"}});
+  element(svg, "text",
+          {{"x", layout.left}, {"y", "28"}, {"font-size", "16"}, {"font-weight", "bold"}},
+          "Speed against error, every registered algorithm");
+  std::ostringstream setting;
+  setting << size_name(report.size) << " setting, " << report.width << "×" << report.height
+          << " canvas, " << escape_xml(report.machine.cpu_model) << " (" << report.machine.threads
+          << " threads), " << escape_xml(report.machine.compiler) << ", "
+          << escape_xml(report.machine.build_type);
+  element(svg, "text", {{"x", layout.left}, {"y", "48"}}, setting.str());
+  element(svg, "text", {{"x", layout.left}, {"y", "64"}, {"fill", "#555"}},
+          "y: pixels written per second (Mpix/s), geometric mean over all scenes; x: (missed + "
+          "extra) per covered pixel over all scenes");
+}
+
+// Light lines at every decade of both axes, and a dashed one at "exact".
+void write_grid(std::ostream& svg, const ErrorAxis& x_axis, const LogScale& y_axis,
+                const PlotLayout& layout) {
+  open_group(svg, {{"stroke", "#ddd"}, {"stroke-width", "1"}});
+  for (int k = x_axis.scale.low_decade; k <= x_axis.scale.high_decade; ++k) {
+    const double x = x_axis.scale.position(std::pow(10.0, k));
+    line(svg, x, layout.top, x, layout.bottom);
+  }
+  for (int k = y_axis.low_decade; k <= y_axis.high_decade; ++k) {
+    const double y = y_axis.position(std::pow(10.0, k));
+    line(svg, layout.left, y, layout.right, y);
+  }
+  line(svg, x_axis.zero_position, layout.top, x_axis.zero_position, layout.bottom,
+       {{"stroke-dasharray", "2 3"}});
+  close_group(svg);
+}
+
+// The two axes, and the break between "exact" and the first decade: log 0 is not on the scale.
+void write_axes(std::ostream& svg, const PlotLayout& layout) {
+  open_group(svg, {{"stroke", "black"}, {"stroke-width", "1"}, {"fill", "none"}});
+  line(svg, layout.left, layout.bottom, layout.right, layout.bottom);
+  line(svg, layout.left, layout.top, layout.left, layout.bottom);
+  const double break_x = layout.left + 0.75 * layout.floor_gap;
+  for (const double dx : {-3.0, 3.0}) {
+    line(svg, break_x + dx - 3, layout.bottom + 5, break_x + dx + 3, layout.bottom - 5);
+  }
+  close_group(svg);
+}
+
+void write_x_labels(std::ostream& svg, const ErrorAxis& x_axis, const PlotLayout& layout) {
+  open_group(svg, {{"text-anchor", "middle"}});
+  element(svg, "text",
+          {{"x", x_axis.zero_position}, {"y", layout.bottom + 16}, {"font-weight", "bold"}},
+          "exact");
+  for (int k = x_axis.scale.low_decade; k <= x_axis.scale.high_decade; ++k) {
+    element(svg, "text",
+            {{"x", x_axis.scale.position(std::pow(10.0, k))}, {"y", layout.bottom + 16}},
+            "10" + superscript(k));
+  }
+  element(svg, "text",
+          {{"x", (layout.left + layout.right) / 2}, {"y", layout.bottom + 38}, {"font-size", "13"}},
+          "error: wrong pixels per covered pixel (log; 0 drawn at \"exact\")");
+  close_group(svg);
+}
+
+void write_y_labels(std::ostream& svg, const LogScale& y_axis, const PlotLayout& layout) {
+  open_group(svg, {{"text-anchor", "end"}});
+  for (int k = y_axis.low_decade; k <= y_axis.high_decade; ++k) {
+    element(svg, "text", {{"x", layout.left - 6}, {"y", y_axis.position(std::pow(10.0, k)) + 4}},
+            decade_label(k));
+  }
+  const double middle_y = (layout.top + layout.bottom) / 2;
+  element(svg, "text",
+          {{"x", "0"},
+           {"y", "0"},
+           {"font-size", "13"},
+           {"text-anchor", "middle"},
+           {"transform",
+            "translate(" + number(layout.left - 58) + ' ' + number(middle_y) + ") rotate(-90)"}},
+          "speed: Mpixels written per second (log)");
+  close_group(svg);
+}
+
+// The std::fill ceilings: one thread, and the threaded one when it is higher and used.
+void write_ceilings(std::ostream& svg, const FillCeilings& ceilings, bool any_threaded,
+                    const LogScale& y_axis, const PlotLayout& layout) {
+  const auto ceiling_line = [&](double mpix, const std::string& text, const char* dash) {
+    const double y = y_axis.position(mpix);
+    line(svg, layout.left, y, layout.right, y,
+         {{"stroke", "#333"}, {"stroke-width", "1.5"}, {"stroke-dasharray", dash}});
+    element(svg, "text",
+            {{"x", layout.right - 4}, {"y", y - 5}, {"text-anchor", "end"}, {"fill", "#333"}},
+            text);
+  };
+  open_group(svg);
+  ceiling_line(ceilings.single_thread_mpix_per_s,
+               "std::fill ceiling, 1 thread: " +
+                   format_number(ceilings.single_thread_mpix_per_s, 4) + " Mpix/s",
+               "8 4");
+  if (any_threaded && ceilings.threaded_mpix_per_s() > ceilings.single_thread_mpix_per_s) {
+    ceiling_line(ceilings.threaded_mpix_per_s(),
+                 "std::fill ceiling, " + std::to_string(ceilings.threads) +
+                     " threads: " + format_number(ceilings.threaded_mpix_per_s(), 4) + " Mpix/s",
+                 "3 3");
+  }
+  close_group(svg);
+}
+
+using PlotPoints = std::vector<std::pair<double, double>>;
+
+// Each precision family joined by a line, drawn before the points so they sit on top.
+void write_families(std::ostream& svg, std::span<const AlgorithmSummary> summaries,
+                    const PlotPoints& at, const ChapterColours& colours) {
+  open_group(svg, {{"fill", "none"}, {"stroke-width", "2"}, {"stroke-opacity", "0.7"}});
+  for (const auto& family : precision_families(summaries)) {
+    std::string points;
+    for (std::size_t i = 0; i < family.size(); ++i) {
+      points +=
+          (i == 0 ? "" : " ") + number(at[family[i]].first) + ',' + number(at[family[i]].second);
+    }
+    element(svg, "polyline",
+            {{"stroke", colours.of(summaries[family.front()].chapter)}, {"points", points}});
+  }
+  close_group(svg);
+}
+
+// One circle per algorithm, with a tooltip; returns the labels still to be placed.
+std::vector<Label> write_points(std::ostream& svg, std::span<const AlgorithmSummary> summaries,
+                                const PlotPoints& at, const ChapterColours& colours) {
+  std::vector<Label> labels;
+  open_group(svg, {{"stroke", "black"}, {"stroke-width", "0.8"}});
+  for (std::size_t i = 0; i < summaries.size(); ++i) {
+    const AlgorithmSummary& s = summaries[i];
+    const std::string title = escape_xml(s.algorithm) + " (" + escape_xml(s.chapter) + ", " +
+                              escape_xml(s.rule) + "): " + format_number(s.mpix_per_s, 4) +
+                              " Mpix/s, error " + format_number(s.error_rate(), 4);
+    std::ostringstream tooltip;
+    open_tag(tooltip, "title", {});
+    tooltip << '>' << title << "</title>";
+    element(
+        svg, "circle",
+        {{"cx", at[i].first}, {"cy", at[i].second}, {"r", "5"}, {"fill", colours.of(s.chapter)}},
+        tooltip.str());
+    Label label;
+    label.point_x = at[i].first;
+    label.point_y = at[i].second;
+    label.text = s.algorithm + (s.threaded ? " (threads)" : "");
+    labels.push_back(label);
+  }
+  close_group(svg);
+  return labels;
+}
+
+// The placed labels, with a leader line when a label moved away from its point.
+void write_labels(std::ostream& svg, const std::vector<Label>& labels) {
+  open_group(svg, {{"fill", "#222"}});
+  for (const Label& l : labels) {
+    if (std::abs(l.y - (l.point_y + 4)) > 1) {
+      line(svg, l.point_x, l.point_y, l.x, l.y - 4, {{"stroke", "#777"}, {"stroke-width", "0.8"}});
+    }
+    if (l.anchor_end) {
+      element(svg, "text", {{"x", l.x}, {"y", l.y}, {"text-anchor", "end"}}, escape_xml(l.text));
+    } else {
+      element(svg, "text", {{"x", l.x}, {"y", l.y}}, escape_xml(l.text));
+    }
+  }
+  close_group(svg);
+}
+
+// Chapters and their colours, then what the two kinds of line mean.
+void write_legend(std::ostream& svg, const ChapterColours& colours, const PlotLayout& layout) {
+  const double x = layout.right + 30;
+  double y = layout.top + 10;
+  open_group(svg);
+  element(svg, "text", {{"x", x}, {"y", y}, {"font-weight", "bold"}}, "chapter");
+  for (const std::string& chapter : colours.chapters) {
+    y += 18;
+    element(svg, "rect",
+            {{"x", x},
+             {"y", y - 9},
+             {"width", "10"},
+             {"height", "10"},
+             {"stroke", "black"},
+             {"stroke-width", "0.8"},
+             {"fill", colours.of(chapter)}});
+    element(svg, "text", {{"x", x + 16}, {"y", y}}, escape_xml(chapter));
+  }
+  y += 30;
+  line(svg, x, y - 4, x + 24, y - 4, {{"stroke", "#888"}, {"stroke-width", "2"}});
+  element(svg, "text", {{"x", x + 30}, {"y", y}}, "precision family,");
+  element(svg, "text", {{"x", x + 30}, {"y", y + 13}}, "fewer to more bits");
+  y += 32;
+  line(svg, x, y - 4, x + 24, y - 4,
+       {{"stroke", "#333"}, {"stroke-width", "1.5"}, {"stroke-dasharray", "8 4"}});
+  element(svg, "text", {{"x", x + 30}, {"y", y}}, "std::fill of the canvas");
+  close_group(svg);
+}
+
 }  // namespace
 
 ErrorAxis error_axis_for(std::span<const AlgorithmSummary> summaries, const PlotLayout& layout) {
@@ -151,173 +424,23 @@ std::string to_svg(const BenchReport& report, std::span<const AlgorithmSummary> 
                                         [](const AlgorithmSummary& s) { return s.threaded; });
   const ErrorAxis x_axis = error_axis_for(summaries, layout);
   const LogScale y_axis = speed_scale_for(summaries, report.ceilings, any_threaded, layout);
-  std::map<std::string, std::size_t> chapter_colour;
-  std::vector<std::string> chapters;
-  for (const AlgorithmSummary& s : summaries) {
-    if (chapter_colour.try_emplace(s.chapter, chapters.size()).second)
-      chapters.push_back(s.chapter);
-  }
-  const auto colour_of = [&](const std::string& chapter) {
-    return palette[chapter_colour.at(chapter) % palette.size()];
-  };
-
-  std::ostringstream svg;
-  svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << number(layout.width)
-      << "\" height=\"" << number(layout.height) << "\" viewBox=\"0 0 " << number(layout.width)
-      << ' ' << number(layout.height) << "\" font-family=\"sans-serif\" font-size=\"11\">\n"
-      << "<rect x=\"0\" y=\"0\" width=\"" << number(layout.width) << "\" height=\""
-      << number(layout.height) << "\" fill=\"white\"/>\n";
-  svg << "<text x=\"" << number(layout.left) << "\" y=\"28\" font-size=\"16\" "
-      << "font-weight=\"bold\">Speed against error, every registered algorithm</text>\n"
-      << "<text x=\"" << number(layout.left) << "\" y=\"48\">" << size_name(report.size)
-      << " setting, " << report.width << "×" << report.height << " canvas, "
-      << escape_xml(report.machine.cpu_model) << " (" << report.machine.threads << " threads), "
-      << escape_xml(report.machine.compiler) << ", " << escape_xml(report.machine.build_type)
-      << "</text>\n"
-      << "<text x=\"" << number(layout.left)
-      << "\" y=\"64\" fill=\"#555\">y: pixels written per second (Mpix/s), geometric mean over "
-         "all scenes; x: (missed + extra) per covered pixel over all scenes</text>\n";
-
-  // Grid and axes.
-  svg << "<g stroke=\"#ddd\" stroke-width=\"1\">\n";
-  for (int k = x_axis.scale.low_decade; k <= x_axis.scale.high_decade; ++k) {
-    const double x = x_axis.scale.position(std::pow(10.0, k));
-    svg << "<line x1=\"" << number(x) << "\" y1=\"" << number(layout.top) << "\" x2=\"" << number(x)
-        << "\" y2=\"" << number(layout.bottom) << "\"/>\n";
-  }
-  for (int k = y_axis.low_decade; k <= y_axis.high_decade; ++k) {
-    const double y = y_axis.position(std::pow(10.0, k));
-    svg << "<line x1=\"" << number(layout.left) << "\" y1=\"" << number(y) << "\" x2=\""
-        << number(layout.right) << "\" y2=\"" << number(y) << "\"/>\n";
-  }
-  svg << "<line x1=\"" << number(x_axis.zero_position) << "\" y1=\"" << number(layout.top)
-      << "\" x2=\"" << number(x_axis.zero_position) << "\" y2=\"" << number(layout.bottom)
-      << "\" stroke-dasharray=\"2 3\"/>\n</g>\n";
-  svg << "<g stroke=\"black\" stroke-width=\"1\" fill=\"none\">\n"
-      << "<line x1=\"" << number(layout.left) << "\" y1=\"" << number(layout.bottom) << "\" x2=\""
-      << number(layout.right) << "\" y2=\"" << number(layout.bottom) << "\"/>\n"
-      << "<line x1=\"" << number(layout.left) << "\" y1=\"" << number(layout.top) << "\" x2=\""
-      << number(layout.left) << "\" y2=\"" << number(layout.bottom) << "\"/>\n";
-  // The axis break between "exact" and the first decade: log 0 is not on the scale.
-  const double break_x = layout.left + 0.75 * layout.floor_gap;
-  for (const double dx : {-3.0, 3.0}) {
-    svg << "<line x1=\"" << number(break_x + dx - 3) << "\" y1=\"" << number(layout.bottom + 5)
-        << "\" x2=\"" << number(break_x + dx + 3) << "\" y2=\"" << number(layout.bottom - 5)
-        << "\"/>\n";
-  }
-  svg << "</g>\n";
-  svg << "<g text-anchor=\"middle\">\n";
-  svg << "<text x=\"" << number(x_axis.zero_position) << "\" y=\"" << number(layout.bottom + 16)
-      << "\" font-weight=\"bold\">exact</text>\n";
-  for (int k = x_axis.scale.low_decade; k <= x_axis.scale.high_decade; ++k) {
-    svg << "<text x=\"" << number(x_axis.scale.position(std::pow(10.0, k))) << "\" y=\""
-        << number(layout.bottom + 16) << "\">10" << superscript(k) << "</text>\n";
-  }
-  svg << "<text x=\"" << number((layout.left + layout.right) / 2) << "\" y=\""
-      << number(layout.bottom + 38)
-      << "\" font-size=\"13\">error: wrong pixels per covered pixel (log; 0 drawn at "
-         "\"exact\")</text>\n</g>\n";
-  svg << "<g text-anchor=\"end\">\n";
-  for (int k = y_axis.low_decade; k <= y_axis.high_decade; ++k) {
-    svg << "<text x=\"" << number(layout.left - 6) << "\" y=\""
-        << number(y_axis.position(std::pow(10.0, k)) + 4) << "\">" << decade_label(k)
-        << "</text>\n";
-  }
-  const double middle_y = (layout.top + layout.bottom) / 2;
-  svg << "<text x=\"0\" y=\"0\" font-size=\"13\" text-anchor=\"middle\" transform=\"translate("
-      << number(layout.left - 58) << ' ' << number(middle_y)
-      << ") rotate(-90)\">speed: Mpixels written per second (log)</text>\n</g>\n";
-
-  // The std::fill ceilings.
-  const auto ceiling_line = [&](double mpix, const std::string& text, const char* dash) {
-    const double y = y_axis.position(mpix);
-    svg << "<line x1=\"" << number(layout.left) << "\" y1=\"" << number(y) << "\" x2=\""
-        << number(layout.right) << "\" y2=\"" << number(y)
-        << "\" stroke=\"#333\" stroke-width=\"1.5\" stroke-dasharray=\"" << dash << "\"/>\n"
-        << "<text x=\"" << number(layout.right - 4) << "\" y=\"" << number(y - 5)
-        << "\" text-anchor=\"end\" fill=\"#333\">" << text << "</text>\n";
-  };
-  svg << "<g>\n";
-  ceiling_line(report.ceilings.single_thread_mpix_per_s,
-               "std::fill ceiling, 1 thread: " +
-                   format_number(report.ceilings.single_thread_mpix_per_s, 4) + " Mpix/s",
-               "8 4");
-  if (any_threaded &&
-      report.ceilings.threaded_mpix_per_s() > report.ceilings.single_thread_mpix_per_s) {
-    ceiling_line(report.ceilings.threaded_mpix_per_s(),
-                 "std::fill ceiling, " + std::to_string(report.ceilings.threads) + " threads: " +
-                     format_number(report.ceilings.threaded_mpix_per_s(), 4) + " Mpix/s",
-                 "3 3");
-  }
-  svg << "</g>\n";
-
-  // Points, families first so the points sit on top of their lines.
-  std::vector<Label> labels;
-  std::vector<std::pair<double, double>> at;
+  const ChapterColours colours(summaries);
+  PlotPoints at;
   for (const AlgorithmSummary& s : summaries) {
     at.emplace_back(x_axis.position(s.error_rate()), y_axis.position(s.mpix_per_s));
   }
-  svg << "<g fill=\"none\" stroke-width=\"2\" stroke-opacity=\"0.7\">\n";
-  for (const auto& family : precision_families(summaries)) {
-    svg << "<polyline stroke=\"" << colour_of(summaries[family.front()].chapter) << "\" points=\"";
-    for (std::size_t i = 0; i < family.size(); ++i) {
-      svg << (i == 0 ? "" : " ") << number(at[family[i]].first) << ','
-          << number(at[family[i]].second);
-    }
-    svg << "\"/>\n";
-  }
-  svg << "</g>\n<g stroke=\"black\" stroke-width=\"0.8\">\n";
-  for (std::size_t i = 0; i < summaries.size(); ++i) {
-    const AlgorithmSummary& s = summaries[i];
-    svg << "<circle cx=\"" << number(at[i].first) << "\" cy=\"" << number(at[i].second)
-        << "\" r=\"5\" fill=\"" << colour_of(s.chapter) << "\"><title>" << escape_xml(s.algorithm)
-        << " (" << escape_xml(s.chapter) << ", " << escape_xml(s.rule)
-        << "): " << format_number(s.mpix_per_s, 4) << " Mpix/s, error "
-        << format_number(s.error_rate(), 4) << "</title></circle>\n";
-    Label label;
-    label.point_x = at[i].first;
-    label.point_y = at[i].second;
-    label.text = s.algorithm + (s.threaded ? " (threads)" : "");
-    labels.push_back(label);
-  }
-  svg << "</g>\n";
+  std::ostringstream svg;
+  write_header(svg, report, layout);
+  write_grid(svg, x_axis, y_axis, layout);
+  write_axes(svg, layout);
+  write_x_labels(svg, x_axis, layout);
+  write_y_labels(svg, y_axis, layout);
+  write_ceilings(svg, report.ceilings, any_threaded, y_axis, layout);
+  write_families(svg, summaries, at, colours);
+  std::vector<Label> labels = write_points(svg, summaries, at, colours);
   place_labels(labels, layout);
-  svg << "<g fill=\"#222\">\n";
-  for (const Label& l : labels) {
-    if (std::abs(l.y - (l.point_y + 4)) > 1) {
-      svg << "<line x1=\"" << number(l.point_x) << "\" y1=\"" << number(l.point_y) << "\" x2=\""
-          << number(l.x) << "\" y2=\"" << number(l.y - 4) << "\" stroke=\"#777\" "
-          << "stroke-width=\"0.8\"/>\n";
-    }
-    svg << "<text x=\"" << number(l.x) << "\" y=\"" << number(l.y) << "\""
-        << (l.anchor_end ? " text-anchor=\"end\"" : "") << ">" << escape_xml(l.text) << "</text>\n";
-  }
-  svg << "</g>\n";
-
-  // Legend: chapters, then what the lines mean.
-  const double legend_x = layout.right + 30;
-  double legend_y = layout.top + 10;
-  svg << "<g>\n<text x=\"" << number(legend_x) << "\" y=\"" << number(legend_y)
-      << "\" font-weight=\"bold\">chapter</text>\n";
-  for (const std::string& chapter : chapters) {
-    legend_y += 18;
-    svg << "<rect x=\"" << number(legend_x) << "\" y=\"" << number(legend_y - 9)
-        << "\" width=\"10\" height=\"10\" stroke=\"black\" stroke-width=\"0.8\" fill=\""
-        << colour_of(chapter) << "\"/>\n<text x=\"" << number(legend_x + 16) << "\" y=\""
-        << number(legend_y) << "\">" << escape_xml(chapter) << "</text>\n";
-  }
-  legend_y += 30;
-  svg << "<line x1=\"" << number(legend_x) << "\" y1=\"" << number(legend_y - 4) << "\" x2=\""
-      << number(legend_x + 24) << "\" y2=\"" << number(legend_y - 4)
-      << "\" stroke=\"#888\" stroke-width=\"2\"/>\n<text x=\"" << number(legend_x + 30) << "\" y=\""
-      << number(legend_y) << "\">precision family,</text>\n<text x=\"" << number(legend_x + 30)
-      << "\" y=\"" << number(legend_y + 13) << "\">fewer to more bits</text>\n";
-  legend_y += 32;
-  svg << "<line x1=\"" << number(legend_x) << "\" y1=\"" << number(legend_y - 4) << "\" x2=\""
-      << number(legend_x + 24) << "\" y2=\"" << number(legend_y - 4)
-      << "\" stroke=\"#333\" stroke-width=\"1.5\" stroke-dasharray=\"8 4\"/>\n<text x=\""
-      << number(legend_x + 30) << "\" y=\"" << number(legend_y)
-      << "\">std::fill of the canvas</text>\n</g>\n";
+  write_labels(svg, labels);
+  write_legend(svg, colours, layout);
   svg << "</svg>\n";
   return svg.str();
 }

@@ -116,7 +116,7 @@ std::string unbalanced_tag(const std::string& svg) {
 }  // namespace
 
 TEST_CASE("The tiny run measures every algorithm on every scene once, with a progress line each",
-          "[report]") {
+          "[09_speed_vs_error][report]") {
   const TinyRun& run = tiny_run();
   REQUIRE(run.report.rows.size() == measured_names().size() * run.settings.scenes.size());
   std::map<std::tuple<std::string, std::string, std::string>, int> seen;
@@ -128,7 +128,7 @@ TEST_CASE("The tiny run measures every algorithm on every scene once, with a pro
 }
 
 TEST_CASE("Each measurement is timed with one run per sample, its median within its spread",
-          "[report]") {
+          "[09_speed_vs_error][step2][report]") {
   for (const Measurement& m : tiny_run().report.rows) {
     CHECK(m.timing.repetitions == 1);
     CHECK(m.timing.samples == 1);
@@ -138,7 +138,8 @@ TEST_CASE("Each measurement is timed with one run per sample, its median within 
   }
 }
 
-TEST_CASE("The error numbers are measure_error's on the same scene", "[report]") {
+TEST_CASE("The error numbers are measure_error's on the same scene",
+          "[09_speed_vs_error][step4][report]") {
   const auto algorithms = chosen_algorithms();
   for (const Measurement& m : tiny_run().report.rows) {
     const auto suite = std::find_if(
@@ -171,7 +172,8 @@ TEST_CASE("The error numbers are measure_error's on the same scene", "[report]")
   }
 }
 
-TEST_CASE("The top-left algorithm is exact on every scene and the 0-bit one is not", "[report]") {
+TEST_CASE("The top-left algorithm is exact on every scene and the 0-bit one is not",
+          "[09_speed_vs_error][step4][report]") {
   std::uint64_t wrong_0 = 0;
   for (const Measurement& m : tiny_run().report.rows) {
     if (m.algorithm == "fixed_point_8") CHECK(m.error.exact());
@@ -180,7 +182,8 @@ TEST_CASE("The top-left algorithm is exact on every scene and the 0-bit one is n
   CHECK(wrong_0 > 0);
 }
 
-TEST_CASE("The CSV has its header and the same number of fields on every row", "[report]") {
+TEST_CASE("The CSV has its header and the same number of fields on every row",
+          "[09_speed_vs_error][step5][report]") {
   const TinyRun& run = tiny_run();
   const auto lines = lines_of(run.files.csv);
   REQUIRE(lines.size() == 1 + run.report.rows.size());
@@ -222,7 +225,8 @@ TEST_CASE("The CSV has its header and the same number of fields on every row", "
   }
 }
 
-TEST_CASE("The Markdown report has the machine and a table row per algorithm", "[report]") {
+TEST_CASE("The Markdown report has the machine and a table row per algorithm",
+          "[09_speed_vs_error][step5][report]") {
   const TinyRun& run = tiny_run();
   const std::string& md = run.files.markdown;
   CHECK(md.starts_with("# "));
@@ -249,7 +253,8 @@ TEST_CASE("The Markdown report has the machine and a table row per algorithm", "
   CHECK(md.find("| `fixed_point_8` | 07_exact_coverage | top-left |") != std::string::npos);
 }
 
-TEST_CASE("The SVG is one balanced document with a circle per algorithm", "[report]") {
+TEST_CASE("The SVG is one balanced document with a circle per algorithm",
+          "[09_speed_vs_error][step5][report]") {
   const std::string& svg = tiny_run().files.svg;
   CHECK(svg.starts_with("<svg "));
   CHECK(unbalanced_tag(svg).empty());
@@ -266,7 +271,8 @@ TEST_CASE("The SVG is one balanced document with a circle per algorithm", "[repo
   CHECK(svg.find("std::fill ceiling, 1 thread: ") != std::string::npos);
 }
 
-TEST_CASE("The exact algorithm is drawn on the exact floor of the plot", "[report]") {
+TEST_CASE("The exact algorithm is drawn on the exact floor of the plot",
+          "[09_speed_vs_error][step5][report]") {
   const auto summaries = tri::ch09::summarize(tiny_run().report.rows);
   const tri::ch09::PlotLayout layout;
   const tri::ch09::ErrorAxis axis = tri::ch09::error_axis_for(summaries, layout);
@@ -279,11 +285,11 @@ TEST_CASE("The exact algorithm is drawn on the exact floor of the plot", "[repor
   }
 }
 
-TEST_CASE("Text in the SVG is escaped", "[report]") {
+TEST_CASE("Text in the SVG is escaped", "[09_speed_vs_error][step5][report]") {
   CHECK(tri::ch09::escape_xml("a<b & \"c\">") == "a&lt;b &amp; &quot;c&quot;&gt;");
 }
 
-TEST_CASE("Rates are written with a k, M or G suffix", "[report]") {
+TEST_CASE("Rates are written with a k, M or G suffix", "[09_speed_vs_error][step5][report]") {
   CHECK(tri::ch09::human_rate(0) == "–");
   CHECK(tri::ch09::human_rate(950) == "950");
   CHECK(tri::ch09::human_rate(12'345) == "12.3 k");
@@ -291,14 +297,15 @@ TEST_CASE("Rates are written with a k, M or G suffix", "[report]") {
   CHECK(tri::ch09::human_rate(2e9) == "2 G");
 }
 
-TEST_CASE("Table speeds are whole numbers from 100 Mpix/s up", "[report]") {
+TEST_CASE("Table speeds are whole numbers from 100 Mpix/s up",
+          "[09_speed_vs_error][step5][report]") {
   CHECK(tri::ch09::format_mpix(1559.6) == "1560");
   CHECK(tri::ch09::format_mpix(100.0) == "100");
   CHECK(tri::ch09::format_mpix(22.94) == "22.9");
   CHECK(tri::ch09::format_mpix(0.0) == "0");
 }
 
-TEST_CASE("save_report writes the three files the run rendered", "[report]") {
+TEST_CASE("save_report writes the three files the run rendered", "[09_speed_vs_error][report]") {
   const auto folder = unique_temporary_folder("tri_ch09_report_test");
   std::filesystem::remove_all(folder);
   std::ostringstream log;
@@ -315,7 +322,7 @@ TEST_CASE("save_report writes the three files the run rendered", "[report]") {
 }
 
 TEST_CASE("save_report writes the set whole or not at all: a failing file keeps the earlier set",
-          "[report]") {
+          "[09_speed_vs_error][report]") {
   const auto folder = unique_temporary_folder("tri_ch09_report_set_test");
   std::filesystem::remove_all(folder);
   std::filesystem::create_directories(folder / tri::ch09::svg_file_name);  // cannot be replaced
@@ -332,7 +339,7 @@ TEST_CASE("save_report writes the set whole or not at all: a failing file keeps 
 }
 
 TEST_CASE("A threaded algorithm is held to the faster ceiling, any other to one thread's",
-          "[report]") {
+          "[09_speed_vs_error][step3][report]") {
   tri::TriangleAlgorithm threaded = chosen_algorithms().front();
   threaded.threaded = true;
   const tri::ch09::FillCeilings ceilings{100.0, 300.0, 2};
@@ -346,7 +353,7 @@ TEST_CASE("A threaded algorithm is held to the faster ceiling, any other to one 
 }
 
 TEST_CASE("The error scene keeps the first triangles when the error is measured on a subset",
-          "[report]") {
+          "[09_speed_vs_error][step4][report]") {
   const tri::ch09::SuiteScene& suite = tiny_run().settings.scenes.front();
   const auto whole = tri::ch09::prepare_scene(suite, 0);
   const auto part = tri::ch09::prepare_scene(suite, 5);
@@ -360,7 +367,8 @@ TEST_CASE("The error scene keeps the first triangles when the error is measured 
   CHECK(tri::count_triangles(whole.error_scene) == whole.triangles.size());
 }
 
-TEST_CASE("A threaded algorithm is labelled as such and gets its own ceiling line", "[report]") {
+TEST_CASE("A threaded algorithm is labelled as such and gets its own ceiling line",
+          "[09_speed_vs_error][step5][report]") {
   BenchReport report = tiny_run().report;
   report.ceilings = {100.0, 250.0, 2};
   auto summaries = tri::ch09::summarize(report.rows);

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "measure/scene_generators.hpp"
+#include "measure/timing.hpp"
 
 namespace tri::ch09 {
 
@@ -35,14 +36,6 @@ std::string grid_label(int grid_bits);
 
 /// Every scene of a suite: each kind on the integer grid, then each kind on the 1/256 grid.
 std::vector<SuiteScene> scene_suite(SuiteSize size);
-
-/// How each timed sample is taken.
-struct TimingPlan {
-  double min_sample_seconds =
-      0.01;                       ///< repetitions per sample are raised until a sample lasts this
-  int samples = 5;                ///< timed samples after the warm-up (the median is of these)
-  int max_repetitions = 1 << 20;  ///< never more runs per sample than this
-};
 
 /// Everything a run needs: the scenes, the timing and how much of each scene the error uses.
 struct BenchSettings {

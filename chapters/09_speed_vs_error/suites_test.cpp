@@ -19,7 +19,7 @@ const std::vector<std::string> kinds{"tiny", "medium", "large", "slivers", "mesh
 }  // namespace
 
 TEST_CASE("Every suite has the seven scene kinds on the integer grid, then on the 1/256 grid",
-          "[suites]") {
+          "[09_speed_vs_error][step1][suites]") {
   for (const SuiteSize size : {SuiteSize::tiny, SuiteSize::quick, SuiteSize::full}) {
     const std::vector<SuiteScene> scenes = tri::ch09::scene_suite(size);
     REQUIRE(scenes.size() == 2 * kinds.size());
@@ -34,9 +34,8 @@ TEST_CASE("Every suite has the seven scene kinds on the integer grid, then on th
 }
 
 TEST_CASE(
-    "The quick suite draws on 256x256 and the full one on 512x512 with a 100,000-triangle "
-    "mesh",
-    "[suites]") {
+    "The quick suite draws on 256x256 and the full one on 512x512 with a 100,000-triangle mesh",
+    "[09_speed_vs_error][step1][suites]") {
   CHECK(tri::ch09::scene_suite(SuiteSize::quick).front().recipe.width == 256);
   const std::vector<SuiteScene> full = tri::ch09::scene_suite(SuiteSize::full);
   CHECK(full.front().recipe.width == 512);
@@ -44,7 +43,7 @@ TEST_CASE(
   CHECK(tri::count_triangles(tri::generate_scene(full[4].recipe)) == 100352);
 }
 
-TEST_CASE("No two scenes of a suite share a seed", "[suites]") {
+TEST_CASE("No two scenes of a suite share a seed", "[09_speed_vs_error][step1][suites]") {
   const std::vector<SuiteScene> scenes = tri::ch09::scene_suite(SuiteSize::quick);
   std::set<std::uint64_t> seeds;
   for (const SuiteScene& s : scenes) seeds.insert(s.recipe.seed);
@@ -52,7 +51,7 @@ TEST_CASE("No two scenes of a suite share a seed", "[suites]") {
 }
 
 TEST_CASE("Integer-grid scenes have integer vertices and 1/256-grid scenes multiples of 1/256",
-          "[suites]") {
+          "[09_speed_vs_error][step1][suites]") {
   for (const SuiteScene& suite : tri::ch09::scene_suite(SuiteSize::tiny)) {
     const double scale = suite.recipe.grid_bits == 0 ? 1.0 : 256.0;
     bool any_fraction = false;
@@ -67,13 +66,14 @@ TEST_CASE("Integer-grid scenes have integer vertices and 1/256-grid scenes multi
   }
 }
 
-TEST_CASE("Grid labels name the integer and the 1/256 grid", "[suites]") {
+TEST_CASE("Grid labels name the integer and the 1/256 grid", "[09_speed_vs_error][step1][suites]") {
   CHECK(tri::ch09::grid_label(0) == "integer");
   CHECK(tri::ch09::grid_label(8) == "1/256");
   CHECK(tri::ch09::grid_label(4) == "1/2^4");
 }
 
-TEST_CASE("The tiny setting runs once per sample and measures error on whole scenes", "[suites]") {
+TEST_CASE("The tiny setting runs once per sample and measures error on whole scenes",
+          "[09_speed_vs_error][step1][suites]") {
   const BenchSettings tiny = tri::ch09::bench_settings(SuiteSize::tiny);
   CHECK(tiny.timing.samples == 1);
   CHECK(tiny.timing.max_repetitions == 1);

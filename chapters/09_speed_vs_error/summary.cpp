@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <map>
 
-#include "chapters/09_speed_vs_error/statistics.hpp"
+#include "measure/statistics.hpp"
 
 namespace tri::ch09 {
 namespace {

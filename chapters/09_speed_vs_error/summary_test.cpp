@@ -36,7 +36,8 @@ Measurement made_up(std::string algorithm, std::string scene, bool mesh, double 
 
 }  // namespace
 
-TEST_CASE("A summary takes geometric means of speeds and sums of errors", "[summary]") {
+TEST_CASE("A summary takes geometric means of speeds and sums of errors",
+          "[09_speed_vs_error][step5][summary]") {
   const std::vector<Measurement> rows{
       made_up("a", "tiny", false, 0.001, 1'000'000, 100, 1, 2, 5),  // 1000 Mpix/s
       made_up("b", "tiny", false, 0.002, 1'000'000, 100, 0, 0, 0),
@@ -65,7 +66,7 @@ TEST_CASE("A summary takes geometric means of speeds and sums of errors", "[summ
   CHECK(b.large_mpix_per_s == 0);  // no large scene measured
 }
 
-TEST_CASE("Precision suffixes name a family and its bits", "[summary]") {
+TEST_CASE("Precision suffixes name a family and its bits", "[09_speed_vs_error][step5][summary]") {
   const auto step = [](const char* name) { return tri::ch09::precision_step(name); };
   REQUIRE(step("fixed_point_8"));
   CHECK(step("fixed_point_8")->family == "fixed_point");
@@ -81,7 +82,8 @@ TEST_CASE("Precision suffixes name a family and its bits", "[summary]") {
   CHECK_FALSE(step("many_1234"));
 }
 
-TEST_CASE("Precision families join members of one chapter from fewer to more bits", "[summary]") {
+TEST_CASE("Precision families join members of one chapter from fewer to more bits",
+          "[09_speed_vs_error][step5][summary]") {
   const auto summary = [](const char* name, const char* chapter) {
     AlgorithmSummary s;
     s.algorithm = name;

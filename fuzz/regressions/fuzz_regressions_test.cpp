@@ -67,8 +67,8 @@ std::string as_text(const std::vector<std::uint8_t>& bytes) {
 // ---------------------------------------------------------------------------------------------
 // The seed corpus.
 
-TEST_CASE("every scene seed keeps the parser's contract, and its name says whether it parses",
-          "[corpus]") {
+TEST_CASE("Every scene seed keeps the parser's contract, and its name says whether it parses",
+          "[fuzz][corpus]") {
   const auto files = corpus_files("fuzz_scene_parser");
   REQUIRE(files.size() >= 25);
   for (const fs::path& file : files) {
@@ -80,7 +80,7 @@ TEST_CASE("every scene seed keeps the parser's contract, and its name says wheth
   }
 }
 
-TEST_CASE("the scene seeds hit every kind of parser error", "[corpus]") {
+TEST_CASE("The scene seeds hit every kind of parser error", "[fuzz][corpus]") {
   std::string messages;
   for (const fs::path& file : corpus_files("fuzz_scene_parser")) {
     messages += check_scene_parser(as_text(read_bytes(file))).error + "\n";
@@ -95,7 +95,8 @@ TEST_CASE("the scene seeds hit every kind of parser error", "[corpus]") {
   }
 }
 
-TEST_CASE("every rasterizer seed keeps the checks with every registered algorithm", "[corpus]") {
+TEST_CASE("Every rasterizer seed keeps the checks with every registered algorithm",
+          "[fuzz][corpus]") {
   const auto files = corpus_files("fuzz_rasterizers");
   REQUIRE(files.size() >= 25);
   for (const fs::path& file : files) {
@@ -104,16 +105,16 @@ TEST_CASE("every rasterizer seed keeps the checks with every registered algorith
   }
 }
 
-TEST_CASE("the rasterizer seeds in the repository are the ones fuzz_seed_writer writes",
-          "[corpus]") {
+TEST_CASE("The rasterizer seeds in the repository are the ones fuzz_seed_writer writes",
+          "[fuzz][corpus]") {
   for (const NamedSeed& seed : rasterizer_seeds()) {
     INFO("seed " << seed.name << " (rewrite the corpus with fuzz_seed_writer)");
     CHECK(read_bytes(corpus_folder / "fuzz_rasterizers" / seed.name) == seed.bytes);
   }
 }
 
-TEST_CASE("the rasterizer seeds reach the oracle comparison, refusals and the batch path",
-          "[corpus]") {
+TEST_CASE("The rasterizer seeds reach the oracle comparison, refusals and the batch path",
+          "[fuzz][corpus]") {
   int on_grid = 0;
   int refused = 0;
   int several = 0;
@@ -133,7 +134,8 @@ TEST_CASE("the rasterizer seeds reach the oracle comparison, refusals and the ba
 // ---------------------------------------------------------------------------------------------
 // The input layout the corpus depends on.
 
-TEST_CASE("an input decodes to the algorithm, canvas and triangle its bytes spell", "[layout]") {
+TEST_CASE("An input decodes to the algorithm, canvas and triangle its bytes spell",
+          "[fuzz][layout]") {
   // Selector 7, width 63 + 1, height 64 % 64 + 1; one interesting triangle in colour 10 20 30.
   const std::vector<std::uint8_t> bytes{7,  63,   64,  1, 10, 20, 30,  //
                                         1,  0xFF, 128,                 // 2^30 - 1 + 1/2
@@ -158,7 +160,7 @@ TEST_CASE("an input decodes to the algorithm, canvas and triangle its bytes spel
   CHECK(t.vertices[2].y == -128.0);
 }
 
-TEST_CASE("raw doubles are read little-endian, and missing bytes read as zero", "[layout]") {
+TEST_CASE("Raw doubles are read little-endian, and missing bytes read as zero", "[fuzz][layout]") {
   // 1.0 is 0x3FF0000000000000; the input ends after x0, so the other coordinates are 0.
   const std::vector<std::uint8_t> bytes{0, 0, 0, 0, 1, 2, 3, 0, 0, 0, 0, 0, 0, 0xF0, 0x3F};
   const RasterizerInput input = decode_rasterizer_input(bytes);
@@ -168,7 +170,7 @@ TEST_CASE("raw doubles are read little-endian, and missing bytes read as zero", 
   CHECK(input.triangles[0].vertices[2].y == 0.0);
 }
 
-TEST_CASE("an empty input is one triangle at the origin on a 1x1 canvas", "[layout]") {
+TEST_CASE("An empty input is one triangle at the origin on a 1x1 canvas", "[fuzz][layout]") {
   const RasterizerInput input = decode_rasterizer_input({});
   CHECK(input.width == 1);
   CHECK(input.height == 1);
@@ -176,7 +178,7 @@ TEST_CASE("an empty input is one triangle at the origin on a 1x1 canvas", "[layo
   CHECK(input.triangles[0].vertices[1].x == 0.0);
 }
 
-TEST_CASE("every byte left starts a triangle, up to four", "[layout]") {
+TEST_CASE("Every byte left starts a triangle, up to four", "[fuzz][layout]") {
   RasterizerInputWriter writer(0, 8, 8);
   for (int i = 0; i < 6; ++i) writer.interesting({}, colors::white);
   std::vector<std::uint8_t> bytes = writer.bytes();
@@ -185,7 +187,7 @@ TEST_CASE("every byte left starts a triangle, up to four", "[layout]") {
   CHECK(decode_rasterizer_input(bytes).triangles.size() == 2);
 }
 
-TEST_CASE("interesting values up to 2^31 stay exactly on the 1/256 grid", "[layout]") {
+TEST_CASE("Interesting values up to 2^31 stay exactly on the 1/256 grid", "[fuzz][layout]") {
   for (int base = 0; base < static_cast<int>(Base::count); ++base) {
     const double value = base_value(static_cast<Base>(base));
     if (!std::isfinite(value) || std::abs(value) > 2147483648.0) continue;
@@ -223,7 +225,7 @@ RasterizerInput triangle_on_8x8(const Triangle& t) {
 
 }  // namespace
 
-TEST_CASE("the rasterizer checks report writes outside the canvas", "[checks]") {
+TEST_CASE("The rasterizer checks report writes outside the canvas", "[fuzz][checks]") {
   const TriangleAlgorithm algorithm{"outside", "test", CoverageRule::approximate, "",
                                     broken::writes_outside};
   const Findings findings =
@@ -232,7 +234,7 @@ TEST_CASE("the rasterizer checks report writes outside the canvas", "[checks]") 
   CHECK_THAT(findings[0], Catch::Contains("1 writes outside the canvas"));
 }
 
-TEST_CASE("the rasterizer checks report a foreign colour", "[checks]") {
+TEST_CASE("The rasterizer checks report a foreign colour", "[fuzz][checks]") {
   const TriangleAlgorithm algorithm{"colour", "test", CoverageRule::approximate, "",
                                     broken::paints_in_another_colour};
   const Findings findings =
@@ -242,8 +244,8 @@ TEST_CASE("the rasterizer checks report a foreign colour", "[checks]") {
   CHECK_THAT(findings[1], Catch::Contains("counted as written"));
 }
 
-TEST_CASE("the rasterizer checks report a top-left algorithm that differs from the oracle",
-          "[checks]") {
+TEST_CASE("The rasterizer checks report a top-left algorithm that differs from the oracle",
+          "[fuzz][checks]") {
   const TriangleAlgorithm algorithm{"nothing", "test", CoverageRule::top_left, "",
                                     broken::draws_nothing};
   // (1,1) (3,1) (1,3): the oracle covers (1,2) alone; the centres on the bottom edge and on the
@@ -254,7 +256,8 @@ TEST_CASE("the rasterizer checks report a top-left algorithm that differs from t
   CHECK_THAT(findings[0], Catch::Contains("missed 1: (1, 2); extra 0:"));
 }
 
-TEST_CASE("the rasterizer checks compare with the oracle only on the 1/256 grid", "[checks]") {
+TEST_CASE("The rasterizer checks compare with the oracle only on the 1/256 grid",
+          "[fuzz][checks]") {
   const TriangleAlgorithm algorithm{"nothing", "test", CoverageRule::top_left, "",
                                     broken::draws_nothing};
   CHECK(check_rasterizer(algorithm, triangle_on_8x8({{{1, 1}, {3.001, 1}, {1, 3}}})).empty());
@@ -263,7 +266,8 @@ TEST_CASE("the rasterizer checks compare with the oracle only on the 1/256 grid"
   CHECK(check_rasterizer(approximate, triangle_on_8x8({{{1, 1}, {3, 1}, {1, 3}}})).empty());
 }
 
-TEST_CASE("the rasterizer checks report a batch that differs from drawing one by one", "[checks]") {
+TEST_CASE("The rasterizer checks report a batch that differs from drawing one by one",
+          "[fuzz][checks]") {
   const TriangleAlgorithm algorithm{"batch",
                                     "test",
                                     CoverageRule::approximate,
@@ -277,15 +281,16 @@ TEST_CASE("the rasterizer checks report a batch that differs from drawing one by
   CHECK_THAT(findings[0], Catch::Contains("pixels differ from drawing them one by one 1: (0, 0)"));
 }
 
-TEST_CASE("a refused triangle never reaches the algorithm, so nothing is reported", "[checks]") {
+TEST_CASE("A refused triangle never reaches the algorithm, so nothing is reported",
+          "[fuzz][checks]") {
   const TriangleAlgorithm algorithm{"outside", "test", CoverageRule::approximate, "",
                                     broken::writes_outside};
   const double nan = std::numeric_limits<double>::quiet_NaN();
   CHECK(check_rasterizer(algorithm, triangle_on_8x8({{{nan, 1}, {6, 1}, {1, 6}}})).empty());
 }
 
-TEST_CASE("the scene contract check reports a bad canvas and coordinates beyond the limits",
-          "[checks]") {
+TEST_CASE("The scene contract check reports a bad canvas and coordinates beyond the limits",
+          "[fuzz][checks]") {
   Scene scene;
   scene.width = 0;
   scene.height = 16385;

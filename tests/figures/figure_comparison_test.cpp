@@ -92,8 +92,8 @@ TEST_CASE("Golden figures: a rendered figure that was never committed fails", "[
 }
 
 TEST_CASE(
-    "Golden figures: a committed figure that no program renders is stale, unless it is a "
-    "snapshot of a timed run",
+    "Golden figures: a committed figure that no program renders is stale, unless it is a snapshot "
+    "of a timed run",
     "[figures]") {
   const TwoFolders folders;
   write_text(folders.committed / "old.svg", "<svg/>\n");

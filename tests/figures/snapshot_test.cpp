@@ -10,8 +10,7 @@
 #include "measure/registry.hpp"
 
 TEST_CASE(
-    "The committed speed-vs-error snapshot is a whole SVG that names every registered "
-    "algorithm",
+    "The committed speed-vs-error snapshot is a whole SVG that names every registered algorithm",
     "[figures]") {
   std::ifstream in(TUTORIAL_COMMITTED_FIGURES "/09_speed_vs_error.svg", std::ios::binary);
   REQUIRE(in);

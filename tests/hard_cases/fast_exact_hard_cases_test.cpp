@@ -5,7 +5,7 @@
 #include "chapters/08_fast_exact/algorithms.hpp"
 #include "tests/hard_cases/hard_cases.hpp"
 
-TEST_CASE("every variant of the chapter is safe and exact on every hard case") {
+TEST_CASE("Every variant of the chapter is safe and exact on every hard case", "[hard_cases]") {
   for (const auto& algorithm : tri::ch08::triangle_algorithms()) {
     for (const auto& c : tri::hard_cases::all_cases()) {
       INFO(algorithm.name << " on " << c.name);

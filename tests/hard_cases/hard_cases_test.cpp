@@ -31,7 +31,7 @@ std::map<std::string, std::string> read_expected() {
 
 }  // namespace
 
-TEST_CASE("every hard case has a unique name, a reason and a 32x32 scene") {
+TEST_CASE("Every hard case has a unique name, a reason and a 32x32 scene", "[hard_cases]") {
   const auto cases = all_cases();
   CHECK(cases.size() >= 25);
   std::map<std::string, int> names;
@@ -43,7 +43,7 @@ TEST_CASE("every hard case has a unique name, a reason and a 32x32 scene") {
   }
 }
 
-TEST_CASE("every registered algorithm is safe on every hard case") {
+TEST_CASE("Every registered algorithm is safe on every hard case", "[hard_cases]") {
   // No write outside the canvas, NaN and infinities refused, and (by finishing) no hang.
   for (const auto& algorithm : tri::registered_algorithms()) {
     for (const auto& c : all_cases()) {
@@ -55,7 +55,8 @@ TEST_CASE("every registered algorithm is safe on every hard case") {
   }
 }
 
-TEST_CASE("every top-left algorithm matches the oracle exactly on every hard case") {
+TEST_CASE("Every top-left algorithm matches the oracle exactly on every hard case",
+          "[hard_cases]") {
   for (const auto& algorithm : tri::registered_algorithms()) {
     if (algorithm.rule != tri::CoverageRule::top_left) continue;
     for (const auto& c : all_cases()) {
@@ -70,7 +71,8 @@ TEST_CASE("every top-left algorithm matches the oracle exactly on every hard cas
   }
 }
 
-TEST_CASE("every other algorithm deviates exactly as tests/hard_cases_expected.csv records") {
+TEST_CASE("Every other algorithm deviates exactly as tests/hard_cases_expected.csv records",
+          "[hard_cases]") {
   // A change in any count shows here. After an intended change, regenerate the file with
   //   ./build/release/tests/hard_case_matrix --csv tests/hard_cases_expected.csv
   // and explain the new numbers in the commit.
@@ -94,7 +96,8 @@ TEST_CASE("every other algorithm deviates exactly as tests/hard_cases_expected.c
   CHECK(compared > 0);
 }
 
-TEST_CASE("the hard-case page has a matrix row and a section with its reason per case") {
+TEST_CASE("The hard-case page has a matrix row and a section with its reason per case",
+          "[hard_cases]") {
   const auto cases = all_cases();
   const auto outcomes = run_all(tri::registered_algorithms());
   const std::string md = to_markdown(outcomes, cases);
@@ -109,7 +112,7 @@ TEST_CASE("the hard-case page has a matrix row and a section with its reason per
   CHECK(md.find("| **unsafe** |") == std::string::npos);
 }
 
-TEST_CASE("the hard-case page spells the result codes out") {
+TEST_CASE("The hard-case page spells the result codes out", "[hard_cases]") {
   Outcome o{"a", "inclusive", "c", {}, true};
   o.error.extra = 26;
   o.error.overdraw = 1;
@@ -130,7 +133,8 @@ TEST_CASE("the hard-case page spells the result codes out") {
   CHECK(in_words(o) == "**unsafe**: 3 writes outside the canvas");
 }
 
-TEST_CASE("a case's diagram draws its triangles over the pixels the oracle covers") {
+TEST_CASE("A case's diagram draws its triangles over the pixels the oracle covers",
+          "[hard_cases]") {
   const auto cases = all_cases();
   const auto find = [&](const std::string& name) {
     return *std::find_if(cases.begin(), cases.end(),

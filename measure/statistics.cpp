@@ -1,10 +1,10 @@
-#include "chapters/09_speed_vs_error/statistics.hpp"
+#include "measure/statistics.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
-namespace tri::ch09 {
+namespace tri {
 
 // [listing spread_of]
 Spread spread_of(std::vector<double> samples) {
@@ -27,4 +27,4 @@ double geometric_mean(std::span<const double> values) noexcept {
   return count == 0 ? 0.0 : std::exp(log_sum / count);
 }
 
-}  // namespace tri::ch09
+}  // namespace tri

@@ -1,19 +1,16 @@
-#include "chapters/09_speed_vs_error/timing.hpp"
+#include "measure/timing.hpp"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <thread>
-#include <vector>
 
-namespace tri::ch09 {
+namespace tri {
 namespace {
 
-double seconds_for(const std::function<void()>& run, int repetitions) {
-  const auto start = std::chrono::steady_clock::now();
-  for (int i = 0; i < repetitions; ++i) run();
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
+// Wall time on steady_clock: the one clock that also times threaded variants and external peers;
+// a shared machine's noise is met by interleaved rounds and the median instead.
+using Clock = std::chrono::steady_clock;
 
 void fill_rows(Canvas& canvas, int first_row, int end_row, Color color) {
   for (int y = first_row; y < end_row; ++y) {
@@ -23,6 +20,12 @@ void fill_rows(Canvas& canvas, int first_row, int end_row, Color color) {
 }
 
 }  // namespace
+
+double seconds_of(const std::function<void()>& run, int repetitions) {
+  const auto start = Clock::now();
+  for (int i = 0; i < repetitions; ++i) run();
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
 
 // [listing calibrated_timing]
 int next_repetitions(int repetitions, double elapsed_seconds, double target_seconds,
@@ -36,21 +39,46 @@ int next_repetitions(int repetitions, double elapsed_seconds, double target_seco
   return static_cast<int>(std::min(wanted, static_cast<double>(max_repetitions)));
 }
 
-Timing time_runs(const std::function<void()>& run, const TimingPlan& plan) {
+namespace {
+
+int calibrated_repetitions(const std::function<void()>& run, const TimingPlan& plan) {
   run();  // warm-up: caches, page faults, branch predictors
+  if (plan.repetitions > 0) return plan.repetitions;
   const int max_repetitions = std::max(1, plan.max_repetitions);
   int repetitions = 1;
   for (;;) {
-    const double elapsed = seconds_for(run, repetitions);
-    if (elapsed >= plan.min_sample_seconds || repetitions >= max_repetitions) break;
+    const double elapsed = seconds_of(run, repetitions);
+    if (elapsed >= plan.min_sample_seconds || repetitions >= max_repetitions) return repetitions;
     repetitions = next_repetitions(repetitions, elapsed, plan.min_sample_seconds, max_repetitions);
   }
-  std::vector<double> per_run;
+}
+
+}  // namespace
+
+std::vector<Timing> time_interleaved(std::span<const std::function<void()>> runs,
+                                     const TimingPlan& plan,
+                                     const std::function<void(int rounds_done)>& after_round) {
+  std::vector<int> repetitions;
+  for (const auto& run : runs) repetitions.push_back(calibrated_repetitions(run, plan));
   const int samples = std::max(1, plan.samples);
-  for (int i = 0; i < samples; ++i) per_run.push_back(seconds_for(run, repetitions) / repetitions);
-  return {spread_of(std::move(per_run)), repetitions, samples};
+  std::vector<std::vector<double>> per_run(runs.size());
+  for (int round = 0; round < samples; ++round) {
+    for (std::size_t i = 0; i < runs.size(); ++i) {
+      per_run[i].push_back(seconds_of(runs[i], repetitions[i]) / repetitions[i]);
+    }
+    if (after_round) after_round(round + 1);
+  }
+  std::vector<Timing> timings;
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    timings.push_back({spread_of(std::move(per_run[i])), repetitions[i], samples});
+  }
+  return timings;
 }
 // [/listing]
+
+Timing time_runs(const std::function<void()>& run, const TimingPlan& plan) {
+  return time_interleaved(std::span(&run, 1), plan).front();
+}
 
 // [listing time_canvas_fill]
 Timing time_canvas_fill(Canvas& canvas, int threads, const TimingPlan& plan) {
@@ -81,4 +109,4 @@ double mpix_per_second(double pixels, double seconds) noexcept {
   return seconds > 0 ? pixels / seconds / 1e6 : 0.0;
 }
 
-}  // namespace tri::ch09
+}  // namespace tri

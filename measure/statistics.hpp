@@ -1,11 +1,12 @@
 /// @file
-/// The few statistics the report needs: median and spread of timed samples, geometric means.
+/// The few statistics speed measurements need: median and spread of timed samples, geometric
+/// means.
 #pragma once
 
 #include <span>
 #include <vector>
 
-namespace tri::ch09 {
+namespace tri {
 
 /// The middle and the extremes of a set of samples.
 struct Spread {
@@ -14,12 +15,12 @@ struct Spread {
   double max = 0;
 };
 
-/// Median (the mean of the two middle values for an even count), minimum and maximum.
-/// Throws std::invalid_argument for no samples.
+/// Median (the mean of the two middle values for an even count), minimum and maximum: the one
+/// median every benchmark of the book reports. Throws std::invalid_argument for no samples.
 Spread spread_of(std::vector<double> samples);
 
 /// The geometric mean of the positive values (others are skipped); 0 when there are none. Speeds
 /// of very different scenes are averaged this way so no one scene dominates.
 double geometric_mean(std::span<const double> values) noexcept;
 
-}  // namespace tri::ch09
+}  // namespace tri

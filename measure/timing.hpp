@@ -1,0 +1,62 @@
+/// @file
+/// The one way the book times code (docs/DESIGN.md section 8): a warm-up, repetitions calibrated
+/// so that one sample lasts long enough to trust, samples taken in interleaved rounds across the
+/// things compared, then the median and spread of the samples. Chapter 08's benchmark, chapter
+/// 09's report and `raster --bench` all time through here.
+#pragma once
+
+#include <functional>
+#include <span>
+#include <vector>
+
+#include "common/canvas.hpp"
+#include "measure/statistics.hpp"
+
+namespace tri {
+
+/// How each timed sample is taken.
+struct TimingPlan {
+  double min_sample_seconds =
+      0.01;                       ///< repetitions per sample are raised until a sample lasts this
+  int samples = 5;                ///< timed samples after the warm-up (the median is of these)
+  int max_repetitions = 1 << 20;  ///< never more runs per sample than this
+  int repetitions = 0;            ///< runs per sample, fixed (no calibration); 0: calibrate
+};
+
+/// The outcome of timing one piece of work.
+struct Timing {
+  Spread seconds;       ///< seconds per run: median, fastest and slowest sample
+  int repetitions = 0;  ///< runs per sample
+  int samples = 0;      ///< timed samples
+};
+
+/// Seconds that `repetitions` calls of run() take on the book's one clock.
+double seconds_of(const std::function<void()>& run, int repetitions = 1);
+
+/// Times run(): time_interleaved with nothing else to interleave.
+Timing time_runs(const std::function<void()>& run, const TimingPlan& plan);
+
+/// Times several pieces of work against each other. Each is warmed up by one untimed run and gets
+/// its own repetitions per sample (raised until a sample lasts plan.min_sample_seconds, capped by
+/// plan.max_repetitions; the calibration runs warm up too; plan.repetitions fixes them instead).
+/// Then plan.samples rounds each take one sample of every run in turn, so that whatever else the
+/// machine does slows them all alike. Each sample's time is divided by its repetitions.
+/// after_round, if set, hears how many rounds are done.
+std::vector<Timing> time_interleaved(std::span<const std::function<void()>> runs,
+                                     const TimingPlan& plan,
+                                     const std::function<void(int rounds_done)>& after_round = {});
+
+/// Repetitions to try next during calibration: enough to reach the target by the last sample's
+/// speed (with 20% to spare), at least double, at most max_repetitions.
+int next_repetitions(int repetitions, double elapsed_seconds, double target_seconds,
+                     int max_repetitions) noexcept;
+
+/// Times filling every pixel of the canvas with std::fill, in `threads` threads splitting the
+/// rows (1: Canvas::clear, which is one std::fill over the pixels; counting must be off).
+/// The colour changes with every run so no fill repeats the previous one.
+Timing time_canvas_fill(Canvas& canvas, int threads, const TimingPlan& plan);
+
+/// Millions of pixels per second: pixels / seconds / 1e6, or 0 when no time was measured.
+double mpix_per_second(double pixels, double seconds) noexcept;
+
+}  // namespace tri
