@@ -84,7 +84,8 @@ int main(int argc, char** argv) {
       "algorithm, times them (warm-up, median of repeated samples, beside a std::fill ceiling)\n"
       "and measures their error against the exact oracle. Writes 09_report.csv (every\n"
       "measurement), 09_report.md (one row per algorithm, the machine) and 09_speed_vs_error.svg\n"
-      "(the plot). Quick by default (about a minute on two cores); --full for the complete sweep.",
+      "(the plot). Quick by default (about half a minute on two cores); --full for the complete "
+      "sweep.",
       {{"out", "DIR", "folder for the report (default: out)"},
        {"full", "", "complete sweep: 512x512 canvas, 100,000-triangle mesh, longer samples"},
        {"only", "NAMES",
