@@ -27,13 +27,19 @@ std::string read(const fs::path& path) {
   return text.str();
 }
 
-// The names of the tests CMake adds itself: add_test(NAME "prefix/name" ...).
-void add_cmake_test_names(const fs::path& root, std::set<std::string>& names) {
+// The names of the tests CMake adds itself (add_test(NAME "prefix/name" ...)) and of every
+// TEST_CASE in a *_test.cpp file, registered in this build or not: a README may quote a test of
+// an optional part (an external peer) that this build leaves out.
+void add_other_test_names(const fs::path& root, std::set<std::string>& names) {
   static const std::regex added(R"(add_test\(NAME\s+"[^/"]+/([^"]+)\")");
   for (const auto& entry : fs::recursive_directory_iterator(root)) {
     const auto relative = fs::relative(entry.path(), root).string();
     if (relative.rfind("build", 0) == 0 || relative.rfind(".git", 0) == 0) continue;
-    if (entry.path().filename() != "CMakeLists.txt") continue;
+    const std::string file = entry.path().filename().string();
+    if (file.size() > 9 && file.compare(file.size() - 9, 9, "_test.cpp") == 0) {
+      for (const auto& test : declared_tests(read(entry.path()))) names.insert(test.name);
+    }
+    if (file != "CMakeLists.txt") continue;
     const std::string text = read(entry.path());
     for (auto it = std::sregex_iterator(text.begin(), text.end(), added);
          it != std::sregex_iterator(); ++it) {
@@ -73,7 +79,7 @@ int main(int argc, char** argv) {
         }
       }
     }
-    add_cmake_test_names(root, names);
+    add_other_test_names(root, names);
     std::vector<fs::path> pages = {root / "README.md", root / "docs" / "DESIGN.md",
                                    root / "fuzz" / "README.md"};
     for (const auto& entry : fs::directory_iterator(root / "chapters")) {
