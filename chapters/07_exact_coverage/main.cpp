@@ -16,6 +16,7 @@
 #include "chapters/07_exact_coverage/coverage_oracle.hpp"
 #include "chapters/07_exact_coverage/exact_orientation.hpp"
 #include "chapters/07_exact_coverage/fixed_point.hpp"
+#include "chapters/07_exact_coverage/jittered_mesh.hpp"
 #include "common/figures.hpp"
 #include "common/pixel_diagram.hpp"
 #include "common/random.hpp"
@@ -331,32 +332,9 @@ std::string integer_mesh_figure() {
 
 constexpr int jittered_mesh_size = 48;
 
-// A 6x6 grid of cells over the canvas, vertices jittered on the 1/256 grid, two triangles a cell.
+// A 6x6 grid of cells over the canvas and 4 pixels beyond, vertices jittered on the 1/256 grid.
 std::vector<Triangle> jittered_mesh() {
-  tri::Random random(7);
-  constexpr int cells = 6;
-  const double step = (jittered_mesh_size + 8.0) / cells;
-  std::vector<glm::dvec2> points;
-  for (int j = 0; j <= cells; ++j) {
-    for (int i = 0; i <= cells; ++i) {
-      const bool border = i == 0 || j == 0 || i == cells || j == cells;
-      const double jx = border ? 0 : random.real(-0.15, 0.15) * step;
-      const double jy = border ? 0 : random.real(-0.15, 0.15) * step;
-      points.emplace_back(std::round((-4 + i * step + jx) * 256) / 256,
-                          std::round((-4 + j * step + jy) * 256) / 256);
-    }
-  }
-  const auto at = [&](int i, int j) {
-    return points[static_cast<std::size_t>(j * (cells + 1) + i)];
-  };
-  std::vector<Triangle> mesh;
-  for (int j = 0; j < cells; ++j) {
-    for (int i = 0; i < cells; ++i) {
-      mesh.push_back({{at(i, j), at(i + 1, j), at(i + 1, j + 1)}});
-      mesh.push_back({{at(i, j), at(i + 1, j + 1), at(i, j + 1)}});
-    }
-  }
-  return mesh;
+  return tri::ch07::jittered_mesh(6, 6, {-4, -4}, (jittered_mesh_size + 8.0) / 6, 0.15, 7);
 }
 
 // The mesh as chapter 06 draws it: every vertex rounded to its nearest pixel centre.

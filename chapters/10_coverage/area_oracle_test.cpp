@@ -1,5 +1,5 @@
 #include "chapters/10_coverage/area_oracle.hpp"
-#include "chapters/10_coverage/example_mesh.hpp"
+#include "chapters/07_exact_coverage/jittered_mesh.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -81,7 +81,7 @@ TEST_CASE("The coverages of all pixels add up to exactly the triangle's area",
 TEST_CASE("In a mesh the coverages around an interior pixel add up to exactly one",
           "[10_coverage][step1]") {
   // A 6x6 grid of 2-pixel cells from (0, 0), inner vertices jittered on the 1/256 grid.
-  const auto mesh = jittered_mesh(6, 6, 2, 0.0, 90, 7);
+  const auto mesh = ch07::jittered_mesh(6, 6, {0, 0}, 2, 0.15, 7);
   for (int y = 1; y < 12; ++y) {
     for (int x = 1; x < 12; ++x) {
       Fraction sum = 0;

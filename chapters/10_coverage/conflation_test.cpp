@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "chapters/07_exact_coverage/jittered_mesh.hpp"
 #include "chapters/10_coverage/area_cells.hpp"
-#include "chapters/10_coverage/example_mesh.hpp"
 
 namespace tri::ch10 {
 
@@ -14,7 +14,7 @@ namespace {
 CoverageCanvas mesh_drawn(bool over) {
   CoverageCanvas canvas(22, 18);
   RowCells cells;
-  for (const auto& t : jittered_mesh(5, 4, 4, 0.5, 200, 3)) {
+  for (const auto& t : ch07::jittered_mesh(5, 4, {0.5, 0.5}, 4, 0.15, 3)) {
     if (over) {
       draw_triangle_area_over(canvas, t, cells);
     } else {

@@ -6,9 +6,9 @@
 #include <vector>
 
 #include "chapters/07_exact_coverage/coverage_oracle.hpp"
+#include "chapters/07_exact_coverage/jittered_mesh.hpp"
 #include "chapters/10_coverage/area_cells.hpp"
 #include "chapters/10_coverage/area_oracle.hpp"
-#include "chapters/10_coverage/example_mesh.hpp"
 #include "chapters/10_coverage/sampling.hpp"
 #include "common/figures.hpp"
 #include "common/pixel_diagram.hpp"
@@ -181,7 +181,7 @@ tri::PixelDiagram mesh_panel(const std::vector<tri::Triangle>& mesh, tri::ch10::
 }
 
 tri::SvgFigure conflation_figure() {
-  const auto mesh = tri::ch10::jittered_mesh(3, 2, 4, 0.5, 200, 3);
+  const auto mesh = tri::ch07::jittered_mesh(3, 2, {0.5, 0.5}, 4, 0.15, 3);
   const std::array<tri::PixelDiagram, 2> panels = {
       mesh_panel(mesh, tri::ch10::Blend::sum, "Coverage summed"),
       mesh_panel(mesh, tri::ch10::Blend::over, "Coverage composited as alpha (over)")};
