@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "chapters/07_exact_coverage/algorithms.hpp"
 #include "chapters/07_exact_coverage/coverage_oracle.hpp"
 #include "common/canvas.hpp"
 
@@ -69,10 +70,22 @@ ErrorReport measure_error(const TriangleAlgorithm& algorithm, const Scene& scene
       scene);
 }
 
+namespace {
+
+// Chapter 07's registered exact_oracle: the truth is the algorithm the report lists, not a copy.
+const TriangleAlgorithm& registered_oracle() {
+  const auto algorithms = ch07::triangle_algorithms();
+  const auto oracle = std::find_if(algorithms.begin(), algorithms.end(),
+                                   [](const auto& a) { return a.name == "exact_oracle"; });
+  if (oracle == algorithms.end()) throw std::logic_error("chapter 07 registers no exact_oracle");
+  return *oracle;
+}
+
+}  // namespace
+
 // [listing measure_error]
 ErrorReport measure_error(const CountingDraw& draw, const Scene& scene) {
-  static constexpr TriangleAlgorithm oracle{"exact_oracle", "07_exact_coverage",
-                                            CoverageRule::top_left, "", ch07::draw_triangle_oracle};
+  const TriangleAlgorithm& oracle = registered_oracle();
   const std::vector<SceneTriangle> own_order = reordered_triangles(scene, vertex_orders[0]);
   const WriteCounts truth = draw_write_counts(oracle, scene.width, scene.height, own_order);
   const WriteCounts drawn = draw_counts(draw, scene, own_order);

@@ -8,12 +8,18 @@ namespace tri::ch04 {
 namespace {
 
 constexpr std::array<TriangleAlgorithm, 2> algorithms{{
-    {"scanline_two_loops", "04_scanline", CoverageRule::approximate,
-     "tinyrenderer's lower and upper loops; +1 heights, truncated span ends, row t1.y twice",
-     draw_at_nearest_pixels<fill_two_loops>},
-    {"scanline_single_loop", "04_scanline", CoverageRule::approximate,
-     "tinyrenderer's single loop with second_half, top row included; truncated span ends",
-     draw_at_nearest_pixels<fill_single_loop>},
+    {.name = "scanline_two_loops",
+     .chapter = "04_scanline",
+     .rule = CoverageRule::approximate,
+     .summary =
+         "tinyrenderer's lower and upper loops; +1 heights, truncated span ends, row t1.y twice",
+     .draw = draw_at_nearest_pixels<fill_two_loops>},
+    {.name = "scanline_single_loop",
+     .chapter = "04_scanline",
+     .rule = CoverageRule::approximate,
+     .summary =
+         "tinyrenderer's single loop with second_half, top row included; truncated span ends",
+     .draw = draw_at_nearest_pixels<fill_single_loop>},
 }};
 
 }  // namespace

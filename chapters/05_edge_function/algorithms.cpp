@@ -8,10 +8,13 @@ namespace tri::ch05 {
 
 std::span<const TriangleAlgorithm> triangle_algorithms() {
   static constexpr std::array<TriangleAlgorithm, 1> algorithms{{
-      {"edge_function", "05_edge_function", CoverageRule::inclusive,
-       "bounding box clamped to the canvas, sign of the 2-D cross product per edge, either "
-       "winding",
-       draw_at_nearest_pixels<fill_triangle_edge_function>},
+      {.name = "edge_function",
+       .chapter = "05_edge_function",
+       .rule = CoverageRule::inclusive,
+       .summary =
+           "bounding box clamped to the canvas, sign of the 2-D cross product per edge, either "
+           "winding",
+       .draw = draw_at_nearest_pixels<fill_triangle_edge_function>},
   }};
   return algorithms;
 }

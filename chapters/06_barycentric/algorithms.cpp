@@ -9,12 +9,16 @@ namespace {
 
 // [listing registered]
 constexpr std::array<TriangleAlgorithm, 2> algorithms{{
-    {"barycentric_float", "06_barycentric", CoverageRule::approximate,
-     "bounding box, barycentric weights from one cross product in float",
-     draw_at_nearest_pixels<fill_triangle_barycentric<float>>},
-    {"barycentric_double", "06_barycentric", CoverageRule::approximate,
-     "bounding box, barycentric weights from one cross product in double",
-     draw_at_nearest_pixels<fill_triangle_barycentric<double>>},
+    {.name = "barycentric_float",
+     .chapter = "06_barycentric",
+     .rule = CoverageRule::approximate,
+     .summary = "bounding box, barycentric weights from one cross product in float",
+     .draw = draw_at_nearest_pixels<fill_triangle_barycentric<float>>},
+    {.name = "barycentric_double",
+     .chapter = "06_barycentric",
+     .rule = CoverageRule::approximate,
+     .summary = "bounding box, barycentric weights from one cross product in double",
+     .draw = draw_at_nearest_pixels<fill_triangle_barycentric<double>>},
 }};
 // [/listing]
 

@@ -9,22 +9,34 @@ namespace tri::ch07 {
 
 std::span<const TriangleAlgorithm> triangle_algorithms() {
   static constexpr std::array<TriangleAlgorithm, 5> algorithms{{
-      {"exact_oracle", "07_exact_coverage", CoverageRule::top_left,
-       "the truth: every pixel of the bounding box tested on its own with exact orientation signs",
-       draw_triangle_oracle},
-      {"fixed_point_8", "07_exact_coverage", CoverageRule::top_left,
-       "vertices snapped to 1/256 pixel, integer edge functions, top-left bias (exact on that "
-       "grid)",
-       draw_triangle_fixed_point_8},
-      {"fixed_point_4", "07_exact_coverage", CoverageRule::approximate,
-       "fixed_point_8 with 4 fractional bits: vertices snapped to 1/16 pixel",
-       draw_triangle_fixed_point_4},
-      {"fixed_point_2", "07_exact_coverage", CoverageRule::approximate,
-       "fixed_point_8 with 2 fractional bits: vertices snapped to 1/4 pixel",
-       draw_triangle_fixed_point_2},
-      {"fixed_point_0", "07_exact_coverage", CoverageRule::approximate,
-       "fixed_point_8 with no fractional bits: vertices snapped to pixel centres",
-       draw_triangle_fixed_point_0},
+      {.name = "exact_oracle",
+       .chapter = "07_exact_coverage",
+       .rule = CoverageRule::top_left,
+       .summary = "the truth: every pixel of the bounding box tested on its own with exact "
+                  "orientation signs",
+       .draw = draw_triangle_oracle},
+      {.name = "fixed_point_8",
+       .chapter = "07_exact_coverage",
+       .rule = CoverageRule::top_left,
+       .summary =
+           "vertices snapped to 1/256 pixel, integer edge functions, top-left bias (exact on that "
+           "grid)",
+       .draw = draw_triangle_fixed_point_8},
+      {.name = "fixed_point_4",
+       .chapter = "07_exact_coverage",
+       .rule = CoverageRule::approximate,
+       .summary = "fixed_point_8 with 4 fractional bits: vertices snapped to 1/16 pixel",
+       .draw = draw_triangle_fixed_point_4},
+      {.name = "fixed_point_2",
+       .chapter = "07_exact_coverage",
+       .rule = CoverageRule::approximate,
+       .summary = "fixed_point_8 with 2 fractional bits: vertices snapped to 1/4 pixel",
+       .draw = draw_triangle_fixed_point_2},
+      {.name = "fixed_point_0",
+       .chapter = "07_exact_coverage",
+       .rule = CoverageRule::approximate,
+       .summary = "fixed_point_8 with no fractional bits: vertices snapped to pixel centres",
+       .draw = draw_triangle_fixed_point_0},
   }};
   return algorithms;
 }
