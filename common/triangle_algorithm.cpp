@@ -15,6 +15,8 @@ std::string_view rule_name(CoverageRule rule) noexcept {
       return "inclusive";
     case CoverageRule::approximate:
       return "approximate";
+    case CoverageRule::area:
+      return "area";
   }
   return "approximate";
 }

@@ -24,9 +24,10 @@ enum class CoverageRule {
   top_left,     ///< exact coverage: centres strictly inside, ties by the top-left rule
   inclusive,    ///< centres on an edge are always covered (the articles' methods)
   approximate,  ///< no exactness claimed
+  area,         ///< a fraction of each pixel, not a yes or no (chapter 10's coverage algorithms)
 };
 
-/// The name `raster --list` prints for a rule: "top-left", "inclusive" or "approximate".
+/// The name `raster --list` prints for a rule: "top-left", "inclusive", "approximate" or "area".
 std::string_view rule_name(CoverageRule rule) noexcept;
 
 /// Draws one triangle in one colour. Called only with finite vertices within the scene limits.

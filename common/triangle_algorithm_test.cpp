@@ -51,6 +51,7 @@ TEST_CASE("The coverage rules are named top-left, inclusive and approximate",
   CHECK(rule_name(CoverageRule::top_left) == "top-left");
   CHECK(rule_name(CoverageRule::inclusive) == "inclusive");
   CHECK(rule_name(CoverageRule::approximate) == "approximate");
+  CHECK(rule_name(CoverageRule::area) == "area");
 }
 
 TEST_CASE("Each draw result is described in one line", "[common][algorithm]") {

@@ -21,11 +21,30 @@ std::vector<TriangleAlgorithm> registered_algorithms() {
   return all;
 }
 
+std::vector<ch10::AreaAlgorithm> registered_area_algorithms() {
+  const auto chapter = ch10::area_algorithms();
+  return {chapter.begin(), chapter.end()};
+}
+
+namespace {
+
+template <class Algorithm>
+const Algorithm* find_named(const std::vector<Algorithm>& algorithms, std::string_view name) {
+  const auto it = std::find_if(algorithms.begin(), algorithms.end(),
+                               [&](const Algorithm& a) { return a.name == name; });
+  return it == algorithms.end() ? nullptr : &*it;
+}
+
+}  // namespace
+
 const TriangleAlgorithm* find_algorithm(const std::vector<TriangleAlgorithm>& algorithms,
                                         std::string_view name) {
-  const auto it = std::find_if(algorithms.begin(), algorithms.end(),
-                               [&](const TriangleAlgorithm& a) { return a.name == name; });
-  return it == algorithms.end() ? nullptr : &*it;
+  return find_named(algorithms, name);
+}
+
+const ch10::AreaAlgorithm* find_area_algorithm(const std::vector<ch10::AreaAlgorithm>& algorithms,
+                                               std::string_view name) {
+  return find_named(algorithms, name);
 }
 
 }  // namespace tri

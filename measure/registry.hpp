@@ -6,6 +6,7 @@
 #include <string_view>
 #include <vector>
 
+#include "chapters/10_coverage/area_algorithms.hpp"
 #include "common/triangle_algorithm.hpp"
 
 namespace tri {
@@ -17,5 +18,13 @@ std::vector<TriangleAlgorithm> registered_algorithms();
 /// The algorithm with this name, or nullptr.
 const TriangleAlgorithm* find_algorithm(const std::vector<TriangleAlgorithm>& algorithms,
                                         std::string_view name);
+
+/// All registered coverage algorithms (rule `area`), in chapter order: they draw onto a coverage
+/// canvas, not a colour one, so they are listed apart from the triangle algorithms.
+std::vector<ch10::AreaAlgorithm> registered_area_algorithms();
+
+/// The coverage algorithm with this name, or nullptr.
+const ch10::AreaAlgorithm* find_area_algorithm(const std::vector<ch10::AreaAlgorithm>& algorithms,
+                                               std::string_view name);
 
 }  // namespace tri

@@ -67,6 +67,32 @@ Fraction edge_area(GridPoint a, GridPoint b, const GridBox& box) {
 }
 // [/listing]
 
+// Where the pixel square lies against a triangle, decided from its four corners alone: inside
+// when every corner is inside or on the triangle (which is convex), outside when every corner is
+// on the outer side of one edge line. Neither: the square straddles an edge and needs the areas.
+enum class SquarePlace { inside, outside, straddles };
+
+SquarePlace place_of(const std::array<GridPoint, 3>& v, const GridBox& box) {
+  const std::int64_t doubled =
+      (v[1].x - v[0].x) * (v[2].y - v[0].y) - (v[2].x - v[0].x) * (v[1].y - v[0].y);
+  const std::array<GridPoint, 4> corners = {
+      {{box.x0, box.y0}, {box.x1, box.y0}, {box.x0, box.y1}, {box.x1, box.y1}}};
+  bool all_inside = true;
+  for (int k = 0; k < 3; ++k) {
+    const GridPoint a = v[k], b = v[(k + 1) % 3];
+    int inner = 0;
+    for (const GridPoint& c : corners) {
+      // Positive on the triangle's side of edge ab, whatever the winding.
+      const std::int64_t side = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+      const std::int64_t toward = doubled > 0 ? side : -side;
+      inner += toward > 0 ? 1 : 0;
+      all_inside = all_inside && toward >= 0;
+    }
+    if (inner == 0) return SquarePlace::outside;
+  }
+  return all_inside ? SquarePlace::inside : SquarePlace::straddles;
+}
+
 Fraction magnitude(const Fraction& f) {
   return f < Fraction(0) ? Fraction(0) - f : f;
 }
@@ -115,10 +141,17 @@ std::vector<PixelCoverage> exact_coverages(const Triangle& triangle) {
   const int last_x = static_cast<int>(std::ceil(extent(highest, 0) - 0.5));
   const int first_y = static_cast<int>(std::floor(extent(lowest, 1) + 0.5));
   const int last_y = static_cast<int>(std::ceil(extent(highest, 1) - 0.5));
+  const std::array<GridPoint, 3> v = {to_grid(triangle[0]), to_grid(triangle[1]),
+                                      to_grid(triangle[2])};
   std::vector<PixelCoverage> covered;
+  if (!(Fraction(0) < exact_area(triangle))) return covered;
   for (int y = first_y; y <= last_y; ++y) {
     for (int x = first_x; x <= last_x; ++x) {
-      const Fraction c = exact_coverage(triangle, {x, y});
+      // Most pixels of a large triangle lie wholly inside or outside: no areas needed there.
+      const SquarePlace place = place_of(v, pixel_square({x, y}));
+      if (place == SquarePlace::outside) continue;
+      const Fraction c =
+          place == SquarePlace::inside ? Fraction(1) : exact_coverage(triangle, {x, y});
       if (Fraction(0) < c) covered.push_back({{x, y}, c});
     }
   }

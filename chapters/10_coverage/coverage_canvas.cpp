@@ -13,13 +13,17 @@ CoverageCanvas::CoverageCanvas(int width, int height) : width_(width), height_(h
   values_.assign(static_cast<std::size_t>(width) * static_cast<std::size_t>(height), 0.0f);
 }
 
+std::uint16_t coverage_16(double coverage) noexcept {
+  const double c = std::clamp(coverage, 0.0, 1.0);
+  return static_cast<std::uint16_t>(std::floor(c * 65535.0 + 0.5));
+}
+
 std::string CoverageCanvas::pgm_16() const {
   std::string pgm = "P5\n" + std::to_string(width_) + " " + std::to_string(height_) + "\n65535\n";
   pgm.reserve(pgm.size() + values_.size() * 2);
   for (int y = height_ - 1; y >= 0; --y) {  // the file's first row is the top
     for (int x = 0; x < width_; ++x) {
-      const double c = std::clamp(static_cast<double>(at(x, y)), 0.0, 1.0);
-      const auto v = static_cast<std::uint16_t>(std::floor(c * 65535.0 + 0.5));
+      const std::uint16_t v = coverage_16(at(x, y));
       pgm += static_cast<char>(v >> 8);
       pgm += static_cast<char>(v & 0xff);
     }

@@ -9,6 +9,10 @@
 
 namespace tri::ch10 {
 
+/// A coverage as the 16-bit value the PGM output stores: c clamped to [0, 1], then
+/// round(65535 x c), halves up.
+std::uint16_t coverage_16(double coverage) noexcept;
+
 /// Coverage values per pixel, row-major with row 0 at the bottom (y up, as the canvas). Each
 /// value is the sum of the coverages added to it (1 is a full pixel). A float holds every
 /// sampled coverage (k / n^2, n <= 16) exactly and an area to better than 1/65535.
@@ -20,6 +24,8 @@ class CoverageCanvas {
   int width() const noexcept { return width_; }
   int height() const noexcept { return height_; }
   float at(int x, int y) const { return values_[index(x, y)]; }
+  /// Sets pixel (x, y), which must lie on the canvas, to c.
+  void set(int x, int y, float c) { values_[index(x, y)] = c; }
   /// Adds c to pixel (x, y), which must lie on the canvas.
   void add(int x, int y, float c) { values_[index(x, y)] += c; }
   /// Composites coverage c over pixel (x, y) as alpha: v + c (1 - v), the "over" of Porter and

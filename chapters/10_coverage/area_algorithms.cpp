@@ -1,0 +1,114 @@
+#include "chapters/10_coverage/area_algorithms.hpp"
+
+#include <algorithm>
+#include <array>
+#include <vector>
+
+#include "chapters/10_coverage/area_cells.hpp"
+#include "chapters/10_coverage/sample_spans.hpp"
+#include "chapters/10_coverage/sampling.hpp"
+
+namespace tri::ch10 {
+namespace {
+
+// The row cells live for one batch, so a scene allocates them once, not per triangle.
+template <Blend blend>
+void draw_area_cells(CoverageCanvas& canvas, std::span<const SceneTriangle> triangles) {
+  RowCells cells;
+  for (const SceneTriangle& t : triangles) draw_triangle_area(canvas, t.vertices, cells, blend);
+}
+
+// The pattern is built once per batch (one small allocation), then walked per triangle.
+template <int n>
+void draw_grid_samples(CoverageCanvas& canvas, std::span<const SceneTriangle> triangles) {
+  const SamplePattern pattern = regular_grid(n);
+  for (const SceneTriangle& t : triangles) draw_triangle_samples(canvas, t.vertices, pattern);
+}
+
+template <int count>
+void draw_standard_samples(CoverageCanvas& canvas, std::span<const SceneTriangle> triangles) {
+  const SamplePattern pattern = standard_pattern(count);
+  for (const SceneTriangle& t : triangles) draw_triangle_samples(canvas, t.vertices, pattern);
+}
+
+constexpr std::string_view chapter = "10_coverage";
+
+constexpr std::array algorithms = {
+    AreaAlgorithm{.name = "area_cells",
+                  .chapter = chapter,
+                  .summary = "exact area: edges deposit area and cover into cells, summed per row",
+                  .draw = draw_area_cells<Blend::sum>},
+    AreaAlgorithm{.name = "area_cells_over",
+                  .chapter = chapter,
+                  .summary = "exact area per triangle, composited over as alpha (seams on meshes)",
+                  .draw = draw_area_cells<Blend::over>},
+    AreaAlgorithm{.name = "samples_grid_1x1",
+                  .chapter = chapter,
+                  .summary = "1 sample per pixel (the centre), top-left rule: inside or outside",
+                  .draw = draw_grid_samples<1>,
+                  .samples = 1},
+    AreaAlgorithm{.name = "samples_grid_2x2",
+                  .chapter = chapter,
+                  .summary = "2x2 regular samples per pixel, each by chapter 08's span walker",
+                  .draw = draw_grid_samples<2>,
+                  .samples = 4},
+    AreaAlgorithm{.name = "samples_grid_4x4",
+                  .chapter = chapter,
+                  .summary = "4x4 regular samples per pixel, each by chapter 08's span walker",
+                  .draw = draw_grid_samples<4>,
+                  .samples = 16},
+    AreaAlgorithm{.name = "samples_grid_8x8",
+                  .chapter = chapter,
+                  .summary = "8x8 regular samples per pixel, each by chapter 08's span walker",
+                  .draw = draw_grid_samples<8>,
+                  .samples = 64},
+    AreaAlgorithm{.name = "samples_grid_16x16",
+                  .chapter = chapter,
+                  .summary = "16x16 regular samples per pixel, each by chapter 08's span walker",
+                  .draw = draw_grid_samples<16>,
+                  .samples = 256},
+    AreaAlgorithm{.name = "samples_standard_2",
+                  .chapter = chapter,
+                  .summary = "Vulkan's standard 2-sample pattern, each by chapter 08's span walker",
+                  .draw = draw_standard_samples<2>,
+                  .samples = 2},
+    AreaAlgorithm{.name = "samples_standard_4",
+                  .chapter = chapter,
+                  .summary = "Vulkan's standard 4-sample pattern, each by chapter 08's span walker",
+                  .draw = draw_standard_samples<4>,
+                  .samples = 4},
+    AreaAlgorithm{.name = "samples_standard_8",
+                  .chapter = chapter,
+                  .summary = "Vulkan's standard 8-sample pattern, each by chapter 08's span walker",
+                  .draw = draw_standard_samples<8>,
+                  .samples = 8},
+    AreaAlgorithm{
+        .name = "samples_standard_16",
+        .chapter = chapter,
+        .summary = "Vulkan's standard 16-sample pattern, each by chapter 08's span walker",
+        .draw = draw_standard_samples<16>,
+        .samples = 16},
+};
+
+}  // namespace
+
+std::span<const AreaAlgorithm> area_algorithms() noexcept {
+  return algorithms;
+}
+
+std::size_t draw_coverage(const AreaAlgorithm& algorithm, CoverageCanvas& canvas,
+                          std::span<const SceneTriangle> triangles) {
+  const auto valid = [](const SceneTriangle& t) {
+    return validate_triangle(t.vertices) == DrawResult::drawn;
+  };
+  if (std::all_of(triangles.begin(), triangles.end(), valid)) {
+    algorithm.draw(canvas, triangles);
+    return 0;
+  }
+  std::vector<SceneTriangle> kept;
+  std::copy_if(triangles.begin(), triangles.end(), std::back_inserter(kept), valid);
+  algorithm.draw(canvas, kept);
+  return triangles.size() - kept.size();
+}
+
+}  // namespace tri::ch10

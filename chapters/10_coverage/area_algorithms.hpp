@@ -1,0 +1,41 @@
+/// @file
+/// Chapter 10's algorithms as the registry lists them: each adds a batch of triangles' coverage
+/// to a coverage canvas, under the rule `area` (the value is a fraction of the pixel).
+#pragma once
+
+#include <cstddef>
+#include <span>
+#include <string_view>
+
+#include "chapters/10_coverage/coverage_canvas.hpp"
+#include "common/scene.hpp"
+#include "common/triangle_algorithm.hpp"
+
+namespace tri::ch10 {
+
+/// Adds the coverage of every triangle, in order, to the canvas (colours are ignored). Called
+/// only with triangles that passed validate_triangle.
+using DrawCoverageFunction = void (*)(CoverageCanvas& canvas,
+                                      std::span<const SceneTriangle> triangles);
+
+/// A registered coverage algorithm.
+struct AreaAlgorithm {
+  std::string_view name;     ///< stable name, e.g. "area_cells"
+  std::string_view chapter;  ///< "10_coverage"
+  CoverageRule rule = CoverageRule::area;
+  std::string_view summary;  ///< one line for `raster --list`
+  DrawCoverageFunction draw;
+  int samples = 0;  ///< samples per pixel; 0 for an algorithm that computes the area itself
+};
+
+/// Chapter 10's algorithms: the exact area by cells (summed, and composited "over" as a 2-D
+/// library does), and the sample counts of steps 2 and 3 (grids of 1 to 256 samples, Vulkan's
+/// standard 2 to 16).
+std::span<const AreaAlgorithm> area_algorithms() noexcept;
+
+/// Validates every triangle, then lets the algorithm add the valid ones' coverage. Returns how
+/// many were refused (they add nothing).
+std::size_t draw_coverage(const AreaAlgorithm& algorithm, CoverageCanvas& canvas,
+                          std::span<const SceneTriangle> triangles);
+
+}  // namespace tri::ch10

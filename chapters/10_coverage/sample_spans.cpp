@@ -1,0 +1,26 @@
+#include "chapters/10_coverage/sample_spans.hpp"
+
+#include "chapters/08_fast_exact/spans.hpp"
+#include "chapters/08_fast_exact/triangle_setup.hpp"
+
+namespace tri::ch10 {
+
+// [listing draw_triangle_samples]
+void draw_triangle_samples(CoverageCanvas& canvas, const Triangle& triangle,
+                           const SamplePattern& pattern) {
+  const float weight = 1.0f / static_cast<float>(pattern.offsets.size());
+  for (const glm::ivec2 offset : pattern.offsets) {
+    const glm::dvec2 o = glm::dvec2(offset) / double{sample_units};
+    const Triangle moved = {{triangle[0] - o, triangle[1] - o, triangle[2] - o}};
+    const auto setup = ch08::setup_triangle(moved, canvas.width(), canvas.height());
+    if (!setup) continue;
+    ch08::SpanWalker walker(*setup);
+    for (int y = walker.first_row(); y <= walker.last_row(); ++y, walker.next_row()) {
+      const ch08::RowSpan span = walker.span();
+      for (int x = span.first; x <= span.last; ++x) canvas.add(x, y, weight);
+    }
+  }
+}
+// [/listing]
+
+}  // namespace tri::ch10

@@ -1,0 +1,48 @@
+/// @file
+/// How far a coverage algorithm (rule `area`) is from the exact area of chapter 10's oracle, per
+/// triangle and for the composed scene (@ref design_error "docs/DESIGN.md section 6").
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <span>
+
+#include "chapters/10_coverage/area_algorithms.hpp"
+#include "chapters/10_coverage/coverage_canvas.hpp"
+#include "common/scene.hpp"
+
+namespace tri {
+
+/// Adds the coverage of the triangles to the canvas, as an area algorithm does: the one thing the
+/// error needs, so a rasterizer outside the registry (AGG, cairo, pixman) can be measured too.
+using CoverageDraw =
+    std::function<void(ch10::CoverageCanvas& canvas, std::span<const SceneTriangle> triangles)>;
+
+/// The error of one coverage algorithm on one scene.
+struct AreaErrorReport {
+  std::uint64_t triangles = 0;  ///< triangles compared (refused ones are not)
+  std::uint64_t rejected = 0;   ///< triangles refused: non-finite, out of range or off the grid
+  /// Each triangle drawn alone: |coverage - exact area| over every (triangle, pixel) pair where
+  /// either is above zero.
+  std::uint64_t pixels = 0;
+  double mean = 0;
+  double rms = 0;
+  double max = 0;
+  int max_units = 0;  ///< the largest difference of the 16-bit values (round(65535 c))
+  /// The whole scene drawn: the canvas against the exact coverages summed, both clamped to [0, 1],
+  /// over the pixels where either is above zero. On a mesh this is the seam error.
+  std::uint64_t composed_pixels = 0;
+  double composed_mean = 0;
+  double composed_max = 0;
+  std::uint64_t composed_off_pixels = 0;  ///< pixels more than one 16-bit unit off
+};
+
+/// Measures a coverage drawing on the scene's triangles against the exact oracle (chapter 10).
+/// Triangles the oracle cannot take exactly (off the 1/256 grid or beyond ±32768 pixels) are
+/// counted as rejected and left out of both measurements.
+AreaErrorReport measure_area_error(const CoverageDraw& draw, const Scene& scene);
+
+/// The same for a registered coverage algorithm (drawn through ch10::draw_coverage).
+AreaErrorReport measure_area_error(const ch10::AreaAlgorithm& algorithm, const Scene& scene);
+
+}  // namespace tri
