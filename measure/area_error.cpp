@@ -42,6 +42,26 @@ struct Differences {
   }
 };
 
+// Draws one triangle alone on the canvas (empty before and after), calling visit(x, y, value) on
+// every pixel of its region.
+template <class Visit>
+void draw_alone(const CoverageDraw& draw, ch10::CoverageCanvas& canvas, const SceneTriangle& t,
+                const Region& r, Visit&& visit) {
+  draw(canvas, std::span(&t, 1));
+  for (int y = r.first_y; y <= r.last_y; ++y) {
+    for (int x = r.first_x; x <= r.last_x; ++x) {
+      visit(x, y, static_cast<double>(canvas.at(x, y)));
+      canvas.set(x, y, 0.0f);  // the next triangle starts from an empty canvas
+    }
+  }
+}
+
+CoverageDraw draw_with(const ch10::AreaAlgorithm& algorithm) {
+  return [&algorithm](ch10::CoverageCanvas& canvas, std::span<const SceneTriangle> triangles) {
+    ch10::draw_coverage(algorithm, canvas, triangles);
+  };
+}
+
 bool on_oracle_grid(const Triangle& t) {
   try {
     ch10::require_on_oracle_grid(t);
@@ -126,11 +146,21 @@ AreaErrorReport measure_area_error(const CoverageDraw& draw, const Scene& scene)
 }
 
 AreaErrorReport measure_area_error(const ch10::AreaAlgorithm& algorithm, const Scene& scene) {
-  return measure_area_error(
-      [&](ch10::CoverageCanvas& canvas, std::span<const SceneTriangle> triangles) {
-        ch10::draw_coverage(algorithm, canvas, triangles);
-      },
-      scene);
+  return measure_area_error(draw_with(algorithm), scene);
+}
+
+std::uint64_t touched_pixels(const ch10::AreaAlgorithm& algorithm, int width, int height,
+                             std::span<const SceneTriangle> triangles) {
+  ch10::CoverageCanvas canvas(width, height);
+  const CoverageDraw draw = draw_with(algorithm);
+  std::uint64_t touched = 0;
+  for (const SceneTriangle& t : triangles) {
+    if (validate_triangle(t.vertices) != DrawResult::drawn) continue;
+    const Region r = region_of(t.vertices, width, height);
+    if (r.empty()) continue;
+    draw_alone(draw, canvas, t, r, [&](int, int, double c) { touched += c != 0 ? 1 : 0; });
+  }
+  return touched;
 }
 
 }  // namespace tri

@@ -45,4 +45,9 @@ AreaErrorReport measure_area_error(const CoverageDraw& draw, const Scene& scene)
 /// The same for a registered coverage algorithm (drawn through ch10::draw_coverage).
 AreaErrorReport measure_area_error(const ch10::AreaAlgorithm& algorithm, const Scene& scene);
 
+/// How many pixels one draw of the triangles touches, each triangle's pixels counted on their own
+/// (a pixel two triangles reach counts 2): the pixels of `raster --bench`'s rate for rule area.
+std::uint64_t touched_pixels(const ch10::AreaAlgorithm& algorithm, int width, int height,
+                             std::span<const SceneTriangle> triangles);
+
 }  // namespace tri

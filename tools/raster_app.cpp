@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <functional>
 #include <numeric>
+#include <optional>
 #include <string>
 
 #include <unistd.h>
@@ -16,6 +17,7 @@
 #include "common/output_files.hpp"
 #include "common/printable_text.hpp"
 #include "common/progress.hpp"
+#include "measure/area_error.hpp"
 #include "measure/registry.hpp"
 #include "measure/render_scene.hpp"
 #include "measure/timing.hpp"
@@ -29,6 +31,7 @@ CommandLine raster_command_line() {
       "Renders a scene file with one of the book's triangle algorithms.\n"
       "  raster --list\n"
       "  raster --algo NAME --scene FILE [--out FILE.png] [--counts FILE.pgm]\n"
+      "  raster --algo NAME --scene FILE --coverage FILE.pgm   (an algorithm of rule area)\n"
       "  raster --algo NAME --scene FILE --bench N\n"
       "Scene format: 'canvas W H [r g b]', 'tri x0 y0 x1 y1 x2 y2 [r g b]',\n"
       "'line x0 y0 x1 y1 [r g b]', '#' comments; y is up, integers are pixel centres.\n"
@@ -44,13 +47,17 @@ CommandLine raster_command_line() {
           {"out", "FILE.png", "write the picture as PNG ('-': standard output)"},
           {"counts", "FILE.pgm",
            "write per-pixel write counts as binary PGM, saturating at 255 ('-': standard output)"},
+          {"coverage", "FILE.pgm",
+           "rule area: write the triangles' coverage, summed and clamped to [0, 1], as a 16-bit "
+           "binary PGM, value round(65535 x coverage) ('-': standard output)"},
           {"bench", "N",
            "time N draws of the scene after a warm-up; print the median frame's speed"},
           {"force", "", "run a --bench estimated to take more than 10 minutes anyway"},
       });
 }
 
-void print_list(const std::vector<TriangleAlgorithm>& algorithms, std::ostream& out) {
+template <class Algorithm>
+void print_list(const std::vector<Algorithm>& algorithms, std::ostream& out) {
   for (const auto& a : algorithms) {
     out << a.name << '\t' << a.chapter << '\t' << rule_name(a.rule) << '\t' << a.summary << '\n';
   }
@@ -68,13 +75,13 @@ std::uint64_t pixels_per_frame(const Scene& scene, const TriangleAlgorithm* algo
   return std::accumulate(counts.begin(), counts.end(), std::uint64_t{0});
 }
 
-// Times `frames` frames with the book's one method (measure/timing.hpp): each frame is a sample
-// of one draw after an untimed warm-up, and the rates come from the median frame. Prints the line
-// of docs/DESIGN.md section 9; refuses (unless forced) a run whose estimate is absurd.
-void benchmark(const Scene& scene, const TriangleAlgorithm* algorithm, long long frames,
-               bool forced, std::ostream& out, std::ostream& err) {
-  Canvas canvas = make_canvas(scene);
-  const auto draw = [&] { render_scene(scene, algorithm, canvas); };
+// Times `frames` frames of draw() with the book's one method (measure/timing.hpp): each frame is
+// a sample of one draw after an untimed warm-up, and the rates come from the median frame. Prints
+// the line of docs/DESIGN.md section 9 (`pixels` is what one frame writes); refuses (unless
+// forced) a run whose estimate is absurd.
+void benchmark(const std::function<void()>& draw, std::size_t triangles,
+               const std::function<std::uint64_t()>& pixels, long long frames, bool forced,
+               std::ostream& out, std::ostream& err) {
   const double frame_seconds = seconds_of(draw);  // untimed by the plan: it estimates
   refuse_absurd_run(frame_seconds * static_cast<double>(frames),
                     "--bench " + std::to_string(frames), forced);
@@ -82,47 +89,105 @@ void benchmark(const Scene& scene, const TriangleAlgorithm* algorithm, long long
   plan.samples = static_cast<int>(frames);
   plan.repetitions = 1;
   Progress progress("raster: --bench", static_cast<std::uint64_t>(frames), err);
-  const std::function<void()> run = draw;
-  const Timing timing = time_interleaved(std::span(&run, 1), plan, [&](int done) {
+  const Timing timing = time_interleaved(std::span(&draw, 1), plan, [&](int done) {
                           progress.advance(static_cast<std::uint64_t>(done));
                         }).front();
-  const double pixels = static_cast<double>(pixels_per_frame(scene, algorithm));
   const double median = timing.seconds.median;
-  out << "triangles=" << count_triangles(scene) << " frames=" << frames << " seconds=" << median
+  out << "triangles=" << triangles << " frames=" << frames << " seconds=" << median
       << " min_seconds=" << timing.seconds.min << " max_seconds=" << timing.seconds.max
-      << " tris_per_s=" << (median > 0 ? static_cast<double>(count_triangles(scene)) / median : 0.0)
-      << " mpix_per_s=" << mpix_per_second(pixels, median) << '\n';
+      << " tris_per_s=" << (median > 0 ? static_cast<double>(triangles) / median : 0.0)
+      << " mpix_per_s=" << mpix_per_second(static_cast<double>(pixels()), median) << '\n';
+}
+
+void benchmark(const Scene& scene, const TriangleAlgorithm* algorithm, long long frames,
+               bool forced, std::ostream& out, std::ostream& err) {
+  Canvas canvas = make_canvas(scene);
+  benchmark([&] { render_scene(scene, algorithm, canvas); }, count_triangles(scene),
+            [&] { return pixels_per_frame(scene, algorithm); }, frames, forced, out, err);
+}
+
+// An algorithm of rule area: its coverage of the scene's triangles (lines have no area and are
+// left out), benchmarked or written as a 16-bit PGM (docs/DESIGN.md section 9).
+int run_coverage(const CliArguments& args, const Scene& scene, const ch10::AreaAlgorithm& area,
+                 std::optional<long long> frames, std::ostream& out, std::ostream& err) {
+  const std::vector<SceneTriangle> triangles = scene_triangles(scene);
+  ch10::CoverageCanvas canvas(scene.width, scene.height);
+  if (frames) {
+    benchmark(
+        [&] {
+          canvas.clear();
+          ch10::draw_coverage(area, canvas, triangles);
+        },
+        triangles.size(),
+        [&] { return touched_pixels(area, scene.width, scene.height, triangles); }, *frames,
+        args.has("force"), out, err);
+    return 0;
+  }
+  const std::size_t refused = ch10::draw_coverage(area, canvas, triangles);
+  if (refused > 0) {
+    throw std::runtime_error(std::to_string(refused) +
+                             " triangle(s) have non-finite or out-of-range vertices");
+  }
+  OutputTransaction files(&out);
+  const std::string path = *args.value("coverage");
+  files.stage(path, canvas.pgm_16());
+  files.commit();
+  std::ostream& report = path == standard_output_name ? err : out;
+  report << "drew the coverage of " << triangles.size() << " triangle(s) on " << scene.width << "x"
+         << scene.height << " with " << area.name;
+  const std::size_t lines = scene.primitives.size() - triangles.size();
+  if (lines > 0) report << " (" << lines << " line(s) left out: a line has no area)";
+  report << '\n';
+  return 0;
 }
 
 int run(const CliArguments& args, std::ostream& out, std::ostream& err) {
   const auto algorithms = registered_algorithms();
+  const auto area_algorithms = registered_area_algorithms();
   if (args.has("list")) {
     if (args.has("algo") || args.has("scene") || args.has("out") || args.has("counts") ||
-        args.has("bench")) {
+        args.has("coverage") || args.has("bench")) {
       throw UsageError("--list takes no other option");
     }
     print_list(algorithms, out);
+    print_list(area_algorithms, out);
     return 0;
   }
   const auto scene_path = args.value("scene");
   if (!scene_path) throw UsageError("--scene FILE is required (or --list)");
   const TriangleAlgorithm* algorithm = nullptr;
+  const ch10::AreaAlgorithm* area = nullptr;
   if (const auto name = args.value("algo")) {
     algorithm = find_algorithm(algorithms, *name);
-    if (algorithm == nullptr) {
+    if (algorithm == nullptr) area = find_area_algorithm(area_algorithms, *name);
+    if (algorithm == nullptr && area == nullptr) {
       throw UsageError("unknown algorithm '" + printable_excerpt(*name) +
                        "' (raster --list shows the names)");
     }
   }
   const auto frames = args.integer("bench", 1, 1'000'000);  // every frame's time is kept
-  if (frames && (args.has("out") || args.has("counts"))) {
-    throw UsageError("--bench writes no image: drop --out and --counts");
+  if (frames && (args.has("out") || args.has("counts") || args.has("coverage"))) {
+    throw UsageError("--bench writes no image: drop --out, --counts and --coverage");
   }
   if (args.has("force") && !frames) throw UsageError("--force goes with --bench");
+  if (area != nullptr && (args.has("out") || args.has("counts"))) {
+    throw UsageError(std::string(area->name) +
+                     " has rule area: it computes coverage, not colours; use --coverage FILE.pgm");
+  }
+  if (area != nullptr && !frames && !args.has("coverage")) {
+    throw UsageError(std::string(area->name) +
+                     " has rule area: choose --coverage FILE.pgm or --bench N");
+  }
+  if (area == nullptr && args.has("coverage")) {
+    throw UsageError("--coverage needs an algorithm of rule area (raster --list shows them)" +
+                     (algorithm ? ", and " + std::string(algorithm->name) + " has rule " +
+                                      std::string(rule_name(algorithm->rule))
+                                : std::string()));
+  }
 
   // Every output is checked before any work, so a bad one costs nothing and destroys nothing.
   std::vector<std::filesystem::path> outputs;
-  for (const char* option : {"out", "counts"}) {
+  for (const char* option : {"out", "counts", "coverage"}) {
     if (const auto path = args.value(option)) outputs.emplace_back(*path);
   }
   const std::vector<std::filesystem::path> inputs{*scene_path};
@@ -134,6 +199,7 @@ int run(const CliArguments& args, std::ostream& out, std::ostream& err) {
   }
 
   const Scene scene = load_scene(*scene_path);
+  if (area != nullptr) return run_coverage(args, scene, *area, frames, out, err);
   if (algorithm == nullptr && count_triangles(scene) > 0) {
     throw UsageError(*scene_path + " has triangles: choose an algorithm with --algo NAME");
   }

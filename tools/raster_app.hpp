@@ -10,6 +10,7 @@ namespace tri {
 /// The whole `raster` program, in-process so tests can call it:
 ///   raster --list
 ///   raster --algo NAME --scene FILE [--out FILE.png] [--counts FILE.pgm]
+///   raster --algo NAME --scene FILE --coverage FILE.pgm   (an algorithm of rule area)
 ///   raster --algo NAME --scene FILE --bench N
 /// Returns the exit status; errors are one line on err and leave no output file behind.
 int run_raster(int argc, const char* const* argv, std::ostream& out, std::ostream& err);

@@ -10,7 +10,10 @@
 #include <vector>
 
 #include "chapters/01_lines/line_reference.hpp"
+#include "chapters/10_coverage/area_oracle.hpp"
+#include "chapters/10_coverage/sampling.hpp"
 #include "common/scene.hpp"
+#include "measure/area_error.hpp"
 #include "measure/registry.hpp"
 #include "measure/render_scene.hpp"
 #include "tools/raster_app.hpp"
@@ -85,18 +88,24 @@ TEST_CASE("raster --help describes every form of the command", "[raster]") {
 TEST_CASE("raster --list prints one tab-separated line per registered algorithm", "[raster]") {
   const Run run = raster({"--list"});
   REQUIRE(run.status == 0);
-  const auto algorithms = tri::registered_algorithms();
+  std::vector<std::string> names;
+  for (const auto& a : tri::registered_algorithms()) names.emplace_back(a.name);
+  const std::size_t triangle_algorithms = names.size();
+  for (const auto& a : tri::registered_area_algorithms()) names.emplace_back(a.name);
   std::istringstream lines(run.out);
   std::string line;
   std::size_t count = 0;
-  const std::regex format("[a-z0-9_]+\t[0-9]{2}_[a-z_]+\t(top-left|inclusive|approximate)\t.+");
+  const std::regex format(
+      "[a-z0-9_]+\t[0-9]{2}_[a-z_]+\t(top-left|inclusive|approximate|area)\t.+");
   while (std::getline(lines, line)) {
     CHECK(std::regex_match(line, format));
-    REQUIRE(count < algorithms.size());
-    CHECK(line.starts_with(std::string(algorithms[count].name) + "\t"));
+    REQUIRE(count < names.size());
+    CHECK(line.starts_with(names[count] + "\t"));
+    // The coverage algorithms come last, each with rule area.
+    CHECK((line.find("\tarea\t") != std::string::npos) == (count >= triangle_algorithms));
     ++count;
   }
-  CHECK(count == algorithms.size());
+  CHECK(count == names.size());
 }
 
 TEST_CASE("The registry lists the algorithms of every chapter that fills triangles", "[raster]") {
@@ -330,4 +339,103 @@ TEST_CASE("raster draws the same picture with progress pieces as in one batch", 
                        return a.r == b.r && a.g == b.g && a.b == b.b && a.a == b.a;
                      }));
   }
+}
+
+TEST_CASE(
+    "raster --coverage writes the 16-bit PGM of the contract, within a unit of the exact area",
+    "[raster][coverage]") {
+  TempFolder dir;
+  const auto scene = dir.write("c.scene",
+                               "canvas 12 9\n"
+                               "tri 0.5 0.25 10.75 2.5 3.125 8.5\n"
+                               "tri 10.75 2.5 11.5 8.75 3.125 8.5\n"
+                               "line 0 0 11 8\n");
+  const Run run = raster(
+      {"--algo", "area_cells", "--scene", scene.string(), "--coverage", (dir / "c.pgm").string()});
+  REQUIRE(run.status == 0);
+  CHECK(run.out ==
+        "drew the coverage of 2 triangle(s) on 12x9 with area_cells (1 line(s) left out: a line "
+        "has no area)\n");
+  const std::string pgm = read_file(dir / "c.pgm");
+  const std::string header = "P5\n12 9\n65535\n";
+  REQUIRE(pgm.size() == header.size() + 12 * 9 * 2);
+  CHECK(pgm.substr(0, header.size()) == header);
+  // The two triangles share an edge, so the exact coverages add up: the truth, top row first.
+  const tri::Triangle a = {{{0.5, 0.25}, {10.75, 2.5}, {3.125, 8.5}}};
+  const tri::Triangle b = {{{10.75, 2.5}, {11.5, 8.75}, {3.125, 8.5}}};
+  int worst = 0;
+  for (int row = 0; row < 9; ++row) {
+    for (int x = 0; x < 12; ++x) {
+      const int y = 8 - row;
+      const tri::ch10::Fraction truth =
+          tri::ch10::exact_coverage(a, {x, y}) + tri::ch10::exact_coverage(b, {x, y});
+      const std::size_t k = header.size() + 2 * static_cast<std::size_t>(row * 12 + x);
+      const int value =
+          (static_cast<unsigned char>(pgm[k]) << 8) | static_cast<unsigned char>(pgm[k + 1]);
+      worst = std::max(worst, std::abs(value - tri::ch10::coverage_16(truth)));
+    }
+  }
+  CHECK(worst <= 1);
+}
+
+TEST_CASE("raster refuses --coverage without a rule-area algorithm and colours with one",
+          "[raster][coverage]") {
+  TempFolder dir;
+  const auto scene = dir.write("t.scene", "canvas 8 8\ntri 0 0 7 0 0 7\n");
+  Run run = raster(
+      {"--algo", "fast_hybrid", "--scene", scene.string(), "--coverage", (dir / "x.pgm").string()});
+  CHECK(run.status == 2);
+  CHECK(run.err.find("--coverage needs an algorithm of rule area") != std::string::npos);
+  CHECK(run.err.find("fast_hybrid has rule top-left") != std::string::npos);
+  run = raster(
+      {"--algo", "area_cells", "--scene", scene.string(), "--out", (dir / "x.png").string()});
+  CHECK(run.status == 2);
+  CHECK(run.err.find("area_cells has rule area") != std::string::npos);
+  run = raster({"--algo", "samples_grid_4x4", "--scene", scene.string()});
+  CHECK(run.status == 2);
+  CHECK(run.err.find("choose --coverage FILE.pgm or --bench N") != std::string::npos);
+  CHECK(dir.file_count() == 1);
+}
+
+TEST_CASE("raster --coverage refuses an out-of-range scene and keeps the earlier file",
+          "[raster][coverage]") {
+  TempFolder dir;
+  const auto scene = dir.write("far.scene", "canvas 8 8\ntri 0 0 7 0 0 7\ntri 0 0 1e12 0 0 7\n");
+  const auto earlier = dir.write("c.pgm", "earlier");
+  const Run run =
+      raster({"--algo", "area_cells", "--scene", scene.string(), "--coverage", earlier.string()});
+  CHECK(run.status == 1);
+  CHECK(is_one_line(run.err));
+  CHECK(run.err.find(scene.string() + ":3: x1 1e12 is outside ±2^30") != std::string::npos);
+  CHECK(read_file(earlier) == "earlier");
+  CHECK(dir.file_count() == 2);
+}
+
+TEST_CASE("raster --bench times a rule-area algorithm with the one-line speed report",
+          "[raster][coverage]") {
+  TempFolder dir;
+  const auto scene = dir.write("t.scene", "canvas 8 8\ntri 0 0 7 0 0 7\n");
+  const Run run =
+      raster({"--algo", "samples_standard_4", "--scene", scene.string(), "--bench", "3"});
+  REQUIRE(run.status == 0);
+  const std::regex format(
+      "triangles=1 frames=3 seconds=[0-9.e+-]+ min_seconds=[0-9.e+-]+ max_seconds=[0-9.e+-]+ "
+      "tris_per_s=[0-9.e+-]+ mpix_per_s=[0-9.e+-]+\n");
+  CHECK(std::regex_match(run.out, format));
+}
+
+TEST_CASE("The rate of a rule-area algorithm counts the pixels each triangle touches",
+          "[raster][coverage]") {
+  const tri::Triangle t = {{{0, 0}, {7, 0}, {0, 7}}};
+  const auto pattern = tri::ch10::standard_pattern(4);
+  std::uint64_t sampled = 0;
+  for (int y = 0; y < 8; ++y) {
+    for (int x = 0; x < 8; ++x) sampled += tri::ch10::sampled_coverage(t, {x, y}, pattern) > 0;
+  }
+  const auto algorithms = tri::registered_area_algorithms();
+  const auto* standard_4 = tri::find_area_algorithm(algorithms, "samples_standard_4");
+  REQUIRE(standard_4 != nullptr);
+  const std::vector<tri::SceneTriangle> twice = {{t}, {t}};
+  CHECK(sampled > 28);
+  CHECK(tri::touched_pixels(*standard_4, 8, 8, twice) == 2 * sampled);
 }

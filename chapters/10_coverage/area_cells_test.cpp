@@ -84,13 +84,12 @@ TEST_CASE("The 16-bit PGM of a coverage canvas: header, top row first, big-endia
   canvas.add(0, 1, 1.0f);   // top left: full
   canvas.add(1, 1, 0.5f);   // top right: 32767.5 rounds up
   canvas.add(0, 0, 1.75f);  // bottom left: clamped to 1
-  const std::string pgm = canvas.pgm_16();
+  const std::vector<std::uint8_t> pgm = canvas.pgm_16();
   const std::string header = "P5\n2 2\n65535\n";
   REQUIRE(pgm.size() == header.size() + 8);
-  CHECK(pgm.substr(0, header.size()) == header);
-  const auto value = [&](int k) {
-    return (static_cast<unsigned char>(pgm[header.size() + 2 * k]) << 8) |
-           static_cast<unsigned char>(pgm[header.size() + 2 * k + 1]);
+  CHECK(std::string(pgm.begin(), pgm.begin() + static_cast<long>(header.size())) == header);
+  const auto value = [&](std::size_t k) {
+    return (pgm[header.size() + 2 * k] << 8) | pgm[header.size() + 2 * k + 1];
   };
   CHECK(value(0) == 65535);
   CHECK(value(1) == 32768);

@@ -18,14 +18,16 @@ std::uint16_t coverage_16(double coverage) noexcept {
   return static_cast<std::uint16_t>(std::floor(c * 65535.0 + 0.5));
 }
 
-std::string CoverageCanvas::pgm_16() const {
-  std::string pgm = "P5\n" + std::to_string(width_) + " " + std::to_string(height_) + "\n65535\n";
+std::vector<std::uint8_t> CoverageCanvas::pgm_16() const {
+  const std::string header =
+      "P5\n" + std::to_string(width_) + " " + std::to_string(height_) + "\n65535\n";
+  std::vector<std::uint8_t> pgm(header.begin(), header.end());
   pgm.reserve(pgm.size() + values_.size() * 2);
   for (int y = height_ - 1; y >= 0; --y) {  // the file's first row is the top
     for (int x = 0; x < width_; ++x) {
       const std::uint16_t v = coverage_16(at(x, y));
-      pgm += static_cast<char>(v >> 8);
-      pgm += static_cast<char>(v & 0xff);
+      pgm.push_back(static_cast<std::uint8_t>(v >> 8));
+      pgm.push_back(static_cast<std::uint8_t>(v & 0xff));
     }
   }
   return pgm;

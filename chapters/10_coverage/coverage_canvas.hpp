@@ -2,6 +2,7 @@
 /// A canvas of coverage: for every pixel, how much of it the triangles drawn so far cover, summed.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -24,6 +25,8 @@ class CoverageCanvas {
   int width() const noexcept { return width_; }
   int height() const noexcept { return height_; }
   float at(int x, int y) const { return values_[index(x, y)]; }
+  /// Sets every pixel to 0.
+  void clear() noexcept { std::fill(values_.begin(), values_.end(), 0.0f); }
   /// Sets pixel (x, y), which must lie on the canvas, to c.
   void set(int x, int y, float c) { values_[index(x, y)] = c; }
   /// Adds c to pixel (x, y), which must lie on the canvas.
@@ -37,7 +40,7 @@ class CoverageCanvas {
 
   /// The canvas as a 16-bit binary PGM (P5, maxval 65535, big-endian, top row first): each
   /// value clamped to [0, 1] and stored as round(65535 x value).
-  std::string pgm_16() const;
+  std::vector<std::uint8_t> pgm_16() const;
 
  private:
   std::size_t index(int x, int y) const noexcept {
