@@ -4,7 +4,6 @@
 #include <cmath>
 #include <cstdlib>
 #include <stdexcept>
-#include <vector>
 
 #include "chapters/10_coverage/area_oracle.hpp"
 
@@ -12,17 +11,20 @@ namespace tri {
 namespace {
 
 /// The pixels a triangle can reach (its bounding box and one pixel around it) on the canvas.
-struct Region {
-  int first_x, last_x, first_y, last_y;
-  bool empty() const noexcept { return first_x > last_x || first_y > last_y; }
-};
-
-Region region_of(const Triangle& t, int width, int height) {
+AreaTruth::TriangleTruth region_of(const Triangle& t, int width, int height) {
   const auto [low_x, high_x] = std::minmax({t[0].x, t[1].x, t[2].x});
   const auto [low_y, high_y] = std::minmax({t[0].y, t[1].y, t[2].y});
   const auto pixel = [](double v) { return static_cast<int>(std::floor(v + 0.5)); };
-  return {std::max(0, pixel(low_x) - 1), std::min(width - 1, pixel(high_x) + 1),
-          std::max(0, pixel(low_y) - 1), std::min(height - 1, pixel(high_y) + 1)};
+  return {std::max(0, pixel(low_x) - 1),
+          std::min(width - 1, pixel(high_x) + 1),
+          std::max(0, pixel(low_y) - 1),
+          std::min(height - 1, pixel(high_y) + 1),
+          {},
+          {}};
+}
+
+bool empty(const AreaTruth::TriangleTruth& r) {
+  return r.first_x > r.last_x || r.first_y > r.last_y;
 }
 
 /// Sums of absolute differences, for a mean, an RMS and a maximum.
@@ -42,15 +44,16 @@ struct Differences {
   }
 };
 
-// Draws one triangle alone on the canvas (empty before and after), calling visit(x, y, value) on
-// every pixel of its region.
+/// Draws one triangle alone on the canvas (empty before and after), calling visit(k, value) for
+/// the k-th pixel of its region, row by row from the bottom.
 template <class Visit>
 void draw_alone(const CoverageDraw& draw, ch10::CoverageCanvas& canvas, const SceneTriangle& t,
-                const Region& r, Visit&& visit) {
+                const AreaTruth::TriangleTruth& r, Visit&& visit) {
   draw(canvas, std::span(&t, 1));
+  std::size_t k = 0;
   for (int y = r.first_y; y <= r.last_y; ++y) {
-    for (int x = r.first_x; x <= r.last_x; ++x) {
-      visit(x, y, static_cast<double>(canvas.at(x, y)));
+    for (int x = r.first_x; x <= r.last_x; ++x, ++k) {
+      visit(k, static_cast<double>(canvas.at(x, y)));
       canvas.set(x, y, 0.0f);  // the next triangle starts from an empty canvas
     }
   }
@@ -63,9 +66,10 @@ CoverageDraw draw_with(const ch10::AreaAlgorithm& algorithm) {
 }
 
 bool on_oracle_grid(const Triangle& t) {
+  if (validate_triangle(t) != DrawResult::drawn) return false;
   try {
     ch10::require_on_oracle_grid(t);
-    return validate_triangle(t) == DrawResult::drawn;
+    return true;
   } catch (const std::invalid_argument&) {
     return false;
   }
@@ -73,76 +77,83 @@ bool on_oracle_grid(const Triangle& t) {
 
 }  // namespace
 
-AreaErrorReport measure_area_error(const CoverageDraw& draw, const Scene& scene) {
-  AreaErrorReport report;
-  ch10::CoverageCanvas canvas(scene.width, scene.height);
-  const auto w = static_cast<std::size_t>(scene.width);
-  std::vector<double> exact_sum(w * static_cast<std::size_t>(scene.height), 0.0);
-  std::vector<SceneTriangle> kept;
-  Differences each;
+AreaTruth::AreaTruth(const Scene& scene)
+    : width_(scene.width),
+      height_(scene.height),
+      summed_(static_cast<std::size_t>(scene.width) * static_cast<std::size_t>(scene.height), 0) {
   for (const auto& primitive : scene.primitives) {
     const auto* t = std::get_if<SceneTriangle>(&primitive);
     if (t == nullptr) continue;
     if (!on_oracle_grid(t->vertices)) {
-      ++report.rejected;
+      ++rejected_;
       continue;
     }
-    kept.push_back(*t);
-    ++report.triangles;
-    const Region r = region_of(t->vertices, scene.width, scene.height);
-    if (r.empty()) continue;
-    // The exact coverages of the region's pixels, as values and as 16-bit outputs.
-    const auto rw = static_cast<std::size_t>(r.last_x - r.first_x + 1);
-    std::vector<double> exact(rw * static_cast<std::size_t>(r.last_y - r.first_y + 1), 0.0);
-    std::vector<int> exact_units(exact.size(), 0);
-    for (const ch10::PixelCoverage& p : ch10::exact_coverages(t->vertices)) {
-      if (p.pixel.x < r.first_x || p.pixel.x > r.last_x || p.pixel.y < r.first_y ||
-          p.pixel.y > r.last_y)
-        continue;
-      const std::size_t k = static_cast<std::size_t>(p.pixel.y - r.first_y) * rw +
-                            static_cast<std::size_t>(p.pixel.x - r.first_x);
-      exact[k] = p.coverage.to_double();
-      exact_units[k] = ch10::coverage_16(p.coverage);
-      exact_sum[static_cast<std::size_t>(p.pixel.y) * w + static_cast<std::size_t>(p.pixel.x)] +=
-          exact[k];
-    }
-    draw(canvas, std::span(t, 1));
-    for (int y = r.first_y; y <= r.last_y; ++y) {
-      for (int x = r.first_x; x <= r.last_x; ++x) {
-        const std::size_t k =
-            static_cast<std::size_t>(y - r.first_y) * rw + static_cast<std::size_t>(x - r.first_x);
-        const double estimate = canvas.at(x, y);
-        if (estimate != 0 || exact[k] != 0) {
-          each.add(std::abs(estimate - exact[k]));
-          report.max_units =
-              std::max(report.max_units, std::abs(ch10::coverage_16(estimate) - exact_units[k]));
-        }
-        canvas.set(x, y, 0.0f);  // the next triangle starts from an empty canvas
+    TriangleTruth truth = region_of(t->vertices, width_, height_);
+    if (!empty(truth)) {
+      const auto region_width = static_cast<std::size_t>(truth.last_x - truth.first_x + 1);
+      const std::size_t size =
+          region_width * static_cast<std::size_t>(truth.last_y - truth.first_y + 1);
+      truth.coverage.assign(size, 0.0);
+      truth.units.assign(size, 0);
+      for (const ch10::PixelCoverage& p : ch10::exact_coverages(t->vertices)) {
+        if (p.pixel.x < truth.first_x || p.pixel.x > truth.last_x || p.pixel.y < truth.first_y ||
+            p.pixel.y > truth.last_y)
+          continue;
+        const std::size_t k = static_cast<std::size_t>(p.pixel.y - truth.first_y) * region_width +
+                              static_cast<std::size_t>(p.pixel.x - truth.first_x);
+        truth.coverage[k] = p.coverage.to_double();
+        truth.units[k] = ch10::coverage_16(p.coverage);
+        summed_[static_cast<std::size_t>(p.pixel.y) * static_cast<std::size_t>(width_) +
+                static_cast<std::size_t>(p.pixel.x)] += truth.coverage[k];
       }
     }
+    triangles_.push_back(*t);
+    truths_.push_back(std::move(truth));
+  }
+}
+
+AreaErrorReport measure_area_error(const CoverageDraw& draw, const AreaTruth& truth) {
+  AreaErrorReport report;
+  report.triangles = truth.triangles().size();
+  report.rejected = truth.rejected();
+  ch10::CoverageCanvas canvas(truth.width(), truth.height());
+  Differences each;
+  for (std::size_t i = 0; i < truth.triangles().size(); ++i) {
+    const AreaTruth::TriangleTruth& t = truth.truths()[i];
+    if (empty(t)) continue;
+    draw_alone(draw, canvas, truth.triangles()[i], t, [&](std::size_t k, double estimate) {
+      if (estimate == 0 && t.coverage[k] == 0) return;
+      each.add(std::abs(estimate - t.coverage[k]));
+      report.max_units =
+          std::max(report.max_units, std::abs(ch10::coverage_16(estimate) - int{t.units[k]}));
+    });
   }
   report.pixels = each.count;
   report.mean = each.mean();
   report.rms = each.rms();
   report.max = each.max;
 
-  draw(canvas, kept);
+  draw(canvas, truth.triangles());
   Differences composed;
-  for (int y = 0; y < scene.height; ++y) {
-    for (int x = 0; x < scene.width; ++x) {
+  std::size_t k = 0;
+  for (int y = 0; y < truth.height(); ++y) {
+    for (int x = 0; x < truth.width(); ++x, ++k) {
       const double estimate = std::clamp(static_cast<double>(canvas.at(x, y)), 0.0, 1.0);
-      const double truth = std::clamp(
-          exact_sum[static_cast<std::size_t>(y) * w + static_cast<std::size_t>(x)], 0.0, 1.0);
-      if (estimate == 0 && truth == 0) continue;
-      composed.add(std::abs(estimate - truth));
+      const double exact = std::clamp(truth.summed()[k], 0.0, 1.0);
+      if (estimate == 0 && exact == 0) continue;
+      composed.add(std::abs(estimate - exact));
       report.composed_off_pixels +=
-          std::abs(ch10::coverage_16(estimate) - ch10::coverage_16(truth)) > 1 ? 1 : 0;
+          std::abs(ch10::coverage_16(estimate) - ch10::coverage_16(exact)) > 1 ? 1 : 0;
     }
   }
   report.composed_pixels = composed.count;
   report.composed_mean = composed.mean();
   report.composed_max = composed.max;
   return report;
+}
+
+AreaErrorReport measure_area_error(const CoverageDraw& draw, const Scene& scene) {
+  return measure_area_error(draw, AreaTruth(scene));
 }
 
 AreaErrorReport measure_area_error(const ch10::AreaAlgorithm& algorithm, const Scene& scene) {
@@ -156,9 +167,9 @@ std::uint64_t touched_pixels(const ch10::AreaAlgorithm& algorithm, int width, in
   std::uint64_t touched = 0;
   for (const SceneTriangle& t : triangles) {
     if (validate_triangle(t.vertices) != DrawResult::drawn) continue;
-    const Region r = region_of(t.vertices, width, height);
-    if (r.empty()) continue;
-    draw_alone(draw, canvas, t, r, [&](int, int, double c) { touched += c != 0 ? 1 : 0; });
+    const AreaTruth::TriangleTruth r = region_of(t.vertices, width, height);
+    if (empty(r)) continue;
+    draw_alone(draw, canvas, t, r, [&](std::size_t, double c) { touched += c != 0 ? 1 : 0; });
   }
   return touched;
 }

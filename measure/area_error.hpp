@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <functional>
 #include <span>
+#include <vector>
 
 #include "chapters/10_coverage/area_algorithms.hpp"
 #include "chapters/10_coverage/coverage_canvas.hpp"
@@ -37,9 +38,43 @@ struct AreaErrorReport {
   std::uint64_t composed_off_pixels = 0;  ///< pixels more than one 16-bit unit off
 };
 
-/// Measures a coverage drawing on the scene's triangles against the exact oracle (chapter 10).
-/// Triangles the oracle cannot take exactly (off the 1/256 grid or beyond ±32768 pixels) are
-/// counted as rejected and left out of both measurements.
+/// The exact coverages of a scene's triangles (chapter 10's oracle), computed once so that many
+/// algorithms can be compared with them. Triangles the oracle cannot take exactly (off the 1/256
+/// grid, beyond ±32768 pixels, non-finite) are left out and counted.
+class AreaTruth {
+ public:
+  explicit AreaTruth(const Scene& scene);
+
+  /// One triangle the oracle took: the pixels it can reach on the canvas (its bounding box and
+  /// one pixel around), and its exact coverage of each, row by row from the region's bottom.
+  struct TriangleTruth {
+    int first_x, last_x, first_y, last_y;  ///< the region; empty when first > last
+    std::vector<double> coverage;          ///< exact, as the nearest double
+    std::vector<std::uint16_t> units;      ///< exact, as the 16-bit output (coverage_16)
+  };
+
+  int width() const noexcept { return width_; }
+  int height() const noexcept { return height_; }
+  /// The triangles the oracle took, in scene order, and their truths.
+  const std::vector<SceneTriangle>& triangles() const noexcept { return triangles_; }
+  const std::vector<TriangleTruth>& truths() const noexcept { return truths_; }
+  /// The exact coverages of every triangle added up, per canvas pixel (row-major from the bottom).
+  const std::vector<double>& summed() const noexcept { return summed_; }
+  std::uint64_t rejected() const noexcept { return rejected_; }
+
+ private:
+  int width_, height_;
+  std::vector<SceneTriangle> triangles_;
+  std::vector<TriangleTruth> truths_;
+  std::vector<double> summed_;
+  std::uint64_t rejected_ = 0;
+};
+
+/// Measures a coverage drawing against the truth: each triangle drawn alone on an empty canvas,
+/// then the whole scene.
+AreaErrorReport measure_area_error(const CoverageDraw& draw, const AreaTruth& truth);
+
+/// The same on a scene, computing its truth first.
 AreaErrorReport measure_area_error(const CoverageDraw& draw, const Scene& scene);
 
 /// The same for a registered coverage algorithm (drawn through ch10::draw_coverage).

@@ -51,16 +51,18 @@ Fraction edge_area(GridPoint a, GridPoint b, const GridBox& box) {
     return std::clamp(x_at(y), Fraction(box.x0), Fraction(box.x1)) - Fraction(box.x0);
   };
   // Between the rows' ends and the heights where the edge crosses x0 or x1, h is linear.
-  std::vector<Fraction> ys = {Fraction(low), Fraction(high)};
+  std::array<Fraction, 4> ys = {Fraction(low)};
+  std::size_t count = 1;
   if (dx != 0) {
     for (const std::int64_t x : {box.x0, box.x1}) {
       const Fraction y = Fraction(a.y) + (Fraction(x) - Fraction(a.x)) * Fraction(dy, dx);
-      if (Fraction(low) < y && y < Fraction(high)) ys.push_back(y);
+      if (Fraction(low) < y && y < Fraction(high)) ys[count++] = y;
     }
   }
-  std::sort(ys.begin(), ys.end());
+  if (count == 3 && ys[2] < ys[1]) std::swap(ys[1], ys[2]);
+  ys[count++] = Fraction(high);
   Fraction area = 0;
-  for (std::size_t k = 0; k + 1 < ys.size(); ++k) {
+  for (std::size_t k = 0; k + 1 < count; ++k) {
     area = area + (h_at(ys[k]) + h_at(ys[k + 1])) * (ys[k + 1] - ys[k]) / 2;  // a trapezoid
   }
   return dy > 0 ? area : Fraction(0) - area;
