@@ -1,7 +1,11 @@
 #include "chapters/09_speed_vs_error/log_axis.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdlib>
+
+#include "chapters/09_speed_vs_error/report_csv.hpp"
 
 namespace tri::ch09 {
 
@@ -27,6 +31,19 @@ DecadeRange decades_covering(std::span<const double> values) noexcept {
   const int low = static_cast<int>(std::floor(std::log10(smallest)));
   const int high = static_cast<int>(std::ceil(std::log10(largest)));
   return {low, std::max(high, low + 1)};
+}
+
+std::string power_of_ten_label(int k) {
+  static constexpr std::array<const char*, 10> digits{"⁰", "¹", "²", "³", "⁴",
+                                                      "⁵", "⁶", "⁷", "⁸", "⁹"};
+  std::string text = k < 0 ? "10⁻" : "10";
+  for (const char c : std::to_string(std::abs(k))) text += digits[c - '0'];
+  return text;
+}
+
+std::string decade_label(int k) {
+  if (k >= -3 && k <= 5) return format_number(std::pow(10.0, k), 6);
+  return power_of_ten_label(k);
 }
 
 }  // namespace tri::ch09

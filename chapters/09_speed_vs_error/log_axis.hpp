@@ -4,6 +4,7 @@
 #pragma once
 
 #include <span>
+#include <string>
 
 namespace tri::ch09 {
 
@@ -38,5 +39,12 @@ struct ErrorAxis {
     return error_rate > 0 ? scale.position(error_rate) : zero_position;
   }
 };
+
+/// "10ⁿ": 10 with k as a superscript exponent.
+std::string power_of_ten_label(int k);
+
+/// The label of the decade 10^k: a plain number for -3 <= k <= 5 ("0.001", "100000"), "10ⁿ"
+/// with a superscript exponent beyond.
+std::string decade_label(int k);
 
 }  // namespace tri::ch09

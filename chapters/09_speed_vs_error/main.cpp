@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "chapters/09_speed_vs_error/coverage_peers.hpp"
 #include "chapters/09_speed_vs_error/external_peers.hpp"
 #include "chapters/09_speed_vs_error/measure.hpp"
 #include "chapters/09_speed_vs_error/report.hpp"
@@ -19,19 +20,25 @@
 
 namespace {
 
-// What a run measures: registered algorithms and the external peers this build has.
+// What a run measures: registered algorithms and the external peers this build has, for both
+// parts of the report (inside-or-outside, then coverage).
 struct Selection {
   std::vector<tri::TriangleAlgorithm> algorithms;
   std::vector<tri::ch09::ExternalPeer> peers;
+  std::vector<tri::ch10::AreaAlgorithm> area_algorithms;
+  std::vector<tri::ch09::CoveragePeer> coverage_peers;
 };
 
 // The algorithms and peers named in a comma-separated list (all of them without --only).
 Selection selected(const std::optional<std::string>& names) {
-  Selection all{tri::registered_algorithms(), tri::ch09::external_peers()};
+  Selection all{tri::registered_algorithms(), tri::ch09::external_peers(),
+                tri::registered_area_algorithms(), tri::ch09::coverage_peers()};
   if (!names) return all;
   std::vector<std::string> valid;
   for (const auto& a : all.algorithms) valid.emplace_back(a.name);
   for (const auto& p : all.peers) valid.push_back(p.name);
+  for (const auto& a : all.area_algorithms) valid.emplace_back(a.name);
+  for (const auto& p : all.coverage_peers) valid.push_back(p.name);
   std::vector<std::string> chosen_names;
   try {
     chosen_names = tri::parse_name_list("only", *names, valid);
@@ -42,12 +49,17 @@ Selection selected(const std::optional<std::string>& names) {
   }
   Selection chosen;
   for (const std::string& name : chosen_names) {
+    const auto named = [&](const auto& p) { return p.name == name; };
     if (const tri::TriangleAlgorithm* algorithm = tri::find_algorithm(all.algorithms, name)) {
       chosen.algorithms.push_back(*algorithm);
+    } else if (const auto* area = tri::find_area_algorithm(all.area_algorithms, name)) {
+      chosen.area_algorithms.push_back(*area);
+    } else if (const auto peer = std::find_if(all.peers.begin(), all.peers.end(), named);
+               peer != all.peers.end()) {
+      chosen.peers.push_back(*peer);
     } else {
-      chosen.peers.push_back(
-          *std::find_if(all.peers.begin(), all.peers.end(),
-                        [&](const tri::ch09::ExternalPeer& p) { return p.name == name; }));
+      chosen.coverage_peers.push_back(
+          *std::find_if(all.coverage_peers.begin(), all.coverage_peers.end(), named));
     }
   }
   return chosen;
@@ -82,9 +94,11 @@ int main(int argc, char** argv) {
       "09_speed_vs_error",
       "Chapter 09, speed against error: draws the same scene suites with every registered\n"
       "algorithm, times them (warm-up, median of repeated samples, beside a std::fill ceiling)\n"
-      "and measures their error against the exact oracle. Writes 09_report.csv (every\n"
-      "measurement), 09_report.md (one row per algorithm, the machine) and 09_speed_vs_error.svg\n"
-      "(the plot). Quick by default (about half a minute on two cores); --full for the complete "
+      "and measures their error against the exact oracle; then chapter 10's coverage algorithms\n"
+      "against the exact area. Writes 09_report.csv and 09_coverage.csv (every measurement),\n"
+      "09_report.md (one row per algorithm, both parts, the machine), 09_speed_vs_error.svg and\n"
+      "09_coverage_speed_vs_error.svg (the plots). Quick by default (about half a minute on two "
+      "cores); --full for the complete "
       "sweep.",
       {{"out", "DIR", "folder for the report (default: out)"},
        {"full", "", "complete sweep: 512x512 canvas, 100,000-triangle mesh, longer samples"},
@@ -106,12 +120,19 @@ int main(int argc, char** argv) {
         settings.scenes =
             filtered(std::move(settings.scenes), args.value("scene"), args.value("grid"));
         std::cout << "09_speed_vs_error: " << selection.algorithms.size() << " algorithms and "
-                  << selection.peers.size() << " external peers x " << settings.scenes.size()
-                  << " scenes, " << tri::ch09::size_name(size) << " setting\n";
+                  << selection.peers.size() << " external peers, then "
+                  << selection.area_algorithms.size() << " coverage algorithms and "
+                  << selection.coverage_peers.size() << " anti-aliasing peers, x "
+                  << settings.scenes.size() << " scenes, " << tri::ch09::size_name(size)
+                  << " setting\n";
         const tri::ch09::BenchReport report =
             tri::ch09::run_benchmark(selection.algorithms, selection.peers, settings,
                                      tri::ch09::describe_machine(selection.peers), std::cout);
-        tri::ch09::save_report(folder, report, std::cout);
+        const tri::ch09::CoverageReport coverage{
+            tri::ch09::run_coverage_benchmark(selection.area_algorithms, selection.coverage_peers,
+                                              settings, std::cout),
+            tri::ch09::coverage_peer_status(selection.coverage_peers)};
+        tri::ch09::save_report(folder, report, coverage, std::cout);
         return 0;
       });
 }

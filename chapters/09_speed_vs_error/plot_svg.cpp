@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "chapters/09_speed_vs_error/report_csv.hpp"
+#include "chapters/09_speed_vs_error/svg_elements.hpp"
 
 namespace tri::ch09 {
 namespace {
@@ -24,24 +25,6 @@ constexpr std::array<const char*, 10> palette{"#4e79a7", "#f28e2b", "#e15759", "
 
 constexpr double label_height = 12;       // px between label baselines
 constexpr double label_char_width = 6.4;  // px per character at font-size 11
-
-std::string number(double value) {
-  return format_number(value, 6);
-}
-
-std::string superscript(int exponent) {
-  static constexpr std::array<const char*, 10> digits{"⁰", "¹", "²", "³", "⁴",
-                                                      "⁵", "⁶", "⁷", "⁸", "⁹"};
-  std::string text = exponent < 0 ? "⁻" : "";
-  for (const char c : std::to_string(std::abs(exponent))) text += digits[c - '0'];
-  return text;
-}
-
-// 10^k as a plain number for moderate k, as 10ⁿ beyond.
-std::string decade_label(int k) {
-  if (k >= -3 && k <= 5) return format_number(std::pow(10.0, k), 6);
-  return "10" + superscript(k);
-}
 
 struct Box {
   double left = 0, top = 0, right = 0, bottom = 0;
@@ -106,52 +89,6 @@ void place_labels(std::vector<Label>& labels, const PlotLayout& layout) {
   }
 }
 
-// One attribute of an SVG element; numbers are written as number() writes them.
-struct Attribute {
-  Attribute(std::string_view name_, double value_) : name(name_), value(number(value_)) {}
-  Attribute(std::string_view name_, std::string value_) : name(name_), value(std::move(value_)) {}
-  Attribute(std::string_view name_, const char* value_) : name(name_), value(value_) {}
-  std::string_view name;
-  std::string value;
-};
-
-// `<name a="1" b="2"`, not yet closed.
-void open_tag(std::ostream& svg, std::string_view name,
-              std::initializer_list<Attribute> attributes) {
-  svg << '<' << name;
-  for (const Attribute& a : attributes) svg << ' ' << a.name << "=\"" << a.value << '"';
-}
-
-// An element without content: `<line x1="0" .../>`.
-void element(std::ostream& svg, std::string_view name,
-             std::initializer_list<Attribute> attributes) {
-  open_tag(svg, name, attributes);
-  svg << "/>\n";
-}
-
-// An element with content, which is written as given (escape text first).
-void element(std::ostream& svg, std::string_view name, std::initializer_list<Attribute> attributes,
-             std::string_view content) {
-  open_tag(svg, name, attributes);
-  svg << '>' << content << "</" << name << ">\n";
-}
-
-void open_group(std::ostream& svg, std::initializer_list<Attribute> attributes = {}) {
-  open_tag(svg, "g", attributes);
-  svg << ">\n";
-}
-
-void close_group(std::ostream& svg) {
-  svg << "</g>\n";
-}
-
-void line(std::ostream& svg, double x1, double y1, double x2, double y2,
-          std::initializer_list<Attribute> style = {}) {
-  open_tag(svg, "line", {{"x1", x1}, {"y1", y1}, {"x2", x2}, {"y2", y2}});
-  for (const Attribute& a : style) svg << ' ' << a.name << "=\"" << a.value << '"';
-  svg << "/>\n";
-}
-
 // One colour per chapter, in the order the chapters first appear.
 struct ChapterColours {
   explicit ChapterColours(std::span<const AlgorithmSummary> summaries) {
@@ -172,7 +109,7 @@ void write_header(std::ostream& svg, const BenchReport& report, const PlotLayout
            {{"xmlns", "http://www.w3.org/2000/svg"},
             {"width", layout.width},
             {"height", layout.height},
-            {"viewBox", "0 0 " + number(layout.width) + ' ' + number(layout.height)},
+            {"viewBox", "0 0 " + svg_number(layout.width) + ' ' + svg_number(layout.height)},
             {"font-family", "sans-serif"},
             {"font-size", "11"}});
   svg << ">\n";
@@ -233,7 +170,7 @@ void write_x_labels(std::ostream& svg, const ErrorAxis& x_axis, const PlotLayout
   for (int k = x_axis.scale.low_decade; k <= x_axis.scale.high_decade; ++k) {
     element(svg, "text",
             {{"x", x_axis.scale.position(std::pow(10.0, k))}, {"y", layout.bottom + 16}},
-            "10" + superscript(k));
+            power_of_ten_label(k));
   }
   element(svg, "text",
           {{"x", (layout.left + layout.right) / 2}, {"y", layout.bottom + 38}, {"font-size", "13"}},
@@ -253,8 +190,8 @@ void write_y_labels(std::ostream& svg, const LogScale& y_axis, const PlotLayout&
            {"y", "0"},
            {"font-size", "13"},
            {"text-anchor", "middle"},
-           {"transform",
-            "translate(" + number(layout.left - 58) + ' ' + number(middle_y) + ") rotate(-90)"}},
+           {"transform", "translate(" + svg_number(layout.left - 58) + ' ' + svg_number(middle_y) +
+                             ") rotate(-90)"}},
           "speed: Mpixels written per second (log)");
   close_group(svg);
 }
@@ -293,8 +230,8 @@ void write_families(std::ostream& svg, std::span<const AlgorithmSummary> summari
   for (const auto& family : precision_families(summaries)) {
     std::string points;
     for (std::size_t i = 0; i < family.size(); ++i) {
-      points +=
-          (i == 0 ? "" : " ") + number(at[family[i]].first) + ',' + number(at[family[i]].second);
+      points += (i == 0 ? "" : " ") + svg_number(at[family[i]].first) + ',' +
+                svg_number(at[family[i]].second);
     }
     element(svg, "polyline",
             {{"stroke", colours.of(summaries[family.front()].chapter)}, {"points", points}});

@@ -1,5 +1,6 @@
 /// @file
-/// The three files of a run, rendered from one BenchReport and saved side by side.
+/// The five files of a run, rendered from one BenchReport (and the coverage rows) and saved side
+/// by side.
 #pragma once
 
 #include <filesystem>
@@ -7,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "chapters/09_speed_vs_error/coverage_measure.hpp"
 #include "chapters/09_speed_vs_error/measure.hpp"
 
 namespace tri::ch09 {
@@ -15,22 +17,33 @@ namespace tri::ch09 {
 inline constexpr const char* csv_file_name = "09_report.csv";
 inline constexpr const char* markdown_file_name = "09_report.md";
 inline constexpr const char* svg_file_name = "09_speed_vs_error.svg";
+inline constexpr const char* coverage_csv_file_name = "09_coverage.csv";
+inline constexpr const char* coverage_svg_file_name = "09_coverage_speed_vs_error.svg";
 
-/// The contents of the three files.
-struct ReportFiles {
-  std::string csv;
-  std::string markdown;
-  std::string svg;
+/// The coverage algorithms' part of a run (rule `area`).
+struct CoverageReport {
+  std::vector<CoverageMeasurement> rows;
+  std::string peer_status;  ///< which anti-aliasing peers were measured, or why not
 };
 
-/// Summarizes the report and renders the CSV, the Markdown table and the plot.
-ReportFiles render_report(const BenchReport& report);
+/// The contents of the five files.
+struct ReportFiles {
+  std::string csv;
+  std::string markdown;  ///< both parts: the triangle algorithms, then the coverage algorithms
+  std::string svg;
+  std::string coverage_csv;
+  std::string coverage_svg;
+};
 
-/// The paths of the three files in folder, to check before measuring.
+/// Summarizes the report and renders the CSVs, the Markdown and the two plots.
+ReportFiles render_report(const BenchReport& report, const CoverageReport& coverage = {});
+
+/// The paths of the five files in folder, to check before measuring.
 std::vector<std::filesystem::path> report_paths(const std::filesystem::path& folder);
 
-/// Writes the three files into folder as one set (all replaced, or none when one fails) and logs
+/// Writes the five files into folder as one set (all replaced, or none when one fails) and logs
 /// each path.
-void save_report(const std::filesystem::path& folder, const BenchReport& report, std::ostream& log);
+void save_report(const std::filesystem::path& folder, const BenchReport& report,
+                 const CoverageReport& coverage, std::ostream& log);
 
 }  // namespace tri::ch09

@@ -46,17 +46,35 @@ std::vector<tri::TriangleAlgorithm> chosen_algorithms() {
   return chosen;
 }
 
+const std::vector<std::string> tiny_area_algorithms{
+    "area_cells", "samples_grid_1x1", "samples_grid_2x2", "samples_grid_4x4", "samples_standard_4"};
+
+std::vector<tri::ch10::AreaAlgorithm> chosen_area_algorithms() {
+  const auto all = tri::registered_area_algorithms();
+  std::vector<tri::ch10::AreaAlgorithm> chosen;
+  for (const std::string& name : tiny_area_algorithms) {
+    const auto* algorithm = tri::find_area_algorithm(all, name);
+    REQUIRE(algorithm != nullptr);
+    chosen.push_back(*algorithm);
+  }
+  return chosen;
+}
+
 // One tiny run shared by the tests (it takes well under a second).
 struct TinyRun {
   tri::ch09::BenchSettings settings = tri::ch09::bench_settings(tri::ch09::SuiteSize::tiny);
   std::ostringstream progress;
   std::vector<tri::ch09::ExternalPeer> peers = tri::ch09::external_peers();
   BenchReport report;
+  tri::ch09::CoverageReport coverage;
   tri::ch09::ReportFiles files;
   TinyRun() {
     report = tri::ch09::run_benchmark(chosen_algorithms(), peers, settings,
                                       tri::ch09::describe_machine(peers), progress);
-    files = tri::ch09::render_report(report);
+    coverage.rows =
+        tri::ch09::run_coverage_benchmark(chosen_area_algorithms(), {}, settings, progress);
+    coverage.peer_status = "none measured";
+    files = tri::ch09::render_report(report, coverage);
   }
 };
 
@@ -305,11 +323,11 @@ TEST_CASE("Table speeds are whole numbers from 100 Mpix/s up",
   CHECK(tri::ch09::format_mpix(0.0) == "0");
 }
 
-TEST_CASE("save_report writes the three files the run rendered", "[09_speed_vs_error][report]") {
+TEST_CASE("save_report writes the five files the run rendered", "[09_speed_vs_error][report]") {
   const auto folder = unique_temporary_folder("tri_ch09_report_test");
   std::filesystem::remove_all(folder);
   std::ostringstream log;
-  tri::ch09::save_report(folder, tiny_run().report, log);
+  tri::ch09::save_report(folder, tiny_run().report, tiny_run().coverage, log);
   const auto read = [&](const char* name) {
     std::ifstream in(folder / name, std::ios::binary);
     return std::string(std::istreambuf_iterator<char>(in), {});
@@ -317,7 +335,9 @@ TEST_CASE("save_report writes the three files the run rendered", "[09_speed_vs_e
   CHECK(read(tri::ch09::csv_file_name) == tiny_run().files.csv);
   CHECK(read(tri::ch09::markdown_file_name) == tiny_run().files.markdown);
   CHECK(read(tri::ch09::svg_file_name) == tiny_run().files.svg);
-  CHECK(lines_of(log.str()).size() == 3);
+  CHECK(read(tri::ch09::coverage_csv_file_name) == tiny_run().files.coverage_csv);
+  CHECK(read(tri::ch09::coverage_svg_file_name) == tiny_run().files.coverage_svg);
+  CHECK(lines_of(log.str()).size() == 5);
   std::filesystem::remove_all(folder);
 }
 
@@ -328,7 +348,7 @@ TEST_CASE("save_report writes the set whole or not at all: a failing file keeps 
   std::filesystem::create_directories(folder / tri::ch09::svg_file_name);  // cannot be replaced
   std::ofstream(folder / tri::ch09::csv_file_name) << "earlier csv";
   std::ostringstream log;
-  CHECK_THROWS_WITH(tri::ch09::save_report(folder, tiny_run().report, log),
+  CHECK_THROWS_WITH(tri::ch09::save_report(folder, tiny_run().report, tiny_run().coverage, log),
                     Catch::Contains("Is a directory"));
   std::ifstream csv(folder / tri::ch09::csv_file_name);
   CHECK(std::string(std::istreambuf_iterator<char>(csv), {}) == "earlier csv");

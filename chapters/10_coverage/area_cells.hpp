@@ -4,6 +4,8 @@
 /// anti-aliased scanline rasterizers).
 #pragma once
 
+#include <algorithm>
+#include <array>
 #include <vector>
 
 #include "chapters/10_coverage/coverage_canvas.hpp"
@@ -19,27 +21,36 @@ enum class Blend {
 
 /// One pixel row's cells: for each column, the area its edges leave on their right inside it,
 /// and the height of the edges left of it ("cover"), which counts for its whole width. Kept
-/// between triangles so drawing allocates nothing once the widest row has been seen.
+/// between triangles so drawing allocates nothing once the widest row has been seen; only the
+/// columns the edges touched are summed and cleared, as AGG and FreeType do.
 class RowCells {
  public:
-  /// Clears columns first..last (and last + 1) for a row of a canvas `width` wide. Pieces left
-  /// of the canvas put their cover on column 0, so `first` must be 0 when the row's edges reach
-  /// left of the canvas.
-  void start_row(int width, int first, int last);
+  /// Starts an empty row of a canvas `width` wide.
+  void start_row(int width);
   /// Adds the segment (x0, y0) -> (x1, y1), which lies within this row, to the cells it crosses.
+  /// A row holds at most four segments (a triangle's has at most three).
   void add_segment(double x0, double y0, double x1, double y1);
-  /// Adds the coverage of the row's columns first..last to row y of the canvas: the running sum
-  /// of covers from the left plus each cell's own area, negated for a counter-clockwise outline.
-  void add_to_canvas(CoverageCanvas& canvas, int y, Blend blend = Blend::sum) const;
+  /// Adds the coverage of the row's touched columns to row y of the canvas: the running sum of
+  /// covers from the left plus each cell's own area, negated for a counter-clockwise outline.
+  /// Beyond the last touched column the covers have cancelled. Leaves the cells empty.
+  void add_to_canvas(CoverageCanvas& canvas, int y, Blend blend = Blend::sum);
 
   /// What the row's edges left in a column since start_row (for figures and tests).
   double area(int column) const { return area_[static_cast<std::size_t>(column)]; }
   double cover(int column) const { return cover_[static_cast<std::size_t>(column)]; }
 
  private:
+  void add_segment_pieces(double x0, double y0, double x1, double y1);
   void add_piece(int column, double xa, double ya, double xb, double yb);
+  void touch(int first, int last) noexcept {
+    first_[ranges_] = std::min(first_[ranges_], first);
+    last_[ranges_] = std::max(last_[ranges_], last);
+  }
 
-  int width_ = 0, first_ = 0, last_ = 0;
+  static constexpr int max_segments = 4;  // a triangle's row holds at most three
+  int width_ = 0;
+  int ranges_ = 0;  // segments added since start_row, each with the columns it touched
+  std::array<int, max_segments> first_{}, last_{};
   std::vector<double> area_;
   std::vector<double> cover_;
 };

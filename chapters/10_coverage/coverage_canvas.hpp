@@ -25,6 +25,8 @@ class CoverageCanvas {
   int width() const noexcept { return width_; }
   int height() const noexcept { return height_; }
   float at(int x, int y) const { return values_[index(x, y)]; }
+  /// Row y's first value (row 0 at the bottom), for code that walks a row itself.
+  float* row(int y) noexcept { return values_.data() + index(0, y); }
   /// Sets every pixel to 0.
   void clear() noexcept { std::fill(values_.begin(), values_.end(), 0.0f); }
   /// Sets pixel (x, y), which must lie on the canvas, to c.

@@ -122,7 +122,7 @@ tri::SvgFigure row_cells_figure() {
   // Row 0 of a counter-clockwise triangle whose two slanted edges cross it: what each cell gets.
   const tri::Triangle t = {{{0.75, -2.5}, {6.25, -2.5}, {2.5, 3.5}}};
   tri::ch10::RowCells cells;
-  cells.start_row(8, 0, 7);
+  cells.start_row(8);
   tri::ch10::add_edges_in_row(cells, t, 0);
   tri::PixelDiagram d({0, -1}, {7, 1},
                       "One pixel row of cells: each keeps an area, and passes a cover on", 72);

@@ -1,0 +1,296 @@
+#include "chapters/09_speed_vs_error/coverage_report.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <sstream>
+
+#include "chapters/09_speed_vs_error/log_axis.hpp"
+#include "chapters/09_speed_vs_error/plot_svg.hpp"
+#include "chapters/09_speed_vs_error/report_csv.hpp"
+#include "chapters/09_speed_vs_error/report_markdown.hpp"
+#include "chapters/09_speed_vs_error/svg_elements.hpp"
+#include "measure/statistics.hpp"
+
+namespace tri::ch09 {
+namespace {
+
+using SceneKey = std::pair<std::string, std::string>;  // scene kind, grid
+
+SceneKey key_of(const auto& row) {
+  return {row.scene, row.grid};
+}
+
+// Chapter 08's fastest single-thread time per scene: what "cost per triangle" is compared with.
+std::map<SceneKey, double> fastest_exact_seconds(std::span<const Measurement> triangle_rows) {
+  std::map<SceneKey, double> fastest;
+  for (const Measurement& m : triangle_rows) {
+    if (m.chapter != "08_fast_exact" || m.threaded || !(m.timing.seconds.median > 0)) continue;
+    const auto [it, added] = fastest.try_emplace(key_of(m), m.timing.seconds.median);
+    if (!added) it->second = std::min(it->second, m.timing.seconds.median);
+  }
+  return fastest;
+}
+
+// A row's speed on each scene, by algorithm name.
+std::map<SceneKey, double> speeds_of(std::span<const CoverageMeasurement> rows,
+                                     const std::string& algorithm) {
+  std::map<SceneKey, double> speeds;
+  for (const CoverageMeasurement& m : rows) {
+    if (m.algorithm == algorithm) speeds[key_of(m)] = m.triangles_per_second();
+  }
+  return speeds;
+}
+
+// The least-squares slope of log(mean error) against log(n) over the regular grids.
+double grid_error_slope(std::span<const CoverageSummary> summaries) {
+  double sx = 0, sy = 0, sxx = 0, sxy = 0;
+  int count = 0;
+  for (const CoverageSummary& s : summaries) {
+    if (!s.algorithm.starts_with("samples_grid_") || !(s.mean_error > 0)) continue;
+    const double x = std::log(std::sqrt(static_cast<double>(s.samples)));
+    const double y = std::log(s.mean_error);
+    sx += x, sy += y, sxx += x * x, sxy += x * y, ++count;
+  }
+  if (count < 2) return std::numeric_limits<double>::quiet_NaN();
+  return (count * sxy - sx * sy) / (count * sxx - sx * sx);
+}
+
+}  // namespace
+
+std::vector<CoverageSummary> summarize_coverage(std::span<const CoverageMeasurement> rows,
+                                                std::span<const Measurement> triangle_rows) {
+  const auto fastest = fastest_exact_seconds(triangle_rows);
+  struct Collected {
+    CoverageSummary summary;
+    std::vector<double> speeds, costs;
+    double error_sum = 0;
+    std::uint64_t pixels = 0;
+  };
+  std::vector<Collected> collected;
+  for (const CoverageMeasurement& m : rows) {
+    auto it = std::find_if(collected.begin(), collected.end(),
+                           [&](const Collected& c) { return c.summary.algorithm == m.algorithm; });
+    if (it == collected.end()) {
+      collected.push_back({{m.algorithm, m.chapter, m.rule, m.samples}, {}, {}, 0, 0});
+      it = collected.end() - 1;
+    }
+    CoverageSummary& s = it->summary;
+    ++s.scenes;
+    it->speeds.push_back(m.triangles_per_second());
+    if (const auto f = fastest.find(key_of(m)); f != fastest.end()) {
+      it->costs.push_back(m.timing.seconds.median / f->second);
+    }
+    it->error_sum += m.error.mean * static_cast<double>(m.error.pixels);
+    it->pixels += m.error.pixels;
+    s.max_error = std::max(s.max_error, m.error.max);
+    s.max_units = std::max(s.max_units, m.error.max_units);
+    if (m.mesh) s.seam_max = std::max(s.seam_max, m.error.composed_max);
+  }
+  std::vector<CoverageSummary> summaries;
+  for (Collected& c : collected) {
+    c.summary.tris_per_s = geometric_mean(c.speeds);
+    c.summary.cost_vs_fastest = geometric_mean(c.costs);
+    c.summary.mean_error = c.pixels == 0 ? 0 : c.error_sum / static_cast<double>(c.pixels);
+    summaries.push_back(c.summary);
+  }
+  return summaries;
+}
+
+std::string coverage_csv(std::span<const CoverageMeasurement> rows) {
+  std::ostringstream csv;
+  csv << "algorithm,chapter,rule,samples,scene,grid,mesh,width,height,triangles,touched_pixels,"
+         "median_seconds,min_seconds,max_seconds,repetitions,samples_timed,tris_per_s,"
+         "error_triangles,rejected,error_pixels,mean_error,rms_error,max_error,max_units,"
+         "composed_pixels,composed_mean,composed_max,composed_off_pixels\n";
+  for (const CoverageMeasurement& m : rows) {
+    csv << m.algorithm << ',' << m.chapter << ',' << m.rule << ',' << m.samples << ',' << m.scene
+        << ',' << m.grid << ',' << (m.mesh ? 1 : 0) << ',' << m.width << ',' << m.height << ','
+        << m.triangles << ',' << m.touched_pixels << ','
+        << format_number(m.timing.seconds.median, 6) << ','
+        << format_number(m.timing.seconds.min, 6) << ',' << format_number(m.timing.seconds.max, 6)
+        << ',' << m.timing.repetitions << ',' << m.timing.samples << ','
+        << format_number(m.triangles_per_second(), 6) << ',' << m.error.triangles << ','
+        << m.error.rejected << ',' << m.error.pixels << ',' << format_number(m.error.mean, 6) << ','
+        << format_number(m.error.rms, 6) << ',' << format_number(m.error.max, 6) << ','
+        << m.error.max_units << ',' << m.error.composed_pixels << ','
+        << format_number(m.error.composed_mean, 6) << ',' << format_number(m.error.composed_max, 6)
+        << ',' << m.error.composed_off_pixels << '\n';
+  }
+  return csv.str();
+}
+
+std::string coverage_markdown(std::span<const CoverageSummary> summaries,
+                              std::span<const CoverageMeasurement> rows,
+                              const std::string& peer_status) {
+  if (summaries.empty()) return {};
+  std::ostringstream md;
+  md << "\n## Coverage: rule area\n\n"
+     << "Chapter 10's coverage algorithms (and the anti-aliasing peers: " << peer_status
+     << ") drew the same scenes, adding each triangle's coverage (the fraction of each pixel "
+        "square it covers) to a canvas of floats, timed like the algorithms above. *tris/s* is "
+        "the geometric mean over the scenes; *cost* is the time per scene divided by chapter "
+        "08's fastest single-thread time on that scene (geometric mean). The error compares each "
+        "triangle drawn alone with chapter 10's exact area over every pixel either touches: "
+        "*mean* and *max* of |coverage − exact|, *16-bit* the largest difference of the "
+        "`raster --coverage` output (round(65535 × coverage)); *seam* is the largest error of the "
+        "whole mesh (mesh and fan scenes) against the exact coverages summed. Every measurement "
+        "is in `09_coverage.csv`; the plot is `09_coverage_speed_vs_error.svg`.\n\n"
+     << "| algorithm | chapter | samples | tris/s | cost | mean error | max error | 16-bit | "
+        "seam |\n"
+     << "|---|---|--:|--:|--:|--:|--:|--:|--:|\n";
+  for (const CoverageSummary& s : summaries) {
+    md << "| `" << s.algorithm << "` | " << s.chapter << " | "
+       << (s.samples == 0 ? std::string("area") : std::to_string(s.samples)) << " | "
+       << human_rate(s.tris_per_s) << " | "
+       << (s.cost_vs_fastest > 0 ? format_number(s.cost_vs_fastest, 3) + "×" : "–") << " | "
+       << format_number(s.mean_error, 3) << " | " << format_number(s.max_error, 3) << " | "
+       << s.max_units << " | " << format_number(s.seam_max, 3) << " |\n";
+  }
+  const double slope = grid_error_slope(summaries);
+  if (std::isfinite(slope)) {
+    md << "\nOn the regular grids the mean error falls as n^" << format_number(slope, 3)
+       << " for n × n samples (least squares over the grids measured; 1/n would be n^−1).";
+  }
+  const auto exact = speeds_of(rows, "area_cells");
+  for (const CoverageSummary& s : summaries) {
+    if (s.chapter != "external" || exact.empty()) continue;
+    std::vector<double> ratios;
+    double slowest = std::numeric_limits<double>::infinity();
+    for (const auto& [scene, speed] : speeds_of(rows, s.algorithm)) {
+      if (const auto e = exact.find(scene); e != exact.end() && speed > 0) {
+        ratios.push_back(e->second / speed);
+        slowest = std::min(slowest, e->second / speed);
+      }
+    }
+    if (ratios.empty()) continue;
+    md << "\n`area_cells` against `" << s.algorithm
+       << "`: " << format_number(geometric_mean(ratios), 3) << "× its speed (geometric mean over "
+       << ratios.size() << " scenes; " << format_number(slowest, 3)
+       << "× on the least favourable).";
+  }
+  md << "\n";
+  return md.str();
+}
+
+std::string coverage_svg(std::span<const CoverageSummary> summaries, const std::string& subtitle) {
+  const double width = 900, height = 600, left = 90, right = 660, top = 80, bottom = 530;
+  std::vector<double> errors, speeds;
+  for (const CoverageSummary& s : summaries) {
+    errors.push_back(s.mean_error);
+    speeds.push_back(s.tris_per_s);
+  }
+  const DecadeRange xd = decades_covering(errors), yd = decades_covering(speeds);
+  const LogScale x{xd.low, xd.high, left, right};
+  const LogScale y{yd.low, yd.high, bottom, top};
+  std::ostringstream svg;
+  open_tag(svg, "svg",
+           {{"xmlns", "http://www.w3.org/2000/svg"},
+            {"width", width},
+            {"height", height},
+            {"viewBox", "0 0 " + svg_number(width) + ' ' + svg_number(height)},
+            {"font-family", "sans-serif"},
+            {"font-size", "11"}});
+  svg << ">\n";
+  element(svg, "rect",
+          {{"x", "0"}, {"y", "0"}, {"width", width}, {"height", height}, {"fill", "white"}});
+  element(svg, "text", {{"x", left}, {"y", "28"}, {"font-size", "16"}, {"font-weight", "bold"}},
+          "Anti-aliasing: speed against error, every coverage algorithm");
+  element(svg, "text", {{"x", left}, {"y", "48"}}, escape_xml(subtitle));
+  element(svg, "text", {{"x", left}, {"y", "64"}, {"fill", "#555"}},
+          "y: triangles per second, geometric mean over all scenes; x: mean |coverage − exact "
+          "area| per touched pixel");
+  open_group(svg, {{"stroke", "#ddd"}});
+  for (int k = xd.low; k <= xd.high; ++k) {
+    line(svg, x.position(std::pow(10.0, k)), top, x.position(std::pow(10.0, k)), bottom);
+  }
+  for (int k = yd.low; k <= yd.high; ++k) {
+    line(svg, left, y.position(std::pow(10.0, k)), right, y.position(std::pow(10.0, k)));
+  }
+  close_group(svg);
+  line(svg, left, bottom, right, bottom, {{"stroke", "black"}});
+  line(svg, left, top, left, bottom, {{"stroke", "black"}});
+  open_group(svg, {{"text-anchor", "middle"}});
+  for (int k = xd.low; k <= xd.high; ++k) {
+    element(svg, "text", {{"x", x.position(std::pow(10.0, k))}, {"y", bottom + 16}},
+            power_of_ten_label(k));
+  }
+  element(svg, "text", {{"x", (left + right) / 2}, {"y", bottom + 38}, {"font-size", "13"}},
+          "mean error per touched pixel (log)");
+  close_group(svg);
+  open_group(svg, {{"text-anchor", "end"}});
+  for (int k = yd.low; k <= yd.high; ++k) {
+    element(svg, "text", {{"x", left - 6}, {"y", y.position(std::pow(10.0, k)) + 4}},
+            power_of_ten_label(k));
+  }
+  close_group(svg);
+  element(svg, "text",
+          {{"transform", "translate(" + svg_number(left - 58) + ' ' +
+                             svg_number((top + bottom) / 2) + ") rotate(-90)"},
+           {"text-anchor", "middle"},
+           {"font-size", "13"}},
+          "triangles per second (log)");
+
+  // The guide: from one sample per pixel, error falling as 1/n while the cost grows as n².
+  const auto one = std::find_if(summaries.begin(), summaries.end(),
+                                [](const CoverageSummary& s) { return s.samples == 1; });
+  if (one != summaries.end() && one->mean_error > 0 && one->tris_per_s > 0) {
+    std::string points;
+    for (int n = 1; n <= 16; n *= 2) {
+      points += (n == 1 ? "" : " ") + svg_number(x.position(one->mean_error / n)) + ',' +
+                svg_number(y.position(one->tris_per_s / (n * n)));
+    }
+    element(
+        svg, "polyline",
+        {{"points", points}, {"fill", "none"}, {"stroke", "#999"}, {"stroke-dasharray", "5 4"}});
+  }
+  // The sample counts of one pattern family, joined from the fewest samples to the most.
+  const std::pair<const char*, const char*> families[] = {{"samples_grid_", "#4e79a7"},
+                                                          {"samples_standard_", "#f28e2b"}};
+  for (const auto& [prefix, colour] : families) {
+    std::vector<const CoverageSummary*> members;
+    for (const CoverageSummary& s : summaries) {
+      if (s.algorithm.starts_with(prefix)) members.push_back(&s);
+    }
+    std::sort(members.begin(), members.end(),
+              [](const auto* a, const auto* b) { return a->samples < b->samples; });
+    std::string points;
+    for (const CoverageSummary* s : members) {
+      points += (points.empty() ? "" : " ") + svg_number(x.position(s->mean_error)) + ',' +
+                svg_number(y.position(s->tris_per_s));
+    }
+    if (members.size() > 1) {
+      element(svg, "polyline", {{"points", points}, {"fill", "none"}, {"stroke", colour}});
+    }
+  }
+  for (const CoverageSummary& s : summaries) {
+    const char* colour = s.chapter == "external"                        ? "#e15759"
+                         : s.algorithm.starts_with("samples_grid_")     ? "#4e79a7"
+                         : s.algorithm.starts_with("samples_standard_") ? "#f28e2b"
+                                                                        : "#59a14f";
+    const double px = x.position(s.mean_error), py = y.position(s.tris_per_s);
+    element(svg, "circle", {{"cx", px}, {"cy", py}, {"r", "4.5"}, {"fill", colour}},
+            "<title>" + escape_xml(s.algorithm) + "</title>");
+    element(svg, "text", {{"x", px + 7}, {"y", py - 6}}, escape_xml(s.algorithm));
+  }
+  // The legend, inside the image.
+  const std::pair<const char*, const char*> legend[] = {
+      {"#4e79a7", "regular n × n grid (1 to 256 samples)"},
+      {"#f28e2b", "Vulkan standard pattern (2 to 16 samples)"},
+      {"#59a14f", "exact area by cells (chapter 10)"},
+      {"#e15759", "external peer"}};
+  double ly = top + 10;
+  for (const auto& [colour, text] : legend) {
+    element(svg, "circle", {{"cx", right + 20}, {"cy", ly - 4}, {"r", "4.5"}, {"fill", colour}});
+    element(svg, "text", {{"x", right + 30}, {"y", ly}}, text);
+    ly += 18;
+  }
+  line(svg, right + 12, ly - 4, right + 28, ly - 4,
+       {{"stroke", "#999"}, {"stroke-dasharray", "5 4"}});
+  element(svg, "text", {{"x", right + 30}, {"y", ly}}, "error ∝ 1/n, cost ∝ n² (guide)");
+  svg << "</svg>\n";
+  return svg.str();
+}
+
+}  // namespace tri::ch09
