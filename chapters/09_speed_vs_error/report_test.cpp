@@ -11,6 +11,7 @@
 
 #include <catch2/catch.hpp>
 
+#include "chapters/09_speed_vs_error/coverage_report.hpp"
 #include "chapters/09_speed_vs_error/external_peers.hpp"
 #include "chapters/09_speed_vs_error/plot_svg.hpp"
 #include "chapters/09_speed_vs_error/report.hpp"
@@ -140,7 +141,7 @@ TEST_CASE("The tiny run measures every algorithm on every scene once, with a pro
   std::map<std::tuple<std::string, std::string, std::string>, int> seen;
   for (const Measurement& m : run.report.rows) ++seen[{m.algorithm, m.scene, m.grid}];
   CHECK(seen.size() == run.report.rows.size());
-  CHECK(lines_of(run.progress.str()).size() == run.report.rows.size());
+  CHECK(lines_of(run.progress.str()).size() == run.report.rows.size() + run.coverage.rows.size());
   CHECK(run.report.width == 32);
   CHECK(run.report.height == 32);
 }
@@ -399,4 +400,80 @@ TEST_CASE("A threaded algorithm is labelled as such and gets its own ceiling lin
   CHECK(svg.find(">" + summaries[0].algorithm + " (threads)</text>") != std::string::npos);
   CHECK(svg.find("std::fill ceiling, 1 thread: 100 Mpix/s") != std::string::npos);
   CHECK(svg.find("std::fill ceiling, 2 threads: 250 Mpix/s") != std::string::npos);
+}
+
+TEST_CASE("The coverage part measures every chosen coverage algorithm on every scene",
+          "[09_speed_vs_error][coverage]") {
+  const auto& rows = tiny_run().coverage.rows;
+  REQUIRE(rows.size() == tiny_area_algorithms.size() * tiny_run().settings.scenes.size());
+  for (const tri::ch09::CoverageMeasurement& m : rows) {
+    INFO(m.algorithm << " on " << m.scene << " " << m.grid);
+    CHECK(m.rule == "area");
+    CHECK(m.error.triangles > 0);
+    CHECK(m.error.rejected == 0);
+    CHECK(m.touched_pixels > 0);
+    if (m.algorithm == "area_cells") {
+      CHECK(m.error.max_units <= 1);  // the exact area, to a float's rounding
+      CHECK(m.error.composed_off_pixels == 0);
+    } else {
+      CHECK(m.error.mean > 0);  // sampling is an estimate
+    }
+  }
+  CHECK(tiny_run().files.coverage_csv.starts_with("algorithm,chapter,rule,samples,scene,grid,"));
+  CHECK(lines_of(tiny_run().files.coverage_csv).size() == rows.size() + 1);
+}
+
+TEST_CASE("A coverage summary weighs the error by pixels and compares the time with chapter 08's",
+          "[09_speed_vs_error][coverage]") {
+  const auto row = [](std::string name, std::string scene, double seconds, double mean,
+                      std::uint64_t pixels) {
+    tri::ch09::CoverageMeasurement m;
+    m.algorithm = std::move(name);
+    m.chapter = "10_coverage";
+    m.rule = "area";
+    m.scene = std::move(scene);
+    m.grid = "integer";
+    m.triangles = 100;
+    m.timing.seconds.median = seconds;
+    m.error.mean = mean;
+    m.error.pixels = pixels;
+    m.error.max = 2 * mean;
+    return m;
+  };
+  const std::vector<tri::ch09::CoverageMeasurement> rows = {row("a", "tiny", 0.004, 0.1, 100),
+                                                            row("a", "mesh", 0.001, 0.4, 300)};
+  std::vector<Measurement> triangle_rows(3);
+  for (auto& m : triangle_rows) m.chapter = "08_fast_exact";
+  triangle_rows[0].scene = "tiny", triangle_rows[0].timing.seconds.median = 0.002;
+  triangle_rows[1].scene = "tiny", triangle_rows[1].timing.seconds.median = 0.001;
+  triangle_rows[2].scene = "mesh", triangle_rows[2].timing.seconds.median = 0.001;
+  for (auto& m : triangle_rows) m.grid = "integer";
+  const auto summaries = tri::ch09::summarize_coverage(rows, triangle_rows);
+  REQUIRE(summaries.size() == 1);
+  CHECK(summaries[0].scenes == 2);
+  CHECK(summaries[0].mean_error == Approx((0.1 * 100 + 0.4 * 300) / 400));
+  CHECK(summaries[0].max_error == Approx(0.8));
+  // Against the fastest chapter 08 time of each scene: 4x on tiny, 1x on mesh, geometric mean 2x.
+  CHECK(summaries[0].cost_vs_fastest == Approx(2.0));
+  CHECK(summaries[0].tris_per_s == Approx(std::sqrt(25'000.0 * 100'000.0)));
+}
+
+TEST_CASE("The coverage section and plot show every summary, the grids' slope and the 1/n guide",
+          "[09_speed_vs_error][coverage]") {
+  const auto summaries =
+      tri::ch09::summarize_coverage(tiny_run().coverage.rows, tiny_run().report.rows);
+  REQUIRE(summaries.size() == tiny_area_algorithms.size());
+  const std::string& md = tiny_run().files.markdown;
+  REQUIRE(md.find("## Coverage: rule area") != std::string::npos);
+  for (const std::string& name : tiny_area_algorithms) {
+    CHECK(md.find("| `" + name + "` | 10_coverage |") != std::string::npos);
+  }
+  CHECK(md.find("On the regular grids the mean error falls as n^") != std::string::npos);
+  const std::string& svg = tiny_run().files.coverage_svg;
+  CHECK(unbalanced_tag(svg).empty());
+  // One circle per algorithm and four in the legend; the grid and standard curves and the guide.
+  CHECK(count_of(svg, "<circle ") == summaries.size() + 4);
+  CHECK(count_of(svg, "<polyline ") == 3);
+  CHECK(svg.find("error ∝ 1/n, cost ∝ n² (guide)") != std::string::npos);
+  CHECK(tri::ch09::coverage_markdown({}, {}, "none").empty());
 }
