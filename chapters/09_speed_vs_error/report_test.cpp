@@ -47,8 +47,9 @@ std::vector<tri::TriangleAlgorithm> chosen_algorithms() {
   return chosen;
 }
 
-const std::vector<std::string> tiny_area_algorithms{
-    "area_cells", "samples_grid_1x1", "samples_grid_2x2", "samples_grid_4x4", "samples_standard_4"};
+const std::vector<std::string> tiny_area_algorithms{"area_cells",         "samples_grid_1x1",
+                                                    "samples_grid_2x2",   "samples_grid_4x4",
+                                                    "samples_standard_4", "samples_standard_16"};
 
 std::vector<tri::ch10::AreaAlgorithm> chosen_area_algorithms() {
   const auto all = tri::registered_area_algorithms();
