@@ -174,15 +174,20 @@ std::string coverage_markdown(std::span<const CoverageSummary> summaries,
   return md.str();
 }
 
+// Errors below this are a float's rounding of the exact area: drawn at the axis's "exact" floor.
+constexpr double exact_below = 1e-6;
+
 std::string coverage_svg(std::span<const CoverageSummary> summaries, const std::string& subtitle) {
-  const double width = 900, height = 600, left = 90, right = 660, top = 80, bottom = 530;
+  const double width = 900, height = 600, left = 90, right = 860, top = 80, bottom = 530;
+  const double floor_gap = 70;  // between the "exact" floor and the first decade
   std::vector<double> errors, speeds;
   for (const CoverageSummary& s : summaries) {
-    errors.push_back(s.mean_error);
+    if (s.mean_error >= exact_below) errors.push_back(s.mean_error);
     speeds.push_back(s.tris_per_s);
   }
   const DecadeRange xd = decades_covering(errors), yd = decades_covering(speeds);
-  const LogScale x{xd.low, xd.high, left, right};
+  const ErrorAxis x{{xd.low, xd.high, left + floor_gap, right}, left + floor_gap / 2};
+  const auto x_of = [&](double error) { return x.position(error >= exact_below ? error : 0); };
   const LogScale y{yd.low, yd.high, bottom, top};
   std::ostringstream svg;
   open_tag(svg, "svg",
@@ -203,21 +208,27 @@ std::string coverage_svg(std::span<const CoverageSummary> summaries, const std::
           "area| per touched pixel");
   open_group(svg, {{"stroke", "#ddd"}});
   for (int k = xd.low; k <= xd.high; ++k) {
-    line(svg, x.position(std::pow(10.0, k)), top, x.position(std::pow(10.0, k)), bottom);
+    const double at = x.scale.position(std::pow(10.0, k));
+    line(svg, at, top, at, bottom);
   }
   for (int k = yd.low; k <= yd.high; ++k) {
     line(svg, left, y.position(std::pow(10.0, k)), right, y.position(std::pow(10.0, k)));
   }
   close_group(svg);
+  line(svg, x.zero_position, top, x.zero_position, bottom,
+       {{"stroke", "#999"}, {"stroke-dasharray", "2 3"}});
   line(svg, left, bottom, right, bottom, {{"stroke", "black"}});
   line(svg, left, top, left, bottom, {{"stroke", "black"}});
   open_group(svg, {{"text-anchor", "middle"}});
+  element(svg, "text", {{"x", x.zero_position}, {"y", bottom + 16}, {"font-weight", "bold"}},
+          "exact");
   for (int k = xd.low; k <= xd.high; ++k) {
-    element(svg, "text", {{"x", x.position(std::pow(10.0, k))}, {"y", bottom + 16}},
+    element(svg, "text", {{"x", x.scale.position(std::pow(10.0, k))}, {"y", bottom + 16}},
             power_of_ten_label(k));
   }
   element(svg, "text", {{"x", (left + right) / 2}, {"y", bottom + 38}, {"font-size", "13"}},
-          "mean error per touched pixel (log)");
+          "mean error per touched pixel (log; below 10⁻⁶, a float's rounding, drawn at "
+          "\"exact\")");
   close_group(svg);
   open_group(svg, {{"text-anchor", "end"}});
   for (int k = yd.low; k <= yd.high; ++k) {
@@ -238,14 +249,15 @@ std::string coverage_svg(std::span<const CoverageSummary> summaries, const std::
   if (one != summaries.end() && one->mean_error > 0 && one->tris_per_s > 0) {
     std::string points;
     for (int n = 1; n <= 16; n *= 2) {
-      points += (n == 1 ? "" : " ") + svg_number(x.position(one->mean_error / n)) + ',' +
+      points += (n == 1 ? "" : " ") + svg_number(x_of(one->mean_error / n)) + ',' +
                 svg_number(y.position(one->tris_per_s / (n * n)));
     }
     element(
         svg, "polyline",
         {{"points", points}, {"fill", "none"}, {"stroke", "#999"}, {"stroke-dasharray", "5 4"}});
   }
-  // The sample counts of one pattern family, joined from the fewest samples to the most.
+  // The sample counts of one pattern family, joined from the fewest samples to the most; the
+  // grid's labels go left of its points and the others' right, so the two curves stay readable.
   const std::pair<const char*, const char*> families[] = {{"samples_grid_", "#4e79a7"},
                                                           {"samples_standard_", "#f28e2b"}};
   for (const auto& [prefix, colour] : families) {
@@ -257,38 +269,66 @@ std::string coverage_svg(std::span<const CoverageSummary> summaries, const std::
               [](const auto* a, const auto* b) { return a->samples < b->samples; });
     std::string points;
     for (const CoverageSummary* s : members) {
-      points += (points.empty() ? "" : " ") + svg_number(x.position(s->mean_error)) + ',' +
+      points += (points.empty() ? "" : " ") + svg_number(x_of(s->mean_error)) + ',' +
                 svg_number(y.position(s->tris_per_s));
     }
     if (members.size() > 1) {
       element(svg, "polyline", {{"points", points}, {"fill", "none"}, {"stroke", colour}});
     }
   }
-  for (const CoverageSummary& s : summaries) {
+  std::vector<std::pair<double, double>> labelled;  // points already labelled
+  for (std::size_t i = 0; i < summaries.size(); ++i) {
+    const CoverageSummary& s = summaries[i];
+    const bool grid = s.algorithm.starts_with("samples_grid_");
     const char* colour = s.chapter == "external"                        ? "#e15759"
-                         : s.algorithm.starts_with("samples_grid_")     ? "#4e79a7"
+                         : grid                                         ? "#4e79a7"
                          : s.algorithm.starts_with("samples_standard_") ? "#f28e2b"
                                                                         : "#59a14f";
-    const double px = x.position(s.mean_error), py = y.position(s.tris_per_s);
+    const double px = x_of(s.mean_error), py = y.position(s.tris_per_s);
     element(svg, "circle", {{"cx", px}, {"cy", py}, {"r", "4.5"}, {"fill", colour}},
             "<title>" + escape_xml(s.algorithm) + "</title>");
-    element(svg, "text", {{"x", px + 7}, {"y", py - 6}}, escape_xml(s.algorithm));
+    // Algorithms at the same point (area_cells and area_cells_over) share one label.
+    if (std::find_if(labelled.begin(), labelled.end(), [&](const auto& p) {
+          return std::abs(p.first - px) < 3 && std::abs(p.second - py) < 3;
+        }) != labelled.end())
+      continue;
+    labelled.emplace_back(px, py);
+    std::string text = s.algorithm;
+    for (std::size_t j = i + 1; j < summaries.size(); ++j) {
+      if (std::abs(x_of(summaries[j].mean_error) - px) < 3 &&
+          std::abs(y.position(summaries[j].tris_per_s) - py) < 3)
+        text += ", " + summaries[j].algorithm;
+    }
+    if (grid) {
+      element(svg, "text", {{"x", px - 8}, {"y", py + 4}, {"text-anchor", "end"}},
+              escape_xml(text));
+    } else {
+      element(svg, "text", {{"x", px + 8}, {"y", py + 4}}, escape_xml(text));
+    }
   }
-  // The legend, inside the image.
+  // The legend, in the plot's empty upper left (fast and exact: only the cell method gets near).
   const std::pair<const char*, const char*> legend[] = {
       {"#4e79a7", "regular n × n grid (1 to 256 samples)"},
       {"#f28e2b", "Vulkan standard pattern (2 to 16 samples)"},
       {"#59a14f", "exact area by cells (chapter 10)"},
       {"#e15759", "external peer"}};
-  double ly = top + 10;
+  double ly = top + 24;
+  element(svg, "rect",
+          {{"x", left + floor_gap},
+           {"y", ly - 16},
+           {"width", "290"},
+           {"height", "100"},
+           {"fill", "white"},
+           {"stroke", "#ccc"}});
   for (const auto& [colour, text] : legend) {
-    element(svg, "circle", {{"cx", right + 20}, {"cy", ly - 4}, {"r", "4.5"}, {"fill", colour}});
-    element(svg, "text", {{"x", right + 30}, {"y", ly}}, text);
+    element(svg, "circle",
+            {{"cx", left + floor_gap + 14}, {"cy", ly - 4}, {"r", "4.5"}, {"fill", colour}});
+    element(svg, "text", {{"x", left + floor_gap + 26}, {"y", ly}}, text);
     ly += 18;
   }
-  line(svg, right + 12, ly - 4, right + 28, ly - 4,
+  line(svg, left + floor_gap + 6, ly - 4, left + floor_gap + 22, ly - 4,
        {{"stroke", "#999"}, {"stroke-dasharray", "5 4"}});
-  element(svg, "text", {{"x", right + 30}, {"y", ly}}, "error ∝ 1/n, cost ∝ n² (guide)");
+  element(svg, "text", {{"x", left + floor_gap + 26}, {"y", ly}}, "error ∝ 1/n, cost ∝ n² (guide)");
   svg << "</svg>\n";
   return svg.str();
 }
