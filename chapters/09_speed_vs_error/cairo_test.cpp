@@ -5,6 +5,7 @@
 #include <numeric>
 
 #include "chapters/09_speed_vs_error/cairo_peer.hpp"
+#include "chapters/09_speed_vs_error/coverage_peer_libraries.hpp"
 #include "chapters/09_speed_vs_error/peer_test_support.hpp"
 
 using namespace tri::ch09::test;
@@ -53,4 +54,15 @@ TEST_CASE("cairo's row in the report: timed, with its error measured",
   CHECK(result.timing.seconds.median > 0);
   CHECK(result.written_pixels > 0);
   CHECK(result.error.covered > 0);
+}
+
+TEST_CASE(
+    "cairo's anti-aliasing is the area in x over 15 sample rows: within 1/15 of the exact area",
+    "[09_speed_vs_error][cairo][coverage]") {
+  const auto r =
+      measure_coverage_peer(tri::ch09::cairo_coverage_peer(), small_scene(Kind::random, 8, 81));
+  CHECK(r.error.triangles == 300);
+  CHECK(r.error.max <= 1.0 / 15 + 1.0 / 255);
+  CHECK(r.error.max > 2.0 / 255);  // rows are sampled, so not the exact area
+  CHECK(r.error.mean > 0);
 }

@@ -5,6 +5,8 @@
 #include <span>
 #include <vector>
 
+#include "chapters/09_speed_vs_error/coverage_measure.hpp"
+#include "measure/area_error.hpp"
 #include "measure/error_metrics.hpp"
 #include "measure/registry.hpp"
 #include "measure/render_scene.hpp"
@@ -44,6 +46,18 @@ inline std::size_t differing_pixels(const std::vector<std::uint32_t>& a,
 /// or on its border, each owned once by an exact rule.
 inline std::vector<SceneTriangle> split_square() {
   return {{{{{1, 1}, {6, 1}, {1, 6}}}, colors::white}, {{{{6, 1}, {6, 6}, {1, 6}}}, colors::white}};
+}
+
+/// An anti-aliasing peer measured on a scene (one untimed-looking sample: the tests never time):
+/// its touched pixels and its error against the exact area.
+inline CoveragePeerResult measure_coverage_peer(const CoveragePeer& peer, const Scene& scene) {
+  PreparedScene prepared;
+  prepared.suite.name = "test";
+  prepared.suite.grid = "1/256";
+  prepared.scene = scene;
+  prepared.triangles = scene_triangles(scene);
+  prepared.error_scene = scene;
+  return peer.measure(prepared, AreaTruth(scene), TimingPlan{0.0, 1, 1});
 }
 
 }  // namespace tri::ch09::test

@@ -7,6 +7,7 @@
 #include <numeric>
 #include <stdexcept>
 
+#include "chapters/09_speed_vs_error/coverage_peer_libraries.hpp"
 #include "chapters/09_speed_vs_error/peer_test_support.hpp"
 #include "chapters/09_speed_vs_error/pixman_peer.hpp"
 
@@ -110,4 +111,23 @@ TEST_CASE("pixman differs from the oracle only at centres within 2^-16 pixel of 
     }
   }
   CHECK(differing == 4);
+}
+
+TEST_CASE("pixman's a8 coverage counts a 15 x 17 grid of samples: within 1/15 of the exact area",
+          "[09_speed_vs_error][pixman][coverage]") {
+  const auto r =
+      measure_coverage_peer(tri::ch09::pixman_coverage_peer(), small_scene(Kind::random, 8, 71));
+  CHECK(r.error.triangles == 300);
+  // A straight edge crosses at most one sample row's worth of samples wrongly per row it passes.
+  CHECK(r.error.max <= 1.0 / 15 + 1.0 / 255);
+  CHECK(r.error.max > 2.0 / 255);  // not the exact area: samples
+  CHECK(r.error.mean > 0);
+}
+
+TEST_CASE("pixman_add_triangles adds coverage: a mesh shows no seams",
+          "[09_speed_vs_error][pixman][coverage]") {
+  const auto r = measure_coverage_peer(tri::ch09::pixman_coverage_peer(),
+                                       small_scene(Kind::jittered_grid, 8, 72));
+  // Each sample belongs to one triangle, so the mesh's inside adds up to 255 exactly.
+  CHECK(r.error.composed_max <= r.error.max + 1e-6);
 }

@@ -1,0 +1,82 @@
+/// @file
+/// What the anti-aliasing peers share: each draws a triangle's coverage into a one-byte-per-pixel
+/// image of its own (row 0 at the top, 255 for a full pixel), one library call per triangle, and
+/// is timed and compared with the exact area the same way.
+#pragma once
+
+#include <concepts>
+#include <cstdint>
+#include <span>
+#include <string>
+#include <utility>
+
+#include "chapters/09_speed_vs_error/coverage_measure.hpp"
+#include "chapters/09_speed_vs_error/y_down_peer.hpp"
+
+namespace tri::ch09 {
+
+/// A library's coverage image: built for a width x height canvas (refusing a scene beyond the
+/// library's range), cleared, drawn into one triangle at a time, read as bytes.
+template <class Image>
+concept ByteCoverageImage = requires(Image image, const SceneTriangle& t, int x, int top_row) {
+  {image.clear()};
+  {image.draw(t)};
+  { image.value(x, top_row) } -> std::convertible_to<std::uint8_t>;
+};
+
+/// Adds the image's coverage (value / 255) in the window to the canvas.
+template <ByteCoverageImage Image>
+void add_image_coverage(Image& image, ch10::CoverageCanvas& canvas, const PixelWindow& window) {
+  for (int y = window.y_begin; y < window.y_end; ++y) {
+    for (int x = window.x_begin; x < window.x_end; ++x) {
+      const std::uint8_t v = image.value(x, canvas.height() - 1 - y);
+      if (v != 0) canvas.add(x, y, static_cast<float>(v) / 255.0f);
+    }
+  }
+}
+
+/// The peer: `make(width, height, triangles)` builds the image (after checking the scene's
+/// range). Timed: every triangle of the scene drawn into one image, one call each, image ready
+/// before the clock. Error: measure_area_error with each triangle drawn alone on a cleared image
+/// and read back in a window around it, then the whole scene.
+template <class Make>
+CoveragePeer byte_coverage_peer(std::string name, std::string rule, int samples, Make make) {
+  return {std::move(name), std::move(rule), samples,
+          [make](const PreparedScene& prepared, const AreaTruth& truth, const TimingPlan& plan) {
+            const int width = prepared.scene.width, height = prepared.scene.height;
+            CoveragePeerResult result;
+            {
+              auto image = make(width, height, std::span(prepared.triangles));
+              result.timing = time_runs(
+                  [&] {
+                    for (const SceneTriangle& t : prepared.triangles) image.draw(t);
+                  },
+                  plan);
+            }
+            auto image = make(width, height, std::span(prepared.triangles));
+            for (const SceneTriangle& t : prepared.triangles) {
+              image.clear();
+              image.draw(t);
+              const PixelWindow w = pixels_around(t, width, height);
+              for (int y = w.y_begin; y < w.y_end; ++y) {
+                for (int x = w.x_begin; x < w.x_end; ++x) {
+                  result.touched_pixels += image.value(x, height - 1 - y) != 0 ? 1 : 0;
+                }
+              }
+            }
+            result.error = measure_area_error(
+                [&](ch10::CoverageCanvas& canvas, std::span<const SceneTriangle> triangles) {
+                  image.clear();
+                  for (const SceneTriangle& t : triangles) image.draw(t);
+                  const PixelWindow whole{0, width, 0, height};
+                  add_image_coverage(image, canvas,
+                                     triangles.size() == 1
+                                         ? pixels_around(triangles.front(), width, height)
+                                         : whole);
+                },
+                truth);
+            return result;
+          }};
+}
+
+}  // namespace tri::ch09
