@@ -57,7 +57,7 @@ class AggImage {
 }  // namespace
 
 CoveragePeer agg_coverage_peer() {
-  return byte_coverage_peer("agg_scanline_aa", "area, 8-bit", 0,
+  return byte_coverage_peer("agg_scanline_aa", "area to 8 bits", 0,
                             [](int width, int height, std::span<const SceneTriangle> triangles) {
                               require_within(triangles, height, agg_coordinate_limit, "AGG");
                               return AggImage(width, height);

@@ -61,7 +61,7 @@ class CairoAlpha {
 }  // namespace
 
 CoveragePeer cairo_coverage_peer() {
-  return byte_coverage_peer("cairo_antialias", "area in x, 15 rows per pixel", 0,
+  return byte_coverage_peer("cairo_antialias", "area in x over 15 rows", 0,
                             [](int width, int height, std::span<const SceneTriangle> triangles) {
                               require_within(triangles, height, cairo_coordinate_limit, "cairo");
                               return CairoAlpha(width, height);

@@ -47,7 +47,7 @@ struct CoveragePeerResult {
 /// chapter 10's algorithms.
 struct CoveragePeer {
   std::string name;  ///< its row, e.g. "agg_scanline_aa"
-  std::string rule;  ///< what it computes, e.g. "area, 8-bit"
+  std::string rule;  ///< what it computes, e.g. "area to 8 bits" (no commas: a CSV field)
   int samples = 0;   ///< samples per pixel when it samples; 0 when it computes the area
   /// Times it on the prepared scene (each triangle one call, as the book's algorithms are called)
   /// and measures its coverage against the truth of the error scene.

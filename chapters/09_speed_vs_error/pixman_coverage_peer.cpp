@@ -48,7 +48,7 @@ class PixmanAlpha {
 }  // namespace
 
 CoveragePeer pixman_coverage_peer() {
-  return byte_coverage_peer("pixman_a8", "samples, 15 x 17 grid", 255,
+  return byte_coverage_peer("pixman_a8", "samples on a 15 x 17 grid", 255,
                             [](int width, int height, std::span<const SceneTriangle> triangles) {
                               require_within(triangles, height, pixman_coordinate_limit, "pixman");
                               return PixmanAlpha(width, height);

@@ -11,6 +11,7 @@
 
 #include <catch2/catch.hpp>
 
+#include "chapters/09_speed_vs_error/coverage_peers.hpp"
 #include "chapters/09_speed_vs_error/coverage_report.hpp"
 #include "chapters/09_speed_vs_error/external_peers.hpp"
 #include "chapters/09_speed_vs_error/plot_svg.hpp"
@@ -477,4 +478,16 @@ TEST_CASE("The coverage section and plot show every summary, the grids' slope an
   CHECK(count_of(svg, "<polyline ") == 3);
   CHECK(svg.find("error ∝ 1/n, cost ∝ n² (guide)") != std::string::npos);
   CHECK(tri::ch09::coverage_markdown({}, {}, "none").empty());
+}
+
+TEST_CASE("Every line of the coverage CSV has as many fields as its header, peers included",
+          "[09_speed_vs_error][coverage]") {
+  for (const tri::ch09::CoveragePeer& peer : tri::ch09::coverage_peers()) {
+    INFO(peer.name);
+    CHECK(peer.rule.find(',') == std::string::npos);
+    CHECK(peer.name.find(',') == std::string::npos);
+  }
+  const auto lines = lines_of(tiny_run().files.coverage_csv);
+  REQUIRE(lines.size() > 1);
+  for (const std::string& line : lines) CHECK(count_of(line, ",") == count_of(lines[0], ","));
 }
