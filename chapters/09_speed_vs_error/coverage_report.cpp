@@ -299,7 +299,8 @@ std::string coverage_svg(std::span<const CoverageSummary> summaries, const std::
           std::abs(y.position(summaries[j].tris_per_s) - py) < 3)
         text += ", " + summaries[j].algorithm;
     }
-    if (grid) {
+    // Left of the point for the grids, and for any label that would leave the image.
+    if (grid || px + 8 + 6.4 * static_cast<double>(text.size()) > width) {
       element(svg, "text", {{"x", px - 8}, {"y", py + 4}, {"text-anchor", "end"}},
               escape_xml(text));
     } else {
