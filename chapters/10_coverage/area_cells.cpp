@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <span>
 
 namespace tri::ch10 {
 namespace {
@@ -40,7 +41,7 @@ void RowCells::start_row(int width) {
 // cell, and its height to the covers of the cells to its right. Left of the canvas only the cover
 // matters (it reaches column 0); right of the canvas nothing does, but the row must then be summed
 // up to the canvas's last column. The touched columns bound the row's sum.
-void RowCells::add_piece(int column, double xa, double ya, double xb, double yb) {
+inline void RowCells::add_piece(int column, double xa, double ya, double xb, double yb) {
   const double height = yb - ya;
   if (column < 0) {
     cover_[0] += height;
@@ -56,13 +57,17 @@ void RowCells::add_piece(int column, double xa, double ya, double xb, double yb)
 // [/listing]
 
 void RowCells::add_segment(double x0, double y0, double x1, double y1) {
+  add_segment(x0, y0, x1, y1, (y1 - y0) / (x1 - x0));
+}
+
+void RowCells::add_segment(double x0, double y0, double x1, double y1, double dy_dx) {
   first_[ranges_] = width_;  // the columns this segment touches, widened by add_piece
   last_[ranges_] = 0;
-  add_segment_pieces(x0, y0, x1, y1);
+  add_segment_pieces(x0, y0, x1, y1, dy_dx);
   ++ranges_;
 }
 
-void RowCells::add_segment_pieces(double x0, double y0, double x1, double y1) {
+void RowCells::add_segment_pieces(double x0, double y0, double x1, double y1, double dy_dx) {
   // Clip the walk to the columns that matter: everything left of the canvas is one cover.
   const double left = -0.5, right = width_ - 0.5;
   if (x0 < left && x1 < left) return add_piece(-1, x0, y0, x1, y1);
@@ -76,7 +81,6 @@ void RowCells::add_segment_pieces(double x0, double y0, double x1, double y1) {
   column = std::clamp(column, -1, width_);
   last = std::clamp(last, -1, width_);
   double xs = x0, ys = y0;
-  const double dy_dx = (y1 - y0) / (x1 - x0);
   while (column != last) {
     const double side = step > 0 ? column + 0.5 : column - 0.5;  // the side it leaves through
     const double y_side = y0 + (side - x0) * dy_dx;
@@ -126,21 +130,51 @@ void RowCells::add_to_canvas(CoverageCanvas& canvas, int y, Blend blend) {
 }
 // [/listing]
 
-// [listing add_edges_in_row]
-void add_edges_in_row(RowCells& cells, const Triangle& counter_clockwise, int row) {
+namespace {
+
+// One edge of a counter-clockwise triangle, prepared once for all its rows: no division per row.
+struct RowEdge {
+  glm::dvec2 a;
+  double low, high;     // its lowest and highest y
+  double dx_dy, dy_dx;  // its slopes (dy_dx infinite for a vertical edge)
+  bool upward;          // walked from low to high
+};
+
+// The triangle's edges that are not horizontal (a horizontal edge adds no height).
+int row_edges(const Triangle& t, std::array<RowEdge, 3>& edges) {
+  int count = 0;
   for (int k = 0; k < 3; ++k) {
-    const glm::dvec2 a = counter_clockwise[k], b = counter_clockwise[(k + 1) % 3];
-    if (a.y == b.y) continue;  // a horizontal edge adds no height
-    const double low = std::max(std::min(a.y, b.y), row - 0.5);
-    const double high = std::min(std::max(a.y, b.y), row + 0.5);
+    const glm::dvec2 a = t[k], b = t[(k + 1) % 3];
+    if (a.y == b.y) continue;
+    edges[count++] = {a,
+                      std::min(a.y, b.y),
+                      std::max(a.y, b.y),
+                      (b.x - a.x) / (b.y - a.y),
+                      (b.y - a.y) / (b.x - a.x),
+                      a.y < b.y};
+  }
+  return count;
+}
+
+// [listing add_edges_in_row]
+void add_edges_in_row(RowCells& cells, std::span<const RowEdge> edges, int row) {
+  for (const RowEdge& e : edges) {
+    const double low = std::max(e.low, row - 0.5), high = std::min(e.high, row + 0.5);
     if (low >= high) continue;
     // The edge's part in this row, walked in the edge's own direction.
-    const double y0 = a.y < b.y ? low : high, y1 = a.y < b.y ? high : low;
-    const double dx_dy = (b.x - a.x) / (b.y - a.y);
-    cells.add_segment(x_at(a, dx_dy, y0), y0, x_at(a, dx_dy, y1), y1);
+    const double y0 = e.upward ? low : high, y1 = e.upward ? high : low;
+    cells.add_segment(x_at(e.a, e.dx_dy, y0), y0, x_at(e.a, e.dx_dy, y1), y1, e.dy_dx);
   }
 }
 // [/listing]
+
+}  // namespace
+
+void add_edges_in_row(RowCells& cells, const Triangle& counter_clockwise, int row) {
+  std::array<RowEdge, 3> edges;
+  const int count = row_edges(counter_clockwise, edges);
+  add_edges_in_row(cells, std::span(edges).first(static_cast<std::size_t>(count)), row);
+}
 
 // [listing draw_triangle_area]
 void draw_triangle_area(CoverageCanvas& canvas, const Triangle& triangle, RowCells& cells,
@@ -150,12 +184,14 @@ void draw_triangle_area(CoverageCanvas& canvas, const Triangle& triangle, RowCel
       (t[1].x - t[0].x) * (t[2].y - t[0].y) - (t[2].x - t[0].x) * (t[1].y - t[0].y);
   if (!std::isfinite(doubled) || doubled == 0) return;
   if (doubled < 0) std::swap(t[1], t[2]);  // counter-clockwise, so every area has one sign
+  std::array<RowEdge, 3> edges;
+  const auto prepared = std::span(edges).first(static_cast<std::size_t>(row_edges(t, edges)));
   const auto [low_y, high_y] = std::minmax({t[0].y, t[1].y, t[2].y});
   const int first_row = std::max(0, column_of(low_y));
   const int last_row = std::min(canvas.height() - 1, column_of(high_y));
   for (int row = first_row; row <= last_row; ++row) {
     cells.start_row(canvas.width());
-    add_edges_in_row(cells, t, row);
+    add_edges_in_row(cells, prepared, row);
     cells.add_to_canvas(canvas, row, blend);
   }
 }

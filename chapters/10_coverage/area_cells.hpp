@@ -30,6 +30,8 @@ class RowCells {
   /// Adds the segment (x0, y0) -> (x1, y1), which lies within this row, to the cells it crosses.
   /// A row holds at most four segments (a triangle's has at most three).
   void add_segment(double x0, double y0, double x1, double y1);
+  /// The same with the segment's slope dy/dx given (its edge's, computed once per triangle).
+  void add_segment(double x0, double y0, double x1, double y1, double dy_dx);
   /// Adds the coverage of the row's touched columns to row y of the canvas: the running sum of
   /// covers from the left plus each cell's own area, negated for a counter-clockwise outline.
   /// Beyond the last touched column the covers have cancelled. Leaves the cells empty.
@@ -40,7 +42,7 @@ class RowCells {
   double cover(int column) const { return cover_[static_cast<std::size_t>(column)]; }
 
  private:
-  void add_segment_pieces(double x0, double y0, double x1, double y1);
+  void add_segment_pieces(double x0, double y0, double x1, double y1, double dy_dx);
   void add_piece(int column, double xa, double ya, double xb, double yb);
   void touch(int first, int last) noexcept {
     first_[ranges_] = std::min(first_[ranges_], first);
