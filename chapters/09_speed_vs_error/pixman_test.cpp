@@ -124,7 +124,7 @@ TEST_CASE("pixman's a8 coverage counts a 15 x 17 grid of samples: within 1/15 of
   CHECK(r.error.mean > 0);
 }
 
-TEST_CASE("pixman_add_triangles adds coverage: a mesh shows no seams",
+TEST_CASE("pixman adds the coverage of an a8 mesh: no seams",
           "[09_speed_vs_error][pixman][coverage]") {
   const auto r = measure_coverage_peer(tri::ch09::pixman_coverage_peer(),
                                        small_scene(Kind::jittered_grid, 8, 72));
