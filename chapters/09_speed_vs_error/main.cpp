@@ -97,7 +97,7 @@ int main(int argc, char** argv) {
       "and measures their error against the exact oracle; then chapter 10's coverage algorithms\n"
       "against the exact area. Writes 09_report.csv and 09_coverage.csv (every measurement),\n"
       "09_report.md (one row per algorithm, both parts, the machine), 09_speed_vs_error.svg and\n"
-      "09_coverage_speed_vs_error.svg (the plots). Quick by default (about half a minute on two "
+      "09_coverage_speed_vs_error.svg (the plots). Quick by default (under a minute on two "
       "cores); --full for the complete "
       "sweep.",
       {{"out", "DIR", "folder for the report (default: out)"},
