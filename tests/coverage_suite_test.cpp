@@ -7,23 +7,13 @@
 #include "measure/area_error.hpp"
 #include "measure/registry.hpp"
 #include "measure/scene_generators.hpp"
+#include "tests/suite_recipes.hpp"
 
 namespace {
 
 using Kind = tri::SceneRecipe::Kind;
 
-tri::SceneRecipe recipe(Kind kind, double min_extent, double max_extent, std::uint64_t seed) {
-  tri::SceneRecipe r;
-  r.kind = kind;
-  r.width = 256;
-  r.height = 256;
-  r.triangles = 10000;
-  r.min_extent = min_extent;
-  r.max_extent = max_extent;
-  r.grid_bits = 8;
-  r.seed = seed;
-  return r;
-}
+constexpr auto recipe = tri::test::ten_thousand;
 
 const tri::ch10::AreaAlgorithm& area_cells() {
   static const auto algorithms = tri::registered_area_algorithms();

@@ -7,6 +7,7 @@
 #include "measure/error_metrics.hpp"
 #include "measure/registry.hpp"
 #include "measure/scene_generators.hpp"
+#include "tests/suite_recipes.hpp"
 
 namespace {
 
@@ -18,18 +19,7 @@ struct Family {
 };
 
 std::vector<Family> families() {
-  const auto recipe = [](Kind kind, double min_extent, double max_extent, std::uint64_t seed) {
-    tri::SceneRecipe r;
-    r.kind = kind;
-    r.width = 256;
-    r.height = 256;
-    r.triangles = 10000;
-    r.min_extent = min_extent;
-    r.max_extent = max_extent;
-    r.grid_bits = 8;
-    r.seed = seed;
-    return r;
-  };
+  const auto recipe = tri::test::ten_thousand;
   return {
       {"random", recipe(Kind::random, 1, 40, 1)},
       {"tiny", recipe(Kind::random, 0.5, 2.5, 2)},

@@ -1,6 +1,7 @@
 #include "chapters/09_speed_vs_error/coverage_peers.hpp"
 
 #include "chapters/09_speed_vs_error/coverage_peer_libraries.hpp"
+#include "chapters/09_speed_vs_error/peer_builds.hpp"
 
 namespace tri::ch09 {
 
@@ -19,23 +20,6 @@ std::vector<CoveragePeer> coverage_peers() {
 }
 
 namespace {
-
-// Why a library's peer was not built (CMake's reason), or nullptr when it was.
-#if TUTORIAL_WITH_AGG
-constexpr const char* agg_not_built = nullptr;
-#else
-constexpr const char* agg_not_built = TUTORIAL_AGG_SKIPPED_BECAUSE;
-#endif
-#if TUTORIAL_WITH_CAIRO
-constexpr const char* cairo_not_built = nullptr;
-#else
-constexpr const char* cairo_not_built = TUTORIAL_CAIRO_SKIPPED_BECAUSE;
-#endif
-#if TUTORIAL_WITH_PIXMAN
-constexpr const char* pixman_not_built = nullptr;
-#else
-constexpr const char* pixman_not_built = TUTORIAL_PIXMAN_SKIPPED_BECAUSE;
-#endif
 
 std::string status(const std::string& peer, const char* not_built,
                    std::span<const CoveragePeer> measured) {

@@ -10,6 +10,8 @@
 #include "chapters/09_speed_vs_error/cairo_peer.hpp"
 #endif
 
+#include "chapters/09_speed_vs_error/peer_builds.hpp"
+
 namespace tri::ch09 {
 
 std::vector<ExternalPeer> external_peers() {
@@ -27,23 +29,6 @@ std::vector<ExternalPeer> external_peers() {
 }
 
 namespace {
-
-// Why a library's peer was not built (CMake's reason), or nullptr when it was.
-#if TUTORIAL_WITH_OSMESA
-constexpr const char* llvmpipe_not_built = nullptr;
-#else
-constexpr const char* llvmpipe_not_built = TUTORIAL_LLVMPIPE_SKIPPED_BECAUSE;
-#endif
-#if TUTORIAL_WITH_PIXMAN
-constexpr const char* pixman_not_built = nullptr;
-#else
-constexpr const char* pixman_not_built = TUTORIAL_PIXMAN_SKIPPED_BECAUSE;
-#endif
-#if TUTORIAL_WITH_CAIRO
-constexpr const char* cairo_not_built = nullptr;
-#else
-constexpr const char* cairo_not_built = TUTORIAL_CAIRO_SKIPPED_BECAUSE;
-#endif
 
 // "pixman: measured (pixman_a1)", "… built, not selected by --only" or "… not built (reason)".
 std::string library_status(const std::string& library, const char* not_built,

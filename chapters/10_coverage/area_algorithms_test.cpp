@@ -10,21 +10,14 @@
 #include "chapters/10_coverage/area_oracle.hpp"
 #include "chapters/10_coverage/sample_spans.hpp"
 #include "chapters/10_coverage/sampling.hpp"
-#include "common/random.hpp"
+#include "chapters/10_coverage/test_triangles.hpp"
 
 namespace tri::ch10 {
 namespace {
 
-// Random triangles with vertices on the 1/256 grid, reaching a little past a 16 x 12 canvas.
+// Random triangles reaching a little past a 16 x 12 canvas on every side.
 std::vector<Triangle> random_triangles(int count, std::uint64_t seed) {
-  Random random(seed);
-  std::vector<Triangle> triangles(count);
-  for (auto& t : triangles) {
-    for (auto& v : t) {
-      v = {random.integer(-2 * 256, 18 * 256) / 256.0, random.integer(-2 * 256, 14 * 256) / 256.0};
-    }
-  }
-  return triangles;
+  return test::random_triangles(count, seed, {-2, -2}, {18, 14});
 }
 
 std::vector<SamplePattern> every_pattern() {

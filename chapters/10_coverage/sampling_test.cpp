@@ -10,7 +10,7 @@
 
 #include "chapters/10_coverage/area_oracle.hpp"
 #include "chapters/10_coverage/coverage_error.hpp"
-#include "common/random.hpp"
+#include "chapters/10_coverage/test_triangles.hpp"
 
 #include <glm/common.hpp>
 
@@ -18,15 +18,9 @@ namespace tri::ch10 {
 
 namespace {
 
-// Random triangles with vertices on the 1/256 grid inside a 12 x 12 pixel area.
+// Random triangles inside a 12 x 12 pixel area.
 std::vector<Triangle> random_triangles(int count, std::uint64_t seed) {
-  Random random(seed);
-  std::vector<Triangle> triangles(count);
-  for (auto& t : triangles) {
-    for (auto& v : t)
-      v = {random.integer(0, 12 * 256) / 256.0, random.integer(0, 12 * 256) / 256.0};
-  }
-  return triangles;
+  return test::random_triangles(count, seed, {0, 0}, {12, 12});
 }
 
 // The least-squares slope of y against x.
