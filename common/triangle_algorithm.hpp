@@ -47,6 +47,10 @@ struct TriangleAlgorithm {
   DrawTriangleFunction draw;
   bool threaded = false;                   ///< uses more than one thread
   DrawBatchFunction draw_batch = nullptr;  ///< optional: a faster way to draw many at once
+  /// Algorithms that differ only in numeric precision share a family ("fixed_point",
+  /// "barycentric"); empty for the others. The report joins a family's points into a line.
+  std::string_view precision_family = {};
+  int precision_bits = 0;  ///< fractional bits of a fixed point, or significand bits of a float
 };
 
 /// Whether a triangle was drawn or refused before reaching the algorithm.

@@ -13,12 +13,16 @@ constexpr std::array<TriangleAlgorithm, 2> algorithms{{
      .chapter = "06_barycentric",
      .rule = CoverageRule::approximate,
      .summary = "bounding box, barycentric weights from one cross product in float",
-     .draw = draw_at_nearest_pixels<fill_triangle_barycentric<float>>},
+     .draw = draw_at_nearest_pixels<fill_triangle_barycentric<float>>,
+     .precision_family = "barycentric",
+     .precision_bits = 24},
     {.name = "barycentric_double",
      .chapter = "06_barycentric",
      .rule = CoverageRule::approximate,
      .summary = "bounding box, barycentric weights from one cross product in double",
-     .draw = draw_at_nearest_pixels<fill_triangle_barycentric<double>>},
+     .draw = draw_at_nearest_pixels<fill_triangle_barycentric<double>>,
+     .precision_family = "barycentric",
+     .precision_bits = 53},
 }};
 // [/listing]
 

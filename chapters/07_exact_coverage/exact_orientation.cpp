@@ -1,4 +1,5 @@
 #include "chapters/07_exact_coverage/exact_orientation.hpp"
+#include "chapters/07_exact_coverage/int128.hpp"
 
 #include <algorithm>
 #include <array>
@@ -7,9 +8,6 @@
 
 namespace tri::ch07 {
 namespace {
-
-__extension__ using Int128 = __int128;
-__extension__ using UInt128 = unsigned __int128;
 
 // A finite double as mantissa * 2^exponent with an integer mantissa below 2^53 in magnitude.
 struct Dyadic {

@@ -4,8 +4,10 @@
 #include <limits>
 
 #include "chapters/07_exact_coverage/exact_orientation.hpp"
+#include "chapters/07_exact_coverage/int128.hpp"
 #include "tests/support/pixels.hpp"
 
+using tri::Int128;
 using tri::ch07::exact_orientation;
 using tri::ch07::exact_orientation_slow_path;
 
@@ -16,8 +18,6 @@ int naive_orientation(glm::dvec2 a, glm::dvec2 b, glm::dvec2 p) {
   const double d = (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x);
   return (d > 0) - (d < 0);
 }
-
-__extension__ using Int128 = __int128;
 
 }  // namespace
 

@@ -1,13 +1,13 @@
 #include "chapters/07_exact_coverage/fixed_point.hpp"
 
+#include "chapters/07_exact_coverage/edge_function.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <utility>
 
 namespace tri::ch07 {
 namespace {
-
-__extension__ using Int128 = __int128;
 
 // [listing shifts]
 // floor(a / 2^bits) and ceil(a / 2^bits) for any sign (arithmetic shift floors).
@@ -16,15 +16,6 @@ std::int64_t floor_shift(std::int64_t a, int bits) {
 }
 std::int64_t ceil_shift(std::int64_t a, int bits) {
   return -((-a) >> bits);
-}
-// [/listing]
-
-// [listing edge_function]
-// The edge function of a -> b at p: twice the signed area of (a, b, p), > 0 when p is left of
-// a -> b. Int is std::int64_t or Int128, chosen by the bit budget.
-template <class Int>
-Int edge_function(SubpixelPoint a, SubpixelPoint b, std::int64_t px, std::int64_t py) {
-  return Int(b.x - a.x) * Int(py - a.y) - Int(b.y - a.y) * Int(px - a.x);
 }
 // [/listing]
 
@@ -125,22 +116,8 @@ void draw_triangle_fixed_point(Canvas& canvas, const Triangle& triangle, Color c
 }
 // [/listing]
 
-void draw_triangle_fixed_point_8(Canvas& canvas, const Triangle& triangle, Color color) {
-  draw_triangle_fixed_point(canvas, triangle, color, 8);
-}
-
 void draw_triangle_fixed_point_inclusive(Canvas& canvas, const Triangle& triangle, Color color) {
   draw_triangle_fixed_point(canvas, triangle, color, 8, TieRule::inclusive);
-}
-
-void draw_triangle_fixed_point_0(Canvas& canvas, const Triangle& triangle, Color color) {
-  draw_triangle_fixed_point(canvas, triangle, color, 0);
-}
-void draw_triangle_fixed_point_2(Canvas& canvas, const Triangle& triangle, Color color) {
-  draw_triangle_fixed_point(canvas, triangle, color, 2);
-}
-void draw_triangle_fixed_point_4(Canvas& canvas, const Triangle& triangle, Color color) {
-  draw_triangle_fixed_point(canvas, triangle, color, 4);
 }
 
 }  // namespace tri::ch07

@@ -54,18 +54,21 @@ enum class TieRule {
 void draw_triangle_fixed_point(Canvas& canvas, const Triangle& triangle, Color color,
                                int subpixel_bits, TieRule tie_rule = TieRule::top_left);
 
-/// draw_triangle_fixed_point with 8 fractional bits: exact for vertices on the 1/256 grid.
-void draw_triangle_fixed_point_8(Canvas& canvas, const Triangle& triangle, Color color);
+/// draw_triangle_fixed_point with `bits` fractional bits, as one DrawTriangleFunction. The
+/// registry lists 8, exact for vertices on the 1/256 grid, and 4, 2 and 0, the precision knob of
+/// the speed-vs-error report: coarser grids, exact only for vertices already on them.
+template <int bits>
+void draw_triangle_fixed_point_with(Canvas& canvas, const Triangle& triangle, Color color) {
+  draw_triangle_fixed_point(canvas, triangle, color, bits);
+}
+
+/// The chapter's exact rasterizer: 8 fractional bits.
+inline constexpr DrawTriangleFunction draw_triangle_fixed_point_8 =
+    draw_triangle_fixed_point_with<8>;
 
 /// draw_triangle_fixed_point_8 with the tie rule removed (TieRule::inclusive): the same pixels
 /// except that every centre exactly on an edge is kept. Never registered; it shows, in the
 /// chapter's figures and tests, what the top-left rule takes away.
 void draw_triangle_fixed_point_inclusive(Canvas& canvas, const Triangle& triangle, Color color);
-
-/// The precision knob of the speed-vs-error report: 0, 2 and 4 fractional bits snap vertices to
-/// coarser grids, so they are exact only for vertices already on those grids.
-void draw_triangle_fixed_point_0(Canvas& canvas, const Triangle& triangle, Color color);
-void draw_triangle_fixed_point_2(Canvas& canvas, const Triangle& triangle, Color color);
-void draw_triangle_fixed_point_4(Canvas& canvas, const Triangle& triangle, Color color);
 
 }  // namespace tri::ch07

@@ -3,18 +3,13 @@
 #include <algorithm>
 #include <utility>
 
+#include "chapters/07_exact_coverage/edge_function.hpp"
+
 namespace tri::ch08 {
 namespace {
 
-__extension__ using Int128 = __int128;
-
+using ch07::edge_function;
 using ch07::SubpixelPoint;
-
-// Chapter 07's edge function of a -> b at the sub-pixel point (px, py), in Int.
-template <class Int>
-Int edge_function(SubpixelPoint a, SubpixelPoint b, std::int64_t px, std::int64_t py) {
-  return Int(b.x - a.x) * Int(py - a.y) - Int(b.y - a.y) * Int(px - a.x);
-}
 
 // [listing make_edge]
 // The edge a -> b at the origin pixel (origin_x, origin_y), in whole-pixel units.

@@ -99,6 +99,8 @@ Measurement measure(const TriangleAlgorithm& algorithm, const PreparedScene& pre
                     const Timing& timing, const FillCeilings& ceilings) {
   Measurement m = row_for(algorithm.name, algorithm.chapter, rule_name(algorithm.rule),
                           algorithm.threaded, prepared, ceilings);
+  m.precision_family = algorithm.precision_family;
+  m.precision_bits = algorithm.precision_bits;
   m.written_pixels = count_written_pixels(algorithm, prepared.scene, prepared.triangles);
   m.timing = timing;
   m.error = measure_error(algorithm, prepared.error_scene);

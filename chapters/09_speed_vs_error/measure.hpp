@@ -55,6 +55,8 @@ struct Measurement {
   std::string chapter;
   std::string rule;
   bool threaded = false;
+  std::string precision_family;  ///< the registry's precision family (empty for none)
+  int precision_bits = 0;
   std::string scene;
   std::string grid;
   bool mesh = false;

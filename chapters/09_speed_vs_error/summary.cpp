@@ -36,6 +36,8 @@ std::vector<AlgorithmSummary> summarize(std::span<const Measurement> rows) {
       s.chapter = m.chapter;
       s.rule = m.rule;
       s.threaded = m.threaded;
+      s.precision_family = m.precision_family;
+      s.precision_bits = m.precision_bits;
     }
     Collected& c = collected[it->second];
     AlgorithmSummary& s = c.summary;
@@ -69,32 +71,16 @@ std::vector<AlgorithmSummary> summarize(std::span<const Measurement> rows) {
   // [/listing]
 }
 
-std::optional<PrecisionStep> precision_step(std::string_view name) {
-  const auto underscore = name.rfind('_');
-  if (underscore == std::string_view::npos || underscore == 0) return std::nullopt;
-  const std::string_view family = name.substr(0, underscore);
-  const std::string_view suffix = name.substr(underscore + 1);
-  if (suffix == "float") return PrecisionStep{std::string(family), 24};
-  if (suffix == "double") return PrecisionStep{std::string(family), 53};
-  if (suffix.empty() || suffix.size() > 3 ||
-      !std::all_of(suffix.begin(), suffix.end(), [](char c) { return c >= '0' && c <= '9'; })) {
-    return std::nullopt;
-  }
-  int bits = 0;
-  for (const char c : suffix) bits = bits * 10 + (c - '0');
-  return PrecisionStep{std::string(family), bits};
-}
-
 std::vector<std::vector<std::size_t>> precision_families(
     std::span<const AlgorithmSummary> summaries) {
   std::map<std::pair<std::string, std::string>, std::vector<std::pair<int, std::size_t>>> members;
   std::vector<std::pair<std::string, std::string>> order;  // families in order of appearance
   for (std::size_t i = 0; i < summaries.size(); ++i) {
-    const auto step = precision_step(summaries[i].algorithm);
-    if (!step) continue;
-    const auto key = std::make_pair(summaries[i].chapter, step->family);
+    const AlgorithmSummary& s = summaries[i];
+    if (s.precision_family.empty()) continue;
+    const auto key = std::make_pair(s.chapter, s.precision_family);
     if (!members.contains(key)) order.push_back(key);
-    members[key].emplace_back(step->bits, i);
+    members[key].emplace_back(s.precision_bits, i);
   }
   std::vector<std::vector<std::size_t>> families;
   for (const auto& key : order) {

@@ -22,6 +22,8 @@ struct AlgorithmSummary {
   std::string chapter;
   std::string rule;
   bool threaded = false;
+  std::string precision_family;  ///< from the registry: algorithms differing only in precision
+  int precision_bits = 0;
   int scenes = 0;               ///< measurements summarized
   double large_mpix_per_s = 0;  ///< written Mpixels/s on the "large" scenes
   double tiny_tris_per_s = 0;   ///< triangles/s on the "tiny" scenes
@@ -43,18 +45,9 @@ struct AlgorithmSummary {
 /// Summaries of the algorithms in the order they first appear in rows.
 std::vector<AlgorithmSummary> summarize(std::span<const Measurement> rows);
 
-/// Where an algorithm sits in a family that differs only in precision.
-struct PrecisionStep {
-  std::string family;  ///< the name without its precision suffix, e.g. "fixed_point"
-  int bits = 0;        ///< fractional bits ("_8"), or significand bits ("_float" 24, "_double" 53)
-};
-
-/// The family and precision of names like "fixed_point_4" or "barycentric_float"; nothing for a
-/// name without such a suffix.
-std::optional<PrecisionStep> precision_step(std::string_view name);
-
-/// The families with at least two members among the summaries: each a list of indices into
-/// summaries, from the least to the most precise. Members must share the chapter too.
+/// The precision families (the registry's precision_family) with at least two members among the
+/// summaries: each a list of indices into summaries, from the fewest bits to the most. Members
+/// must share the chapter too.
 std::vector<std::vector<std::size_t>> precision_families(
     std::span<const AlgorithmSummary> summaries);
 

@@ -1,13 +1,14 @@
+#include <map>
 #include <string>
 #include <vector>
 
 #include <catch2/catch.hpp>
 
 #include "chapters/09_speed_vs_error/summary.hpp"
+#include "measure/registry.hpp"
 
 using tri::ch09::AlgorithmSummary;
 using tri::ch09::Measurement;
-using tri::ch09::PrecisionStep;
 
 namespace {
 
@@ -66,35 +67,39 @@ TEST_CASE("A summary takes geometric means of speeds and sums of errors",
   CHECK(b.large_mpix_per_s == 0);  // no large scene measured
 }
 
-TEST_CASE("Precision suffixes name a family and its bits", "[09_speed_vs_error][step5][summary]") {
-  const auto step = [](const char* name) { return tri::ch09::precision_step(name); };
-  REQUIRE(step("fixed_point_8"));
-  CHECK(step("fixed_point_8")->family == "fixed_point");
-  CHECK(step("fixed_point_8")->bits == 8);
-  CHECK(step("fixed_point_0")->bits == 0);
-  CHECK(step("barycentric_float")->family == "barycentric");
-  CHECK(step("barycentric_float")->bits == 24);
-  CHECK(step("barycentric_double")->bits == 53);
-  CHECK_FALSE(step("edge_function"));
-  CHECK_FALSE(step("scanline_two_loops"));
-  CHECK_FALSE(step("block_8x8"));
-  CHECK_FALSE(step("_8"));
-  CHECK_FALSE(step("many_1234"));
+TEST_CASE("The registry names the precision families and their bits",
+          "[09_speed_vs_error][step5][summary]") {
+  std::map<std::string, std::vector<int>> families;
+  for (const tri::TriangleAlgorithm& a : tri::registered_algorithms()) {
+    if (!a.precision_family.empty()) {
+      families[std::string(a.chapter) + " " + std::string(a.precision_family)].push_back(
+          a.precision_bits);
+    }
+  }
+  CHECK(families == std::map<std::string, std::vector<int>>{
+                        {"06_barycentric barycentric", {24, 53}},
+                        {"07_exact_coverage fixed_point", {8, 4, 2, 0}},
+                    });
 }
 
 TEST_CASE("Precision families join members of one chapter from fewer to more bits",
           "[09_speed_vs_error][step5][summary]") {
-  const auto summary = [](const char* name, const char* chapter) {
+  const auto summary = [](const char* chapter, const char* family, int bits) {
     AlgorithmSummary s;
-    s.algorithm = name;
     s.chapter = chapter;
+    s.precision_family = family;
+    s.precision_bits = bits;
     return s;
   };
   const std::vector<AlgorithmSummary> summaries{
-      summary("fixed_point_8", "07"),      summary("fixed_point_0", "07"),
-      summary("edge_function", "05"),      summary("fixed_point_4", "07"),
-      summary("barycentric_double", "06"), summary("barycentric_float", "06"),
-      summary("lonely_16", "08"),          summary("fixed_point_2", "08"),
+      summary("07", "fixed_point", 8),
+      summary("07", "fixed_point", 0),
+      summary("05", "", 0),
+      summary("07", "fixed_point", 4),
+      summary("06", "barycentric", 53),
+      summary("06", "barycentric", 24),
+      summary("08", "lonely", 16),
+      summary("08", "fixed_point", 2),
   };
   const auto families = tri::ch09::precision_families(summaries);
   REQUIRE(families.size() == 2);

@@ -6,9 +6,9 @@
 #include <cstdint>
 #include <string>
 
-namespace tri::ch10 {
+#include "chapters/07_exact_coverage/int128.hpp"
 
-__extension__ using Int128 = __int128;
+namespace tri::ch10 {
 
 /// A fraction numerator / denominator in lowest terms, denominator > 0.
 class Fraction {
