@@ -149,9 +149,8 @@ TEST_CASE("The oracle gives the same pixels for all six vertex orders",
     Triangle t;
     for (auto& v : t) v = {random.real(-4, 20), random.real(-4, 20)};
     const PixelSet expected = oracle_pixels(t);
-    const int orders[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
-    for (const auto& o : orders) {
-      REQUIRE(oracle_pixels({{t[o[0]], t[o[1]], t[o[2]]}}) == expected);
+    for (const Triangle& order : tri::testing::vertex_orders(t)) {
+      REQUIRE(oracle_pixels(order) == expected);
     }
     REQUIRE(covered_pixels(t) == expected);
   }

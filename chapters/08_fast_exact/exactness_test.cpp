@@ -9,19 +9,13 @@
 #include "chapters/07_exact_coverage/fixed_point.hpp"
 #include "chapters/08_fast_exact/algorithms.hpp"
 #include "chapters/08_fast_exact/test_triangles.hpp"
+#include "tests/support/pixels.hpp"
 
 using tri::Canvas;
 using tri::Triangle;
 using tri::TriangleAlgorithm;
 
 namespace {
-
-constexpr std::array<std::array<int, 3>, 6> vertex_orders{
-    {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}, {0, 2, 1}, {2, 1, 0}, {1, 0, 2}}};
-
-Triangle reordered(const Triangle& t, const std::array<int, 3>& order) {
-  return {t[order[0]], t[order[1]], t[order[2]]};
-}
 
 // The canvas a draw function leaves, with write counts, on a background the colour never is.
 Canvas drawn_with_counts(tri::DrawTriangleFunction draw, const Triangle& t, int width, int height) {
@@ -75,8 +69,7 @@ TEST_CASE("Every variant draws exactly the oracle's pixels on 1/256-grid triangl
     const Canvas truth = drawn_with_counts(tri::ch07::draw_triangle_oracle, t, width, height);
     const Canvas truth_colors = drawn(tri::ch07::draw_triangle_oracle, t, width, height);
     for (const TriangleAlgorithm& algorithm : tri::ch08::triangle_algorithms()) {
-      for (const auto& order : vertex_orders) {
-        const Triangle u = reordered(t, order);
+      for (const Triangle& u : tri::testing::vertex_orders(t)) {
         INFO(algorithm.name << ", triangle " << i << ": " << u[0].x << "," << u[0].y << " "
                             << u[1].x << "," << u[1].y << " " << u[2].x << "," << u[2].y);
         const Canvas counted = drawn_with_counts(algorithm.draw, u, width, height);

@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "common/random.hpp"
+#include "tests/support/pixels.hpp"
 
 namespace tri::ch10 {
 
@@ -53,14 +54,12 @@ TEST_CASE("The coverage does not depend on the winding or the order of the verti
           "[10_coverage][step1]") {
   const std::array<glm::dvec2, 3> v = {on_grid(0, 37, 0, 11), on_grid(3, 200, 1, 5),
                                        on_grid(1, 3, 2, 255)};
-  const std::array<std::array<int, 3>, 6> orders = {
-      {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}}};
   for (int y = -1; y <= 3; ++y) {
     for (int x = -1; x <= 4; ++x) {
       const Fraction first = exact_coverage({{v[0], v[1], v[2]}}, {x, y});
-      for (const auto& o : orders) {
+      for (const Triangle& order : tri::testing::vertex_orders(v)) {
         INFO("pixel " << x << ", " << y);
-        CHECK(exact_coverage({{v[o[0]], v[o[1]], v[o[2]]}}, {x, y}) == first);
+        CHECK(exact_coverage(order, {x, y}) == first);
       }
     }
   }

@@ -54,11 +54,7 @@ PixelSet symmetric_difference(const PixelSet& a, const PixelSet& b) {
 }
 
 std::array<VertexTriple, 6> vertex_orders(glm::ivec2 a, glm::ivec2 b, glm::ivec2 c) {
-  return {{{a, b, c}, {a, c, b}, {b, a, c}, {b, c, a}, {c, a, b}, {c, b, a}}};
-}
-
-std::array<VertexTriple, 6> vertex_orders(const VertexTriple& t) {
-  return vertex_orders(t[0], t[1], t[2]);
+  return vertex_orders(VertexTriple{a, b, c});
 }
 
 std::int64_t doubled_area(glm::ivec2 a, glm::ivec2 b, glm::ivec2 c) {

@@ -45,10 +45,19 @@ PixelSet symmetric_difference(const PixelSet& a, const PixelSet& b);
 /// A triangle's three integer vertices.
 using VertexTriple = std::array<glm::ivec2, 3>;
 
-/// The six orders in which the three vertices can be passed.
+/// The six orders in which the three vertices of a triangle can be passed (both windings), for
+/// whole-pixel or double vertices alike.
+template <class Vertex>
+std::array<std::array<Vertex, 3>, 6> vertex_orders(const std::array<Vertex, 3>& t) {
+  return {{{t[0], t[1], t[2]},
+           {t[0], t[2], t[1]},
+           {t[1], t[0], t[2]},
+           {t[1], t[2], t[0]},
+           {t[2], t[0], t[1]},
+           {t[2], t[1], t[0]}}};
+}
+/// The same for three whole-pixel vertices given one by one.
 std::array<VertexTriple, 6> vertex_orders(glm::ivec2 a, glm::ivec2 b, glm::ivec2 c);
-/// The same for a triangle given as an array.
-std::array<VertexTriple, 6> vertex_orders(const VertexTriple& t);
 
 /// Twice the signed area of the triangle abc in exact 64-bit arithmetic: > 0 counter-clockwise
 /// (y up), 0 for collinear vertices.
