@@ -9,7 +9,7 @@ namespace tri::ch08 {
 
 namespace {
 
-template <class Writer>
+template <PixelWriter Writer>
 void fill_blocks(const TriangleSetup& setup, Writer& writer) {
   for_each_block_run(
       setup,

@@ -9,6 +9,7 @@
 
 #include "chapters/07_exact_coverage/fixed_point.hpp"
 #include "chapters/08_fast_exact/incremental.hpp"
+#include "chapters/08_fast_exact/pixel_writers.hpp"
 #include "chapters/08_fast_exact/triangle_setup.hpp"
 #include "common/canvas.hpp"
 #include "common/color.hpp"
@@ -98,7 +99,7 @@ void for_each_block_run(const TriangleSetup& setup, FillRun&& fill_run, TestBloc
 
 /// The pixels of a partial block, each tested with step 2's one-branch test on incrementally
 /// updated edge values; writer.pixel(x, y) for the covered ones.
-template <class Writer>
+template <PixelWriter Writer>
 void fill_block_pixels(const TriangleSetup& setup, const ch07::PixelRange& block, Writer& writer) {
   const std::int64_t dx = block.first_x - setup.range.first_x;
   const std::int64_t dy = block.first_y - setup.range.first_y;

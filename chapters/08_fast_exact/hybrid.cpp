@@ -4,11 +4,10 @@
 #include "chapters/08_fast_exact/spans.hpp"
 
 namespace tri::ch08 {
-namespace {
 
 // [listing choose_per_triangle]
-template <class Writer>
-void fill_hybrid_with(const TriangleSetup& setup, Writer& writer) {
+template <PixelWriter Writer>
+void fill_hybrid(const TriangleSetup& setup, Writer& writer) {
   if (fits_one_block(setup)) {
     fill_simd(setup, writer);
   } else {
@@ -16,25 +15,23 @@ void fill_hybrid_with(const TriangleSetup& setup, Writer& writer) {
   }
 }
 
-template <class Writer>
+namespace {
+
+template <PixelWriter Writer>
 void draw_batch_with(Canvas& canvas, std::span<const SceneTriangle> triangles) {
   for (const SceneTriangle& triangle : triangles) {
     const auto setup = setup_triangle(triangle.vertices, canvas.width(), canvas.height());
     if (!setup) continue;
     Writer writer(canvas, triangle.color);
-    fill_hybrid_with(*setup, writer);
+    fill_hybrid(*setup, writer);
   }
 }
 // [/listing]
 
 }  // namespace
 
-void fill_hybrid(const TriangleSetup& setup, RowWriter& writer) {
-  fill_hybrid_with(setup, writer);
-}
-void fill_hybrid(const TriangleSetup& setup, CountingWriter& writer) {
-  fill_hybrid_with(setup, writer);
-}
+template void fill_hybrid(const TriangleSetup&, RowWriter&);
+template void fill_hybrid(const TriangleSetup&, CountingWriter&);
 
 void draw_triangle_hybrid(Canvas& canvas, const Triangle& triangle, Color color) {
   const auto setup = setup_triangle(triangle, canvas.width(), canvas.height());

@@ -16,8 +16,10 @@ namespace tri::ch08 {
 
 /// Draws a prepared triangle: fill_simd when it fits one block (fits_one_block), else
 /// fill_spans.
-void fill_hybrid(const TriangleSetup& setup, RowWriter& writer);
-void fill_hybrid(const TriangleSetup& setup, CountingWriter& writer);
+template <PixelWriter Writer>
+void fill_hybrid(const TriangleSetup& setup, Writer& writer);
+extern template void fill_hybrid(const TriangleSetup&, RowWriter&);
+extern template void fill_hybrid(const TriangleSetup&, CountingWriter&);
 
 /// Step 6 · one triangle: setup, then fill_hybrid.
 void draw_triangle_hybrid(Canvas& canvas, const Triangle& triangle, Color color);

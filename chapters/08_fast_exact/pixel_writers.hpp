@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <array>
 #include <bit>
+#include <concepts>
 #include <cstdint>
 #include <cstring>
 
@@ -80,6 +81,19 @@ class CountingWriter {
   Canvas& canvas_;
   Color color_;
 };
+
+// [listing pixel_writer]
+/// What every traversal needs from a writer: whole spans of a row, single pixels, the canvas
+/// width. RowWriter and CountingWriter are the two; each traversal is one template over them.
+template <class Writer>
+concept PixelWriter = requires(Writer writer, int x, int y) {
+  writer.span(y, x, x + 1);  // pixels x_begin <= x < x_end of row y
+  writer.pixel(x, y);
+  { writer.width() } -> std::convertible_to<int>;
+};
+// [/listing]
+
+static_assert(PixelWriter<RowWriter> && PixelWriter<CountingWriter>);
 
 /// Calls draw(writer) with the writer that suits the canvas: counting when it counts writes.
 template <class Draw>

@@ -187,15 +187,6 @@ void fill_blocks_simd(const TriangleSetup& setup, Writer& writer) {
       });
 }
 
-template <class Writer>
-void fill_simd_lanes(const TriangleSetup& setup, Writer& writer) {
-  if (fits_32_bit_lanes(setup)) {
-    fill_blocks_simd<std::int32_t>(setup, writer);
-  } else {
-    fill_blocks_simd<std::int64_t>(setup, writer);
-  }
-}
-
 template <class Lane, int N>
 std::array<bool, 8> test_lanes(const TriangleSetup& setup, int x, int y) {
   const LaneTest<Lane, N> lanes(setup);
@@ -222,12 +213,17 @@ std::array<bool, 8> lane_test(const TriangleSetup& setup, int x, int y, LaneWidt
                     : test_lanes<std::int64_t, 8>(setup, x, y);
 }
 
-void fill_simd(const TriangleSetup& setup, RowWriter& writer) {
-  fill_simd_lanes(setup, writer);
+template <PixelWriter Writer>
+void fill_simd(const TriangleSetup& setup, Writer& writer) {
+  if (fits_32_bit_lanes(setup)) {
+    fill_blocks_simd<std::int32_t>(setup, writer);
+  } else {
+    fill_blocks_simd<std::int64_t>(setup, writer);
+  }
 }
-void fill_simd(const TriangleSetup& setup, CountingWriter& writer) {
-  fill_simd_lanes(setup, writer);
-}
+
+template void fill_simd(const TriangleSetup&, RowWriter&);
+template void fill_simd(const TriangleSetup&, CountingWriter&);
 
 void draw_triangle_simd(Canvas& canvas, const Triangle& triangle, Color color) {
   const auto setup = setup_triangle(triangle, canvas.width(), canvas.height());

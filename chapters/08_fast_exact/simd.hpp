@@ -46,8 +46,10 @@ std::array<bool, 8> lane_test(const TriangleSetup& setup, int x, int y, LaneWidt
 
 /// Draws a prepared triangle the way draw_triangle_simd does, through either writer (the part
 /// of step 5 that the threaded variant runs on each band).
-void fill_simd(const TriangleSetup& setup, RowWriter& writer);
-void fill_simd(const TriangleSetup& setup, CountingWriter& writer);
+template <PixelWriter Writer>
+void fill_simd(const TriangleSetup& setup, Writer& writer);
+extern template void fill_simd(const TriangleSetup&, RowWriter&);
+extern template void fill_simd(const TriangleSetup&, CountingWriter&);
 
 /// Step 5 · SIMD: step 4's blocks, each row of a partial block tested by the lane test and
 /// written with one read-blend-write of eight pixels; a triangle within one block skips the

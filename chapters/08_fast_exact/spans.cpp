@@ -80,25 +80,16 @@ SpanWalker::SpanWalker(const TriangleSetup& setup) noexcept
   }
 }
 
-namespace {
-
-template <class Writer>
-void fill_spans_with(const TriangleSetup& setup, Writer& writer) {
+template <PixelWriter Writer>
+void fill_spans(const TriangleSetup& setup, Writer& writer) {
   SpanWalker walker(setup);
   for (int y = walker.first_row(); y <= walker.last_row(); ++y, walker.next_row()) {
     const RowSpan s = walker.span();
     if (!s.empty()) writer.span(y, s.first, s.last + 1);
   }
 }
-
-}  // namespace
-
-void fill_spans(const TriangleSetup& setup, RowWriter& writer) {
-  fill_spans_with(setup, writer);
-}
-void fill_spans(const TriangleSetup& setup, CountingWriter& writer) {
-  fill_spans_with(setup, writer);
-}
+template void fill_spans(const TriangleSetup&, RowWriter&);
+template void fill_spans(const TriangleSetup&, CountingWriter&);
 
 void draw_triangle_spans(Canvas& canvas, const Triangle& triangle, Color color) {
   const auto setup = setup_triangle(triangle, canvas.width(), canvas.height());

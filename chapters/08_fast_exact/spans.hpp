@@ -98,8 +98,10 @@ class SpanWalker {
 };
 
 /// Draws a prepared triangle the way draw_triangle_spans does, through either writer.
-void fill_spans(const TriangleSetup& setup, RowWriter& writer);
-void fill_spans(const TriangleSetup& setup, CountingWriter& writer);
+template <PixelWriter Writer>
+void fill_spans(const TriangleSetup& setup, Writer& writer);
+extern template void fill_spans(const TriangleSetup&, RowWriter&);
+extern template void fill_spans(const TriangleSetup&, CountingWriter&);
 
 /// Step 3 · span traversal: setup, then one filled span per row from SpanWalker. A sliver costs
 /// its rows, not its bounding box.

@@ -37,7 +37,7 @@ bool touches_bands_of(const Triangle& triangle, int height, const Bands& bands,
 }
 
 // [listing draw_bands]
-template <class Writer>
+template <PixelWriter Writer>
 void draw_bands(Canvas& canvas, std::span<const SceneTriangle> triangles, int thread, int threads) {
   const ch07::PixelRange whole{0, canvas.width() - 1, 0, canvas.height() - 1};
   const Bands bands = bands_for(canvas.height(), threads);
