@@ -22,7 +22,7 @@ std::int64_t ceil_shift(std::int64_t a, int bits) {
 template <class Int>
 void fill(Canvas& canvas, SubpixelPoint a, SubpixelPoint b, SubpixelPoint c, int bits,
           TieRule tie_rule, Color color) {
-  const PixelRange range = candidate_pixels(a, b, c, bits, canvas.width(), canvas.height());
+  const ch05::PixelBox range = candidate_pixels(a, b, c, bits, canvas.width(), canvas.height());
   if (range.empty()) return;
   // [listing biased_test]
   // A top-left edge keeps its zeros; any other edge needs strictly positive values: w - 1 >= 0.
@@ -31,9 +31,9 @@ void fill(Canvas& canvas, SubpixelPoint a, SubpixelPoint b, SubpixelPoint c, int
   const Int bias0 = is_top_left_edge(b, c) ? 0 : other_bias;
   const Int bias1 = is_top_left_edge(c, a) ? 0 : other_bias;
   const Int bias2 = is_top_left_edge(a, b) ? 0 : other_bias;
-  for (int y = range.first_y; y <= range.last_y; ++y) {
+  for (int y = range.min.y; y <= range.max.y; ++y) {
     const std::int64_t py = std::int64_t{y} << bits;
-    for (int x = range.first_x; x <= range.last_x; ++x) {
+    for (int x = range.min.x; x <= range.max.x; ++x) {
       const std::int64_t px = std::int64_t{x} << bits;
       if (edge_function<Int>(b, c, px, py) + bias0 >= 0 &&
           edge_function<Int>(c, a, px, py) + bias1 >= 0 &&
@@ -84,16 +84,16 @@ bool fits_64_bit_edge_functions(SubpixelPoint a, SubpixelPoint b, SubpixelPoint 
 // [/listing]
 
 // [listing candidate_pixels]
-PixelRange candidate_pixels(SubpixelPoint a, SubpixelPoint b, SubpixelPoint c, int bits, int width,
-                            int height) noexcept {
+ch05::PixelBox candidate_pixels(SubpixelPoint a, SubpixelPoint b, SubpixelPoint c, int bits,
+                                int width, int height) noexcept {
   const std::int64_t x0 = ceil_shift(std::min({a.x, b.x, c.x}), bits);
   const std::int64_t x1 = floor_shift(std::max({a.x, b.x, c.x}), bits);
   const std::int64_t y0 = ceil_shift(std::min({a.y, b.y, c.y}), bits);
   const std::int64_t y1 = floor_shift(std::max({a.y, b.y, c.y}), bits);
-  return {static_cast<int>(std::max<std::int64_t>(x0, 0)),
-          static_cast<int>(std::min<std::int64_t>(x1, width - 1)),
-          static_cast<int>(std::max<std::int64_t>(y0, 0)),
-          static_cast<int>(std::min<std::int64_t>(y1, height - 1))};
+  return {{static_cast<int>(std::max<std::int64_t>(x0, 0)),
+           static_cast<int>(std::max<std::int64_t>(y0, 0))},
+          {static_cast<int>(std::min<std::int64_t>(x1, width - 1)),
+           static_cast<int>(std::min<std::int64_t>(y1, height - 1))}};
 }
 // [/listing]
 

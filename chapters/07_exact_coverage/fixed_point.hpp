@@ -5,6 +5,7 @@
 
 #include <cstdint>
 
+#include "chapters/05_edge_function/bounding_box.hpp"
 #include "common/canvas.hpp"
 #include "common/color.hpp"
 #include "common/triangle_algorithm.hpp"
@@ -31,15 +32,11 @@ bool is_top_left_edge(SubpixelPoint a, SubpixelPoint b) noexcept;
 /// 128-bit path instead.
 bool fits_64_bit_edge_functions(SubpixelPoint a, SubpixelPoint b, SubpixelPoint c) noexcept;
 
-/// Step 4 · the candidate pixels: the integer pixel range [first, last] on each axis whose
+/// Step 4 · the candidate pixels: the box of pixels [min, max] (chapter 05's PixelBox) whose
 /// centres lie within the snapped vertices' extent, clipped to the canvas. No overflow for any
-/// snapped input; empty (first > last) when the triangle misses the canvas.
-struct PixelRange {
-  int first_x, last_x, first_y, last_y;
-  bool empty() const noexcept { return first_x > last_x || first_y > last_y; }
-};
-PixelRange candidate_pixels(SubpixelPoint a, SubpixelPoint b, SubpixelPoint c, int bits, int width,
-                            int height) noexcept;
+/// snapped input; empty (min > max) when the triangle misses the canvas.
+ch05::PixelBox candidate_pixels(SubpixelPoint a, SubpixelPoint b, SubpixelPoint c, int bits,
+                                int width, int height) noexcept;
 
 /// How a pixel centre exactly on an edge is decided.
 enum class TieRule {

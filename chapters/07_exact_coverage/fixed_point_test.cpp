@@ -76,13 +76,13 @@ TEST_CASE("candidate pixels are the centres within the snapped extent, clipped t
   using tri::ch07::candidate_pixels;
   // x from 1.5 to 4 pixels, y from -3 to 2.25 (in 1/256 units).
   const auto r = candidate_pixels({384, -768}, {1024, 0}, {512, 576}, 8, 10, 10);
-  CHECK(r.first_x == 2);
-  CHECK(r.last_x == 4);
-  CHECK(r.first_y == 0);
-  CHECK(r.last_y == 2);
+  CHECK(r.min.x == 2);
+  CHECK(r.max.x == 4);
+  CHECK(r.min.y == 0);
+  CHECK(r.max.y == 2);
   const std::int64_t far = std::int64_t{1} << 38;
   const auto all = candidate_pixels({-far, -far}, {far, -far}, {0, far}, 8, 10, 7);
-  CHECK((all.first_x == 0 && all.last_x == 9 && all.first_y == 0 && all.last_y == 6));
+  CHECK((all.min.x == 0 && all.max.x == 9 && all.min.y == 0 && all.max.y == 6));
   CHECK(candidate_pixels({far, far}, {far, far + 1}, {far + 1, far}, 8, 10, 10).empty());
 }
 

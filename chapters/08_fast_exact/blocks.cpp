@@ -13,10 +13,10 @@ template <PixelWriter Writer>
 void fill_blocks(const TriangleSetup& setup, Writer& writer) {
   for_each_block_run(
       setup,
-      [&](const ch07::PixelRange& run) {
-        for (int y = run.first_y; y <= run.last_y; ++y) writer.span(y, run.first_x, run.last_x + 1);
+      [&](const ch05::PixelBox& run) {
+        for (int y = run.min.y; y <= run.max.y; ++y) writer.span(y, run.min.x, run.max.x + 1);
       },
-      [&](const ch07::PixelRange& block) { fill_block_pixels(setup, block, writer); });
+      [&](const ch05::PixelBox& block) { fill_block_pixels(setup, block, writer); });
 }
 
 }  // namespace

@@ -33,11 +33,11 @@ enum class BlockCoverage {
 /// name: exact integers, so "inside" and "outside" are never wrong, only "partial" is cautious
 /// (e.g. a block beyond a vertex that no single edge rejects).
 inline BlockCoverage classify_block(const TriangleSetup& setup,
-                                    const ch07::PixelRange& block) noexcept {
-  const std::int64_t dx = block.first_x - setup.range.first_x;
-  const std::int64_t dy = block.first_y - setup.range.first_y;
-  const std::int64_t width = block.last_x - block.first_x;
-  const std::int64_t height = block.last_y - block.first_y;
+                                    const ch05::PixelBox& block) noexcept {
+  const std::int64_t dx = block.min.x - setup.range.min.x;
+  const std::int64_t dy = block.min.y - setup.range.min.y;
+  const std::int64_t width = block.max.x - block.min.x;
+  const std::int64_t height = block.max.y - block.min.y;
   bool inside = true;
   for (const EdgeFunction& edge : setup.edges) {
     const std::int64_t corner = edge.at(dx, dy);
@@ -58,12 +58,12 @@ inline BlockCoverage classify_block(const TriangleSetup& setup,
 /// bottom. Blocks start at the range's first pixel, so a triangle smaller than a block is one.
 template <class Visit>
 void for_each_block(const TriangleSetup& setup, Visit&& visit) {
-  const ch07::PixelRange& r = setup.range;
-  for (int y = r.first_y; y <= r.last_y; y += block_size) {
-    const int last_y = y + block_size - 1 < r.last_y ? y + block_size - 1 : r.last_y;
-    for (int x = r.first_x; x <= r.last_x; x += block_size) {
-      const int last_x = x + block_size - 1 < r.last_x ? x + block_size - 1 : r.last_x;
-      const ch07::PixelRange block{x, last_x, y, last_y};
+  const ch05::PixelBox& r = setup.range;
+  for (int y = r.min.y; y <= r.max.y; y += block_size) {
+    const int last_y = y + block_size - 1 < r.max.y ? y + block_size - 1 : r.max.y;
+    for (int x = r.min.x; x <= r.max.x; x += block_size) {
+      const int last_x = x + block_size - 1 < r.max.x ? x + block_size - 1 : r.max.x;
+      const ch05::PixelBox block{{x, y}, {last_x, last_y}};
       visit(block, classify_block(setup, block));
     }
   }
@@ -75,24 +75,24 @@ void for_each_block(const TriangleSetup& setup, Visit&& visit) {
 /// by block; each partial block goes to test_block(block); outside blocks to nobody.
 template <class FillRun, class TestBlock>
 void for_each_block_run(const TriangleSetup& setup, FillRun&& fill_run, TestBlock&& test_block) {
-  const ch07::PixelRange& r = setup.range;
-  for (int y = r.first_y; y <= r.last_y; y += block_size) {
-    const int last_y = y + block_size - 1 < r.last_y ? y + block_size - 1 : r.last_y;
+  const ch05::PixelBox& r = setup.range;
+  for (int y = r.min.y; y <= r.max.y; y += block_size) {
+    const int last_y = y + block_size - 1 < r.max.y ? y + block_size - 1 : r.max.y;
     int run_first_x = -1, run_last_x = -1;
-    for (int x = r.first_x; x <= r.last_x; x += block_size) {
-      const int last_x = x + block_size - 1 < r.last_x ? x + block_size - 1 : r.last_x;
-      const ch07::PixelRange block{x, last_x, y, last_y};
+    for (int x = r.min.x; x <= r.max.x; x += block_size) {
+      const int last_x = x + block_size - 1 < r.max.x ? x + block_size - 1 : r.max.x;
+      const ch05::PixelBox block{{x, y}, {last_x, last_y}};
       const BlockCoverage coverage = classify_block(setup, block);
       if (coverage == BlockCoverage::inside) {
         if (run_first_x < 0) run_first_x = x;
         run_last_x = last_x;
         continue;
       }
-      if (run_first_x >= 0) fill_run(ch07::PixelRange{run_first_x, run_last_x, y, last_y});
+      if (run_first_x >= 0) fill_run(ch05::PixelBox{{run_first_x, y}, {run_last_x, last_y}});
       run_first_x = -1;
       if (coverage == BlockCoverage::partial) test_block(block);
     }
-    if (run_first_x >= 0) fill_run(ch07::PixelRange{run_first_x, run_last_x, y, last_y});
+    if (run_first_x >= 0) fill_run(ch05::PixelBox{{run_first_x, y}, {run_last_x, last_y}});
   }
 }
 // [/listing]
@@ -100,14 +100,14 @@ void for_each_block_run(const TriangleSetup& setup, FillRun&& fill_run, TestBloc
 /// The pixels of a partial block, each tested with step 2's one-branch test on incrementally
 /// updated edge values; writer.pixel(x, y) for the covered ones.
 template <PixelWriter Writer>
-void fill_block_pixels(const TriangleSetup& setup, const ch07::PixelRange& block, Writer& writer) {
-  const std::int64_t dx = block.first_x - setup.range.first_x;
-  const std::int64_t dy = block.first_y - setup.range.first_y;
+void fill_block_pixels(const TriangleSetup& setup, const ch05::PixelBox& block, Writer& writer) {
+  const std::int64_t dx = block.min.x - setup.range.min.x;
+  const std::int64_t dy = block.min.y - setup.range.min.y;
   const auto& [e0, e1, e2] = setup.edges;
   std::int64_t row0 = e0.at(dx, dy), row1 = e1.at(dx, dy), row2 = e2.at(dx, dy);
-  for (int y = block.first_y; y <= block.last_y; ++y) {
+  for (int y = block.min.y; y <= block.max.y; ++y) {
     std::int64_t w0 = row0, w1 = row1, w2 = row2;
-    for (int x = block.first_x; x <= block.last_x; ++x) {
+    for (int x = block.min.x; x <= block.max.x; ++x) {
       if (inside_all_edges(w0, w1, w2)) writer.pixel(x, y);
       w0 += e0.step_x;
       w1 += e1.step_x;

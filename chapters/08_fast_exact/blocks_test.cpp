@@ -7,22 +7,22 @@
 #include "chapters/08_fast_exact/test_triangles.hpp"
 
 using tri::Triangle;
-using tri::ch07::PixelRange;
+using tri::ch05::PixelBox;
 using tri::ch08::BlockCoverage;
 
 namespace {
 
 // How many pixels of the block the setup covers, evaluated directly.
-int covered_in(const tri::ch08::TriangleSetup& setup, const PixelRange& block) {
+int covered_in(const tri::ch08::TriangleSetup& setup, const PixelBox& block) {
   int n = 0;
-  for (int y = block.first_y; y <= block.last_y; ++y) {
-    for (int x = block.first_x; x <= block.last_x; ++x) n += setup.covers(x, y);
+  for (int y = block.min.y; y <= block.max.y; ++y) {
+    for (int x = block.min.x; x <= block.max.x; ++x) n += setup.covers(x, y);
   }
   return n;
 }
 
-int area(const PixelRange& r) {
-  return (r.last_x - r.first_x + 1) * (r.last_y - r.first_y + 1);
+int area(const PixelBox& r) {
+  return (r.max.x - r.min.x + 1) * (r.max.y - r.min.y + 1);
 }
 
 }  // namespace
@@ -36,10 +36,9 @@ TEST_CASE("An accepted block is covered everywhere and a rejected one nowhere",
         // Blocks of every size, anywhere in the range (not just the 8x8 grid).
         for (int k = 0; k < 20; ++k) {
           const auto& r = setup.range;
-          const int x0 = random.integer(r.first_x, r.last_x),
-                    y0 = random.integer(r.first_y, r.last_y);
-          const PixelRange block{x0, random.integer(x0, r.last_x), y0,
-                                 random.integer(y0, r.last_y)};
+          const int x0 = random.integer(r.min.x, r.max.x), y0 = random.integer(r.min.y, r.max.y);
+          const PixelBox block{{x0, y0},
+                               {random.integer(x0, r.max.x), random.integer(y0, r.max.y)}};
           const BlockCoverage coverage = tri::ch08::classify_block(setup, block);
           ++counts[static_cast<int>(coverage)];
           if (coverage == BlockCoverage::inside) REQUIRE(covered_in(setup, block) == area(block));
@@ -58,13 +57,13 @@ TEST_CASE("The blocks tile the candidate pixels exactly once, 8x8 from the range
   tri::ch08::testing::for_each_random_setup(
       random, 300, 70, 53, [&](int, const tri::ch08::TriangleSetup& setup) {
         std::map<std::pair<int, int>, int> seen;
-        tri::ch08::for_each_block(setup, [&](const PixelRange& block, BlockCoverage coverage) {
-          CHECK((block.first_x - setup.range.first_x) % 8 == 0);
-          CHECK((block.first_y - setup.range.first_y) % 8 == 0);
-          CHECK(block.last_x - block.first_x < 8);
+        tri::ch08::for_each_block(setup, [&](const PixelBox& block, BlockCoverage coverage) {
+          CHECK((block.min.x - setup.range.min.x) % 8 == 0);
+          CHECK((block.min.y - setup.range.min.y) % 8 == 0);
+          CHECK(block.max.x - block.min.x < 8);
           CHECK(coverage == tri::ch08::classify_block(setup, block));
-          for (int y = block.first_y; y <= block.last_y; ++y) {
-            for (int x = block.first_x; x <= block.last_x; ++x) ++seen[{x, y}];
+          for (int y = block.min.y; y <= block.max.y; ++y) {
+            for (int x = block.min.x; x <= block.max.x; ++x) ++seen[{x, y}];
           }
         });
         REQUIRE(static_cast<int>(seen.size()) == area(setup.range));
@@ -79,19 +78,19 @@ TEST_CASE("Runs of inside blocks and partial blocks hold every covered pixel exa
       random, 300, 70, 53, [&](int, const tri::ch08::TriangleSetup& setup) {
         std::map<std::pair<int, int>, int> seen;
         int covered_in_runs = 0, covered_in_partials = 0, run_pixels = 0;
-        const auto visit = [&](const PixelRange& r) {
-          for (int y = r.first_y; y <= r.last_y; ++y) {
-            for (int x = r.first_x; x <= r.last_x; ++x) ++seen[{x, y}];
+        const auto visit = [&](const PixelBox& r) {
+          for (int y = r.min.y; y <= r.max.y; ++y) {
+            for (int x = r.min.x; x <= r.max.x; ++x) ++seen[{x, y}];
           }
         };
         tri::ch08::for_each_block_run(
             setup,
-            [&](const PixelRange& run) {
+            [&](const PixelBox& run) {
               visit(run);
               run_pixels += area(run);
               covered_in_runs += covered_in(setup, run);
             },
-            [&](const PixelRange& block) {
+            [&](const PixelBox& block) {
               visit(block);
               covered_in_partials += covered_in(setup, block);
             });

@@ -20,9 +20,9 @@ template <class Visit>
 void walk_incremental(const TriangleSetup& setup, Visit&& visit) {
   const auto& [e0, e1, e2] = setup.edges;
   std::int64_t row0 = e0.value, row1 = e1.value, row2 = e2.value;
-  for (int y = setup.range.first_y; y <= setup.range.last_y; ++y) {
+  for (int y = setup.range.min.y; y <= setup.range.max.y; ++y) {
     std::int64_t w0 = row0, w1 = row1, w2 = row2;
-    for (int x = setup.range.first_x; x <= setup.range.last_x; ++x) {
+    for (int x = setup.range.min.x; x <= setup.range.max.x; ++x) {
       visit(x, y, w0, w1, w2);
       w0 += e0.step_x;
       w1 += e1.step_x;

@@ -14,24 +14,24 @@ TEST_CASE("The incremental walk visits every candidate pixel once with the direc
   tri::ch08::testing::for_each_random_setup(
       random, 600, 24, 19, [&](int, const tri::ch08::TriangleSetup& setup) {
         const auto& r = setup.range;
-        int expected_x = r.first_x, expected_y = r.first_y;
+        int expected_x = r.min.x, expected_y = r.min.y;
         long visits = 0;
         tri::ch08::walk_incremental(
             setup, [&](int x, int y, std::int64_t w0, std::int64_t w1, std::int64_t w2) {
               // Row by row from the bottom, left to right.
               REQUIRE(x == expected_x);
               REQUIRE(y == expected_y);
-              const std::int64_t dx = x - r.first_x, dy = y - r.first_y;
+              const std::int64_t dx = x - r.min.x, dy = y - r.min.y;
               REQUIRE(w0 == setup.edges[0].at(dx, dy));
               REQUIRE(w1 == setup.edges[1].at(dx, dy));
               REQUIRE(w2 == setup.edges[2].at(dx, dy));
               ++visits;
-              if (++expected_x > r.last_x) {
-                expected_x = r.first_x;
+              if (++expected_x > r.max.x) {
+                expected_x = r.min.x;
                 ++expected_y;
               }
             });
-        CHECK(visits == static_cast<long>(r.last_x - r.first_x + 1) * (r.last_y - r.first_y + 1));
+        CHECK(visits == static_cast<long>(r.max.x - r.min.x + 1) * (r.max.y - r.min.y + 1));
       });
 }
 

@@ -22,7 +22,7 @@ using tri::LabelPlace;
 using tri::PixelDiagram;
 using tri::PixelMark;
 using tri::Triangle;
-using tri::ch07::PixelRange;
+using tri::ch05::PixelBox;
 namespace dc = tri::diagram_colors;
 
 // Okabe–Ito colours lightened towards white, for fills under the centre dots.
@@ -40,8 +40,8 @@ Color mix(Color a, Color b, int percent_b) {
 }
 
 // The outer border of a rectangle of pixels.
-void outline(PixelDiagram& d, const PixelRange& r, Color color, double width, bool dashed = false) {
-  d.frame({r.first_x, r.first_y}, {r.last_x, r.last_y}, color, width, dashed);
+void outline(PixelDiagram& d, const PixelBox& r, Color color, double width, bool dashed = false) {
+  d.frame({r.min.x, r.min.y}, {r.max.x, r.max.y}, color, width, dashed);
 }
 
 // A triangle's ideal edges as three segments (the writer cuts them to the diagram).
@@ -67,12 +67,12 @@ std::string edge_signs_figure() {
   const std::array<Color, 3> fails_one{light_blue, light_purple, light_vermillion};
   const auto& r = setup->range;
   int fails_two = 0;
-  for (int y = r.first_y; y <= r.last_y; ++y) {
-    for (int x = r.first_x; x <= r.last_x; ++x) {
+  for (int y = r.min.y; y <= r.max.y; ++y) {
+    for (int x = r.min.x; x <= r.max.x; ++x) {
       int failed = 0;
       std::size_t which = 0;
       for (std::size_t e = 0; e < 3; ++e) {
-        if (setup->edges[e].at(x - r.first_x, y - r.first_y) < 0) {
+        if (setup->edges[e].at(x - r.min.x, y - r.min.y) < 0) {
           ++failed;
           which = e;
         }
@@ -107,9 +107,9 @@ std::string sliver_spans_figure() {
   const auto setup = tri::ch08::setup_triangle(t, 32, 20);
   PixelDiagram d({0, 0}, {31, 19}, "A sliver: one span per row instead of its bounding box", 20);
   const auto& r = setup->range;
-  const auto candidates = (r.last_x - r.first_x + 1) * (r.last_y - r.first_y + 1);
-  for (int y = r.first_y; y <= r.last_y; ++y) {
-    for (int x = r.first_x; x <= r.last_x; ++x) d.fill({x, y}, dc::light_gray);
+  const auto candidates = (r.max.x - r.min.x + 1) * (r.max.y - r.min.y + 1);
+  for (int y = r.min.y; y <= r.max.y; ++y) {
+    for (int x = r.min.x; x <= r.max.x; ++x) d.fill({x, y}, dc::light_gray);
   }
   tri::ch08::SpanWalker walker(*setup);
   int spanned = 0;
@@ -139,12 +139,12 @@ std::string blocks_figure() {
   const auto setup = tri::ch08::setup_triangle(t, 72, 56);
   PixelDiagram d({0, 0}, {71, 55}, "8x8 blocks: skipped, filled without a test, or tested", 10);
   int inside = 0, outside = 0, partial = 0;
-  std::vector<PixelRange> blocks, empty_blocks;
-  tri::ch08::for_each_block(*setup, [&](const PixelRange& block, tri::ch08::BlockCoverage c) {
+  std::vector<PixelBox> blocks, empty_blocks;
+  tri::ch08::for_each_block(*setup, [&](const PixelBox& block, tri::ch08::BlockCoverage c) {
     blocks.push_back(block);
     bool any = false;
-    for (int y = block.first_y; y <= block.last_y; ++y) {
-      for (int x = block.first_x; x <= block.last_x; ++x) {
+    for (int y = block.min.y; y <= block.max.y; ++y) {
+      for (int x = block.min.x; x <= block.max.x; ++x) {
         const bool covered = setup->covers(x, y);
         any = any || covered;
         switch (c) {
@@ -224,8 +224,8 @@ std::string hybrid_paths_zoom_figure() {
                  "Close up: lanes test every candidate pixel, spans touch only covered ones", 26);
   const auto small_setup = tri::ch08::setup_triangle(small, 24, 12);
   const auto& r = small_setup->range;
-  for (int y = r.first_y; y <= r.last_y; ++y) {
-    for (int x = r.first_x; x <= r.last_x; ++x) {
+  for (int y = r.min.y; y <= r.max.y; ++y) {
+    for (int x = r.min.x; x <= r.max.x; ++x) {
       d.fill({x, y}, small_setup->covers(x, y) ? dc::purple : light_purple);
     }
   }

@@ -99,9 +99,9 @@ void blend(Color* pixels, const Vector<Lane, N>& lanes, const Vector<std::uint32
 
 // The edge values at the block's first pixel, in lanes.
 template <class Lane>
-std::array<Lane, 3> block_origin_values(const TriangleSetup& setup, const ch07::PixelRange& block) {
-  const std::int64_t dx = block.first_x - setup.range.first_x;
-  const std::int64_t dy = block.first_y - setup.range.first_y;
+std::array<Lane, 3> block_origin_values(const TriangleSetup& setup, const ch05::PixelBox& block) {
+  const std::int64_t dx = block.min.x - setup.range.min.x;
+  const std::int64_t dy = block.min.y - setup.range.min.y;
   return {static_cast<Lane>(setup.edges[0].at(dx, dy)),
           static_cast<Lane>(setup.edges[1].at(dx, dy)),
           static_cast<Lane>(setup.edges[2].at(dx, dy))};
@@ -111,18 +111,18 @@ std::array<Lane, 3> block_origin_values(const TriangleSetup& setup, const ch07::
 // reads is a local copy, so the compiler keeps it in registers: pixel stores cannot alias a local.
 template <class Lane, int N>
 void fill_partial_block(const TriangleSetup& setup, const LaneTest<Lane, N>& lanes,
-                        const ch07::PixelRange& block, RowWriter& writer) {
+                        const ch05::PixelBox& block, RowWriter& writer) {
   const LaneTest<Lane, N> local = lanes;
   auto [w0, w1, w2] = block_origin_values<Lane>(setup, block);
   const auto s0 = static_cast<Lane>(setup.edges[0].step_y);
   const auto s1 = static_cast<Lane>(setup.edges[1].step_y);
   const auto s2 = static_cast<Lane>(setup.edges[2].step_y);
-  const auto pixels_left = static_cast<Lane>(setup.range.last_x - block.first_x);
+  const auto pixels_left = static_cast<Lane>(setup.range.max.x - block.min.x);
   const auto word = Vector<std::uint32_t, N>{} + writer.word();
   const std::ptrdiff_t stride = writer.width();
-  Color* row = writer.row_pixels(block.first_y) + block.first_x;
+  Color* row = writer.row_pixels(block.min.y) + block.min.x;
   Vector<Lane, N> covered;
-  for (int rows = block.last_y - block.first_y + 1; rows > 0; --rows, row += stride) {
+  for (int rows = block.max.y - block.min.y + 1; rows > 0; --rows, row += stride) {
     local.test(w0, w1, w2, pixels_left, covered);
     blend<Lane, N>(row, covered, word);
     w0 += s0;
@@ -134,14 +134,14 @@ void fill_partial_block(const TriangleSetup& setup, const LaneTest<Lane, N>& lan
 // The same decisions through the counting writer, lane by lane.
 template <class Lane, int N>
 void fill_partial_block(const TriangleSetup& setup, const LaneTest<Lane, N>& lanes,
-                        const ch07::PixelRange& block, CountingWriter& writer) {
+                        const ch05::PixelBox& block, CountingWriter& writer) {
   auto [w0, w1, w2] = block_origin_values<Lane>(setup, block);
-  const auto pixels_left = static_cast<Lane>(setup.range.last_x - block.first_x);
+  const auto pixels_left = static_cast<Lane>(setup.range.max.x - block.min.x);
   Vector<Lane, N> covered;
-  for (int y = block.first_y; y <= block.last_y; ++y) {
+  for (int y = block.min.y; y <= block.max.y; ++y) {
     lanes.test(w0, w1, w2, pixels_left, covered);
     for (int i = 0; i < N; ++i) {
-      if (covered[i] >= 0) writer.pixel(block.first_x + i, y);
+      if (covered[i] >= 0) writer.pixel(block.min.x + i, y);
     }
     w0 += static_cast<Lane>(setup.edges[0].step_y);
     w1 += static_cast<Lane>(setup.edges[1].step_y);
@@ -153,7 +153,7 @@ void fill_partial_block(const TriangleSetup& setup, const LaneTest<Lane, N>& lan
 // wide: one SSE2 register per operation instead of two), without classifying it.
 template <class Lane, int N, class Writer>
 void fill_one_block(const TriangleSetup& setup, Writer& writer) {
-  if (setup.range.first_x + N <= writer.width()) {
+  if (setup.range.min.x + N <= writer.width()) {
     fill_partial_block(setup, LaneTest<Lane, N>(setup), setup.range, writer);
   } else {
     fill_block_pixels(setup, setup.range, writer);  // lanes would leave the canvas
@@ -163,7 +163,7 @@ void fill_one_block(const TriangleSetup& setup, Writer& writer) {
 template <class Lane, class Writer>
 void fill_blocks_simd(const TriangleSetup& setup, Writer& writer) {
   if (fits_one_block(setup)) {
-    if (setup.range.last_x - setup.range.first_x < 4) {
+    if (setup.range.max.x - setup.range.min.x < 4) {
       fill_one_block<Lane, 4>(setup, writer);
     } else {
       fill_one_block<Lane, 8>(setup, writer);
@@ -174,12 +174,12 @@ void fill_blocks_simd(const TriangleSetup& setup, Writer& writer) {
   const int canvas_width = writer.width();
   for_each_block_run(
       setup,
-      [&](const ch07::PixelRange& run) {
-        for (int y = run.first_y; y <= run.last_y; ++y) writer.span(y, run.first_x, run.last_x + 1);
+      [&](const ch05::PixelBox& run) {
+        for (int y = run.min.y; y <= run.max.y; ++y) writer.span(y, run.min.x, run.max.x + 1);
       },
-      [&](const ch07::PixelRange& block) {
+      [&](const ch05::PixelBox& block) {
         // Eight lanes must stay on the canvas; a block at its right border goes pixel by pixel.
-        if (block.first_x + 8 <= canvas_width) {
+        if (block.min.x + 8 <= canvas_width) {
           fill_partial_block(setup, lanes, block, writer);
         } else {
           fill_block_pixels(setup, block, writer);
@@ -190,12 +190,12 @@ void fill_blocks_simd(const TriangleSetup& setup, Writer& writer) {
 template <class Lane, int N>
 std::array<bool, 8> test_lanes(const TriangleSetup& setup, int x, int y) {
   const LaneTest<Lane, N> lanes(setup);
-  const std::int64_t dx = x - setup.range.first_x, dy = y - setup.range.first_y;
+  const std::int64_t dx = x - setup.range.min.x, dy = y - setup.range.min.y;
   Vector<Lane, N> covered;
   lanes.test(static_cast<Lane>(setup.edges[0].at(dx, dy)),
              static_cast<Lane>(setup.edges[1].at(dx, dy)),
-             static_cast<Lane>(setup.edges[2].at(dx, dy)),
-             static_cast<Lane>(setup.range.last_x - x), covered);
+             static_cast<Lane>(setup.edges[2].at(dx, dy)), static_cast<Lane>(setup.range.max.x - x),
+             covered);
   std::array<bool, 8> result{};
   for (int i = 0; i < N; ++i) result[i] = covered[i] >= 0;
   return result;

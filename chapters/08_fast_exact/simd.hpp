@@ -30,15 +30,15 @@ constexpr bool fits_32_bit_lanes(const TriangleSetup& setup) noexcept {
 /// True when the setup's candidate pixels fit in one 8x8 block: step 5 then tests its rows at
 /// once without classifying it, in 4 lanes when it is at most 4 pixels wide.
 constexpr bool fits_one_block(const TriangleSetup& setup) noexcept {
-  const ch07::PixelRange& r = setup.range;
-  return r.last_x - r.first_x < 8 && r.last_y - r.first_y < 8;
+  const ch05::PixelBox& r = setup.range;
+  return r.max.x - r.min.x < 8 && r.max.y - r.min.y < 8;
 }
 
 /// The lane width of the lane test.
 enum class LaneWidth { bits32, bits64 };
 
 /// What the lane test says about pixels (x + i, y), 0 <= i < lanes (4 or 8), of the setup's
-/// range: lane i is the OR of the three edge values there and of (range.last_x - x - i), and the
+/// range: lane i is the OR of the three edge values there and of (range.max.x - x - i), and the
 /// pixel is drawn when it is >= 0, i.e. when it is covered and inside the range. The same vector
 /// code the variant runs, exposed for tests (bits32 only where fits_32_bit_lanes holds); entries
 /// from `lanes` on are false.

@@ -18,8 +18,7 @@ TEST_CASE("Every lane of the lane test agrees with direct evaluation, in 32 and 
       random, 3000, 40, 40, [&](int i, const tri::ch08::TriangleSetup& setup) {
         const auto& r = setup.range;
         for (int k = 0; k < 8; ++k) {
-          const int x = random.integer(r.first_x, r.last_x),
-                    y = random.integer(r.first_y, r.last_y);
+          const int x = random.integer(r.min.x, r.max.x), y = random.integer(r.min.y, r.max.y);
           for (const int lanes : {4, 8}) {
             for (const LaneWidth width : {LaneWidth::bits32, LaneWidth::bits64}) {
               if (width == LaneWidth::bits32 && !tri::ch08::fits_32_bit_lanes(setup)) continue;
@@ -28,7 +27,7 @@ TEST_CASE("Every lane of the lane test agrees with direct evaluation, in 32 and 
               for (int lane = 0; lane < 8; ++lane) {
                 INFO("triangle " << i << " pixel " << x + lane << "," << y << " of " << lanes);
                 const bool expected =
-                    lane < lanes && x + lane <= r.last_x && setup.covers(x + lane, y);
+                    lane < lanes && x + lane <= r.max.x && setup.covers(x + lane, y);
                 REQUIRE(result[lane] == expected);
               }
             }
@@ -57,8 +56,8 @@ TEST_CASE("32-bit lanes are chosen only when every value the lanes form fits in 
     const auto setup = tri::ch08::setup_triangle(t, 4096, 4096);
     if (!setup || !tri::ch08::fits_32_bit_lanes(*setup)) continue;
     ++chosen;
-    const std::int64_t columns = setup->range.last_x - setup->range.first_x + 7;
-    const std::int64_t rows = setup->range.last_y - setup->range.first_y + 1;
+    const std::int64_t columns = setup->range.max.x - setup->range.min.x + 7;
+    const std::int64_t rows = setup->range.max.y - setup->range.min.y + 1;
     for (const auto& edge : setup->edges) {
       for (const std::int64_t dx : {std::int64_t{0}, columns}) {
         for (const std::int64_t dy : {std::int64_t{0}, rows}) {

@@ -6,11 +6,11 @@ namespace tri::ch08 {
 
 // [listing row_span]
 RowSpan row_span(const TriangleSetup& setup, int y) noexcept {
-  const ch07::PixelRange& r = setup.range;
-  if (y < r.first_y || y > r.last_y) return {r.first_x, r.first_x - 1};
-  std::int64_t first = 0, last = r.last_x - r.first_x;
+  const ch05::PixelBox& r = setup.range;
+  if (y < r.min.y || y > r.max.y) return {r.min.x, r.min.x - 1};
+  std::int64_t first = 0, last = r.max.x - r.min.x;
   for (const EdgeFunction& edge : setup.edges) {
-    const std::int64_t w = edge.at(0, y - r.first_y);
+    const std::int64_t w = edge.at(0, y - r.min.y);
     if (edge.step_x > 0) {
       first = std::max(first, -floor_div(w, edge.step_x));
     } else if (edge.step_x < 0) {
@@ -19,8 +19,8 @@ RowSpan row_span(const TriangleSetup& setup, int y) noexcept {
       last = -1;
     }
   }
-  if (first > last) return {r.first_x, r.first_x - 1};
-  return {r.first_x + static_cast<int>(first), r.first_x + static_cast<int>(last)};
+  if (first > last) return {r.min.x, r.min.x - 1};
+  return {r.min.x + static_cast<int>(first), r.min.x + static_cast<int>(last)};
 }
 // [/listing]
 
@@ -32,10 +32,10 @@ constexpr std::int64_t never_binding_right = std::int64_t{1} << 62;
 }  // namespace
 
 SpanWalker::SpanWalker(const TriangleSetup& setup) noexcept
-    : first_x_(setup.range.first_x), last_dx_(setup.range.last_x - setup.range.first_x) {
-  const ch07::PixelRange& r = setup.range;
+    : first_x_(setup.range.min.x), last_dx_(setup.range.max.x - setup.range.min.x) {
+  const ch05::PixelBox& r = setup.range;
   // Rows (offsets from first_y) where every horizontal edge passes: w + step_y * k >= 0.
-  std::int64_t first_k = 0, last_k = r.last_y - r.first_y;
+  std::int64_t first_k = 0, last_k = r.max.y - r.min.y;
   for (const EdgeFunction& e : setup.edges) {
     if (e.step_x != 0) continue;
     if (e.step_y > 0) {
@@ -47,12 +47,12 @@ SpanWalker::SpanWalker(const TriangleSetup& setup) noexcept
     }
   }
   if (first_k > last_k) {
-    first_row_ = r.first_y;
-    last_row_ = r.first_y - 1;
+    first_row_ = r.min.y;
+    last_row_ = r.min.y - 1;
     first_k = 0;
   } else {
-    first_row_ = r.first_y + static_cast<int>(first_k);
-    last_row_ = r.first_y + static_cast<int>(last_k);
+    first_row_ = r.min.y + static_cast<int>(first_k);
+    last_row_ = r.min.y + static_cast<int>(last_k);
   }
   // A slot with quotient 0 and no steps never binds: from the left it allows first >= 0, from
   // the right last <= 0 would, so an unused third slot counts as "from the left".

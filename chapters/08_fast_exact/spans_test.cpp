@@ -31,15 +31,15 @@ TEST_CASE("a row's span ends are exact: covered inside, uncovered just beyond, n
   tri::ch08::testing::for_each_random_setup(
       random, 3000, 40, 37, [&](int i, const tri::ch08::TriangleSetup& setup) {
         const auto& r = setup.range;
-        for (int y = r.first_y; y <= r.last_y; ++y) {
+        for (int y = r.min.y; y <= r.max.y; ++y) {
           const RowSpan span = tri::ch08::row_span(setup, y);
-          for (int x = r.first_x; x <= r.last_x; ++x) {
+          for (int x = r.min.x; x <= r.max.x; ++x) {
             INFO("triangle " << i << " pixel " << x << "," << y);
             REQUIRE(setup.covers(x, y) == (x >= span.first && x <= span.last));
           }
           if (!span.empty()) {
-            CHECK(span.first >= r.first_x);
-            CHECK(span.last <= r.last_x);
+            CHECK(span.first >= r.min.x);
+            CHECK(span.last <= r.max.x);
           }
         }
       });
@@ -49,7 +49,7 @@ TEST_CASE("a horizontal edge limits the rows the walker visits", "[08_fast_exact
   // A bottom edge exactly on row 3 is not top-left: the walker starts one row higher.
   const auto bottom = tri::ch08::setup_triangle({{{2, 3}, {12, 3}, {7, 9}}}, 16, 16);
   REQUIRE(bottom);
-  CHECK(bottom->range.first_y == 3);
+  CHECK(bottom->range.min.y == 3);
   const tri::ch08::SpanWalker from_above(*bottom);
   CHECK(from_above.first_row() == 4);
   CHECK(from_above.last_row() == 9);
@@ -67,7 +67,7 @@ TEST_CASE("The division-free walker gives the direct span on every row", "[08_fa
       random, 3000, 64, 61, [&](int i, const tri::ch08::TriangleSetup& setup) {
         tri::ch08::SpanWalker walker(setup);
         // Rows a horizontal edge excludes are skipped: their direct spans are empty.
-        for (int y = setup.range.first_y; y <= setup.range.last_y; ++y) {
+        for (int y = setup.range.min.y; y <= setup.range.max.y; ++y) {
           if (y < walker.first_row() || y > walker.last_row()) {
             INFO("triangle " << i << " row " << y << " skipped");
             REQUIRE(tri::ch08::row_span(setup, y).empty());
@@ -96,8 +96,7 @@ TEST_CASE("a sliver costs its rows: one short span per row instead of its boundi
     const RowSpan s = walker.span();
     if (!s.empty()) pixels += s.last - s.first + 1;
     CHECK(s.last - s.first + 1 <= 2);
-    for (int x = setup->range.first_x; x <= setup->range.last_x; ++x)
-      covered += setup->covers(x, y);
+    for (int x = setup->range.min.x; x <= setup->range.max.x; ++x) covered += setup->covers(x, y);
   }
   CHECK(rows == 38);
   CHECK(pixels == covered);

@@ -39,7 +39,7 @@ bool touches_bands_of(const Triangle& triangle, int height, const Bands& bands,
 // [listing draw_bands]
 template <PixelWriter Writer>
 void draw_bands(Canvas& canvas, std::span<const SceneTriangle> triangles, int thread, int threads) {
-  const ch07::PixelRange whole{0, canvas.width() - 1, 0, canvas.height() - 1};
+  const ch05::PixelBox whole{{0, 0}, {canvas.width() - 1, canvas.height() - 1}};
   const Bands bands = bands_for(canvas.height(), threads);
   for (const SceneTriangle& triangle : triangles) {
     if (threads > 1 && !touches_bands_of(triangle.vertices, canvas.height(), bands, thread)) {
@@ -53,12 +53,12 @@ void draw_bands(Canvas& canvas, std::span<const SceneTriangle> triangles, int th
       continue;
     }
     // The first band of the triangle that belongs to this thread, then every threads-th one.
-    const int first_band = setup->range.first_y / bands.rows;
-    const int last_band = setup->range.last_y / bands.rows;
+    const int first_band = setup->range.min.y / bands.rows;
+    const int last_band = setup->range.max.y / bands.rows;
     for (int band = first_band + (thread - first_band % threads + threads) % threads;
          band <= last_band; band += threads) {
-      const ch07::PixelRange rows{whole.first_x, whole.last_x, band * bands.rows,
-                                  band * bands.rows + bands.rows - 1};
+      const ch05::PixelBox rows{{whole.min.x, band * bands.rows},
+                                {whole.max.x, band * bands.rows + bands.rows - 1}};
       if (const auto part = clip_setup(*setup, rows)) fill_hybrid(*part, writer);
     }
   }

@@ -38,14 +38,14 @@ EdgeFunction make_edge(SubpixelPoint a, SubpixelPoint b, std::int64_t origin_x,
 
 template <class Int>
 std::optional<TriangleSetup> setup(SubpixelPoint a, SubpixelPoint b, SubpixelPoint c,
-                                   const ch07::PixelRange& range) {
+                                   const ch05::PixelBox& range) {
   // Twice the signed area: zero covers nothing, negative is clockwise and gets turned around.
   const Int area = edge_function<Int>(a, b, c.x, c.y);
   if (area == 0) return std::nullopt;
   if (area < 0) std::swap(b, c);
-  TriangleSetup s{{make_edge<Int>(b, c, range.first_x, range.first_y),
-                   make_edge<Int>(c, a, range.first_x, range.first_y),
-                   make_edge<Int>(a, b, range.first_x, range.first_y)},
+  TriangleSetup s{{make_edge<Int>(b, c, range.min.x, range.min.y),
+                   make_edge<Int>(c, a, range.min.x, range.min.y),
+                   make_edge<Int>(a, b, range.min.x, range.min.y)},
                   range,
                   std::max(std::max({a.x, b.x, c.x}) - std::min({a.x, b.x, c.x}),
                            std::max({a.y, b.y, c.y}) - std::min({a.y, b.y, c.y}))};
@@ -60,7 +60,7 @@ std::optional<TriangleSetup> setup(SubpixelPoint a, SubpixelPoint b, SubpixelPoi
 }  // namespace
 
 bool TriangleSetup::covers(int x, int y) const noexcept {
-  const std::int64_t dx = x - range.first_x, dy = y - range.first_y;
+  const std::int64_t dx = x - range.min.x, dy = y - range.min.y;
   return edges[0].at(dx, dy) >= 0 && edges[1].at(dx, dy) >= 0 && edges[2].at(dx, dy) >= 0;
 }
 
@@ -70,7 +70,7 @@ std::optional<TriangleSetup> setup_triangle(const Triangle& triangle, int width,
   const SubpixelPoint a = snap_to_256ths(triangle[0]);
   const SubpixelPoint b = snap_to_256ths(triangle[1]);
   const SubpixelPoint c = snap_to_256ths(triangle[2]);
-  const ch07::PixelRange range = ch07::candidate_pixels(a, b, c, subpixel_bits, width, height);
+  const ch05::PixelBox range = ch07::candidate_pixels(a, b, c, subpixel_bits, width, height);
   if (range.empty()) return std::nullopt;
   if (ch07::fits_64_bit_edge_functions(a, b, c)) return setup<std::int64_t>(a, b, c, range);
   return setup<Int128>(a, b, c, range);
@@ -78,16 +78,15 @@ std::optional<TriangleSetup> setup_triangle(const Triangle& triangle, int width,
 // [/listing]
 
 std::optional<TriangleSetup> clip_setup(const TriangleSetup& setup,
-                                        const ch07::PixelRange& clip) noexcept {
-  const ch07::PixelRange& r = setup.range;
-  const ch07::PixelRange clipped{std::max(r.first_x, clip.first_x), std::min(r.last_x, clip.last_x),
-                                 std::max(r.first_y, clip.first_y),
-                                 std::min(r.last_y, clip.last_y)};
+                                        const ch05::PixelBox& clip) noexcept {
+  const ch05::PixelBox& r = setup.range;
+  const ch05::PixelBox clipped{{std::max(r.min.x, clip.min.x), std::max(r.min.y, clip.min.y)},
+                               {std::min(r.max.x, clip.max.x), std::min(r.max.y, clip.max.y)}};
   if (clipped.empty()) return std::nullopt;
   TriangleSetup s = setup;
   s.range = clipped;
   for (EdgeFunction& edge : s.edges) {
-    edge.value = edge.at(clipped.first_x - r.first_x, clipped.first_y - r.first_y);
+    edge.value = edge.at(clipped.min.x - r.min.x, clipped.min.y - r.min.y);
   }
   return s;
 }

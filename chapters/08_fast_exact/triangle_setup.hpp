@@ -62,11 +62,11 @@ struct EdgeFunction {
 };
 
 /// A triangle ready to rasterize: its three edges and the candidate pixels (chapter 07's
-/// candidate_pixels, possibly clipped further). The edges' origin is (range.first_x,
-/// range.first_y); the range is never empty.
+/// candidate_pixels, possibly clipped further). The edges' origin is (range.min.x,
+/// range.min.y); the range is never empty.
 struct TriangleSetup {
   std::array<EdgeFunction, 3> edges;
-  ch07::PixelRange range;
+  ch05::PixelBox range;
   /// The longer side of the snapped vertices' bounding box, in 1/256 pixel: bounds every edge
   /// value near the triangle (step 5 uses it to choose 32-bit lanes).
   std::int64_t vertex_extent;
@@ -88,6 +88,6 @@ std::optional<TriangleSetup> setup_triangle(const Triangle& triangle, int width,
 /// range shrinks and the origin moves, so edge values change by whole steps. Empty when the
 /// two do not overlap. This is how the threaded variant gives each thread its rows.
 std::optional<TriangleSetup> clip_setup(const TriangleSetup& setup,
-                                        const ch07::PixelRange& clip) noexcept;
+                                        const ch05::PixelBox& clip) noexcept;
 
 }  // namespace tri::ch08

@@ -18,8 +18,8 @@ namespace {
 PixelSet covered_by(const std::optional<TriangleSetup>& setup) {
   PixelSet pixels;
   if (!setup) return pixels;
-  for (int y = setup->range.first_y; y <= setup->range.last_y; ++y) {
-    for (int x = setup->range.first_x; x <= setup->range.last_x; ++x) {
+  for (int y = setup->range.min.y; y <= setup->range.max.y; ++y) {
+    for (int x = setup->range.min.x; x <= setup->range.max.x; ++x) {
       if (setup->covers(x, y)) pixels.emplace(x, y);
     }
   }
@@ -150,19 +150,19 @@ TEST_CASE("Clipping a setup keeps exactly its pixels inside the clip",
   tri::ch08::testing::for_each_random_setup(
       random, 500, 32, 32, [&](int, const tri::ch08::TriangleSetup& setup) {
         const int x0 = random.integer(0, 31), y0 = random.integer(0, 31);
-        const tri::ch07::PixelRange clip{x0, random.integer(x0, 31), y0, random.integer(y0, 31)};
+        const tri::ch05::PixelBox clip{{x0, y0}, {random.integer(x0, 31), random.integer(y0, 31)}};
         PixelSet expected;
         for (const auto& p : covered_by(setup)) {
-          if (p.first >= clip.first_x && p.first <= clip.last_x && p.second >= clip.first_y &&
-              p.second <= clip.last_y) {
+          if (p.first >= clip.min.x && p.first <= clip.max.x && p.second >= clip.min.y &&
+              p.second <= clip.max.y) {
             expected.insert(p);
           }
         }
         const auto clipped = tri::ch08::clip_setup(setup, clip);
         REQUIRE(covered_by(clipped) == expected);
         if (clipped) {
-          CHECK(clipped->range.first_x >= clip.first_x);
-          CHECK(clipped->range.last_y <= clip.last_y);
+          CHECK(clipped->range.min.x >= clip.min.x);
+          CHECK(clipped->range.max.y <= clip.max.y);
         }
       });
 }
