@@ -3,19 +3,26 @@
   const pause = (ms) => new Promise((resolve) => setTimeout(resolve, ms));
   const images = () => [...document.images];
   const objects = () => [...document.querySelectorAll('object[data]')];
-  // The load event already waited for images; this only covers late additions, for 5 s at most.
-  for (let i = 0; i < 50 && images().some((image) => !image.complete); ++i) await pause(100);
-  // An embedded SVG's document can still be parsing on a busy machine: give it the same 5 s. A
+  // The load event already waited for images; this only covers late additions. The wait ends as
+  // soon as everything settled; its 20 s bound only matters on a machine busy with other tests
+  // (5 s once let a 67 kB figure of chapter 08 be reported as broken) and stays below the 30 s
+  // the checker gives this script.
+  const settleSteps = 200;
+  for (let i = 0; i < settleSteps && images().some((image) => !image.complete); ++i) {
+    await pause(100);
+  }
+  // An embedded SVG's document can still be parsing on a busy machine: give it the same bound. A
   // figure that failed to load is recorded by record_failed_loads.js and is not waited for.
   const svgReady = (object) => object.contentDocument !== null &&
       object.contentDocument.documentElement !== null &&
       object.contentDocument.documentElement.localName === 'svg';
   const pending = () => objects().filter(
       (object) => !svgReady(object) && !(window.__siteCheckFailedLoads || []).includes(object.data));
-  for (let i = 0; i < 50 && pending().length > 0; ++i) await pause(100);
+  for (let i = 0; i < settleSteps && pending().length > 0; ++i) await pause(100);
   // Doxygen builds the visible tree from NAVTREE once the document is ready.
   const hasTree = typeof NAVTREE !== 'undefined';
-  for (let i = 0; i < 50 && hasTree && !document.querySelector('#nav-tree-contents a'); ++i) {
+  const treeShown = () => document.querySelector('#nav-tree-contents a') !== null;
+  for (let i = 0; i < settleSteps && hasTree && !treeShown(); ++i) {
     await pause(100);
   }
   const failed = window.__siteCheckFailedLoads || [];
