@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <thread>
 
 namespace tri {
 namespace {
@@ -11,13 +10,6 @@ namespace {
 // Wall time on steady_clock: the one clock that also times threaded variants and external peers;
 // a shared machine's noise is met by interleaved rounds and the median instead.
 using Clock = std::chrono::steady_clock;
-
-void fill_rows(Canvas& canvas, int first_row, int end_row, Color color) {
-  for (int y = first_row; y < end_row; ++y) {
-    const auto row = canvas.row(y);
-    std::fill(row.begin(), row.end(), color);
-  }
-}
 
 }  // namespace
 
@@ -79,31 +71,6 @@ std::vector<Timing> time_interleaved(std::span<const std::function<void()>> runs
 Timing time_runs(const std::function<void()>& run, const TimingPlan& plan) {
   return time_interleaved(std::span(&run, 1), plan).front();
 }
-
-// [listing time_canvas_fill]
-Timing time_canvas_fill(Canvas& canvas, int threads, const TimingPlan& plan) {
-  std::uint8_t shade = 0;
-  const auto next_color = [&shade] {
-    ++shade;
-    return Color{shade, static_cast<std::uint8_t>(255 - shade), 128, 255};
-  };
-  if (threads <= 1) return time_runs([&] { canvas.clear(next_color()); }, plan);
-  const int bands = std::min(threads, canvas.height());
-  return time_runs(
-      [&] {
-        const Color color = next_color();
-        std::vector<std::jthread> workers;
-        workers.reserve(static_cast<std::size_t>(bands));
-        for (int band = 0; band < bands; ++band) {
-          const int first = canvas.height() * band / bands;
-          const int end = canvas.height() * (band + 1) / bands;
-          workers.emplace_back(
-              [&canvas, first, end, color] { fill_rows(canvas, first, end, color); });
-        }
-      },
-      plan);
-}
-// [/listing]
 
 double mpix_per_second(double pixels, double seconds) noexcept {
   return seconds > 0 ? pixels / seconds / 1e6 : 0.0;

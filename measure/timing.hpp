@@ -9,7 +9,6 @@
 #include <span>
 #include <vector>
 
-#include "common/canvas.hpp"
 #include "measure/statistics.hpp"
 
 namespace tri {
@@ -50,11 +49,6 @@ std::vector<Timing> time_interleaved(std::span<const std::function<void()>> runs
 /// speed (with 20% to spare), at least double, at most max_repetitions.
 int next_repetitions(int repetitions, double elapsed_seconds, double target_seconds,
                      int max_repetitions) noexcept;
-
-/// Times filling every pixel of the canvas with std::fill, in `threads` threads splitting the
-/// rows (1: Canvas::clear, which is one std::fill over the pixels; counting must be off).
-/// The colour changes with every run so no fill repeats the previous one.
-Timing time_canvas_fill(Canvas& canvas, int threads, const TimingPlan& plan);
 
 /// Millions of pixels per second: pixels / seconds / 1e6, or 0 when no time was measured.
 double mpix_per_second(double pixels, double seconds) noexcept;

@@ -8,7 +8,6 @@
 
 #include "measure/timing.hpp"
 
-using tri::Canvas;
 using tri::next_repetitions;
 using tri::Timing;
 using tri::TimingPlan;
@@ -70,19 +69,6 @@ TEST_CASE("Interleaved timing warms up and calibrates each run, then samples the
     CHECK(timing.samples == 3);
     CHECK(timing.seconds.min <= timing.seconds.median);
     CHECK(timing.seconds.median <= timing.seconds.max);
-  }
-}
-
-TEST_CASE("The fill ceiling fills every pixel of the canvas, in one thread or several",
-          "[measure][timing]") {
-  for (const int threads : {1, 3, 64}) {
-    Canvas canvas(7, 5, tri::colors::black);
-    tri::time_canvas_fill(canvas, threads, TimingPlan{0.0, 2, 1});
-    const auto pixels = canvas.pixels();
-    CHECK(pixels.front() != tri::colors::black);
-    CHECK(std::all_of(pixels.begin(), pixels.end(),
-                      [&](tri::Color c) { return c == pixels.front(); }));
-    CHECK(canvas.outside_writes() == 0);
   }
 }
 

@@ -1,6 +1,7 @@
 // Chapter 08's speed table: the chapter's variants, chapter 07's fixed_point_8 and chapter 06's
-// barycentric_double on the scenes the chapter's targets name, beside the std::fill rate of the
-// same canvas measured in the same rounds. Timed with the book's one method (measure/timing.hpp,
+// barycentric_double on the scenes the chapter's targets name, beside the write ceiling of the
+// same canvas (the faster of memset and vector stores, measure/fill_ceiling.hpp) measured in the
+// same rounds. Timed with the book's one method (measure/timing.hpp,
 // docs/DESIGN.md section 8): warm-up, calibrated repetitions, interleaved rounds, median and
 // spread on the steady clock.
 #include <algorithm>
@@ -23,6 +24,7 @@
 #include "common/cli.hpp"
 #include "common/printable_text.hpp"
 #include "common/progress.hpp"
+#include "measure/fill_ceiling.hpp"
 #include "measure/registry.hpp"
 #include "measure/render_scene.hpp"
 #include "measure/scene_generators.hpp"
@@ -36,7 +38,8 @@ using tri::Timing;
 using tri::TimingPlan;
 using tri::TriangleAlgorithm;
 
-constexpr int canvas_side = 512;
+constexpr int canvas_side = 512;        // every scene's canvas but the one large-canvas scene
+constexpr int large_canvas_side = 4096;  // 64 MiB of pixels: far beyond any cache
 constexpr double min_sample_seconds = 0.03;  // one sample of a variant: about 30 ms of draws
 
 // What the command line asks for, checked before anything is measured.
@@ -51,14 +54,15 @@ struct Options {
 
 struct BenchScene {
   std::string name;
+  int side = canvas_side;  // the square canvas it is drawn on
   std::vector<SceneTriangle> triangles;
 };
 
-// The scene a recipe describes on the benchmark's canvas, every vertex on the 1/256 grid.
-BenchScene bench_scene(std::string name, tri::SceneRecipe recipe) {
-  recipe.width = recipe.height = canvas_side;
+// The scene a recipe describes on a square canvas, every vertex on the 1/256 grid.
+BenchScene bench_scene(std::string name, tri::SceneRecipe recipe, int side = canvas_side) {
+  recipe.width = recipe.height = side;
   recipe.grid_bits = 8;
-  return {std::move(name), tri::scene_triangles(tri::generate_scene(recipe))};
+  return {std::move(name), side, tri::scene_triangles(tri::generate_scene(recipe))};
 }
 
 tri::SceneRecipe random_recipe(int triangles, double min_extent, double max_extent,
@@ -77,6 +81,11 @@ std::vector<BenchScene> bench_scenes() {
   tri::SceneRecipe large = random_recipe(200, 255, 255, 1);
   large.min_area = 10000;
   scenes.push_back(bench_scene("large (area >= 10000)", large));
+  // The same kind of scene scaled 8x, on a canvas that no cache holds.
+  tri::SceneRecipe large_canvas = random_recipe(200, 2040, 2040, 5);
+  large_canvas.min_area = 640000;
+  scenes.push_back(bench_scene("large on 4096x4096 (area >= 640000)", large_canvas,
+                               large_canvas_side));
   tri::SceneRecipe tiny = random_recipe(100000, 3, 3, 2);
   tiny.min_area = 1;
   tiny.max_area = 10;
@@ -159,28 +168,21 @@ std::vector<const TriangleAlgorithm*> selected(const std::vector<TriangleAlgorit
   tri::draw_triangles(algorithm, canvas, triangles);
 }
 
-std::uint64_t covered_pixels(const TriangleAlgorithm& algorithm,
-                             const std::vector<SceneTriangle>& triangles) {
-  Canvas canvas(canvas_side, canvas_side);
+std::uint64_t covered_pixels(const TriangleAlgorithm& algorithm, const BenchScene& scene) {
+  Canvas canvas(scene.side, scene.side);
   canvas.enable_write_counts();
-  tri::draw_triangles(algorithm, canvas, triangles);
+  tri::draw_triangles(algorithm, canvas, scene.triangles);
   const auto counts = canvas.write_counts();
   return std::accumulate(counts.begin(), counts.end(), std::uint64_t{0});
 }
 
-// What one scene's rounds time: the two fills first, then one draw per algorithm.
+// What one scene's rounds time: the ceiling's two fills first, then one draw per algorithm.
 std::vector<std::function<void()>> scene_runs(const BenchScene& scene,
                                               const std::vector<const TriangleAlgorithm*>& timed,
                                               Canvas& canvas) {
-  static constexpr std::array<std::uint32_t, 8> words{};
   std::vector<std::function<void()>> runs;
-  // std::fill over the canvas's Color pixels (what Canvas::clear does, and what the targets
-  // name) and this chapter's fill_pixels over the same memory.
-  runs.emplace_back([&canvas] { canvas.clear(tri::Color{1, 2, 3, 255}); });
-  runs.emplace_back([&canvas] {
-    for (int y = 0; y < canvas.height(); ++y)
-      tri::ch08::fill_pixels(canvas.row(y).data(), canvas.width(), words);
-  });
+  for (const tri::CeilingFill fill : tri::ceiling_fills)
+    runs.push_back(tri::ceiling_fill_run(canvas, fill, 1));
   for (const TriangleAlgorithm* algorithm : timed) {
     runs.emplace_back(
         [&canvas, &scene, algorithm] { timed_draw(*algorithm, canvas, scene.triangles); });
@@ -212,7 +214,7 @@ std::vector<Timing> time_scene(const BenchScene& scene,
 
 void print_table_header(std::ostream& out) {
   out << "| scene | algorithm | Mtriangles/s | Mpixels/s | × `barycentric_double` "
-         "| % of `std::fill` | ms per draw: median (min-max) |\n"
+         "| % of ceiling | ms per draw: median (min-max) |\n"
          "|---|---|---:|---:|---:|---:|---:|\n";
 }
 
@@ -223,16 +225,17 @@ std::string milliseconds(const tri::Spread& seconds) {
   return text.str();
 }
 
-// The rows of one scene: the two fills' rates, then one row per algorithm. timings holds the
+// The rows of one scene: the ceiling's two fills, then one row per algorithm. timings holds the
 // fills first, as scene_runs made them.
 void print_scene_rows(const BenchScene& scene, const std::vector<const TriangleAlgorithm*>& timed,
                       const std::vector<Timing>& timings, std::ostream& out) {
-  constexpr double pixels_per_canvas = static_cast<double>(canvas_side) * canvas_side;
-  const double std_fill_rate = tri::mpix_per_second(pixels_per_canvas, timings[0].seconds.median);
-  const double wide_fill_rate = tri::mpix_per_second(pixels_per_canvas, timings[1].seconds.median);
-  out << "| " << scene.name << " | (`std::fill`; `fill_pixels`) | | " << std::fixed
-      << std::setprecision(0) << std_fill_rate << "; " << wide_fill_rate << " | | 100 | "
-      << milliseconds(timings[0].seconds) << "; " << milliseconds(timings[1].seconds) << " |\n";
+  const double pixels_per_canvas = static_cast<double>(scene.side) * scene.side;
+  const tri::FillCeiling ceiling =
+      tri::fill_ceiling_of(pixels_per_canvas, timings[0], timings[1]);
+  out << "| " << scene.name << " | (ceiling: `memset`; vector stores) | | " << std::fixed
+      << std::setprecision(0) << ceiling.memset_mpix_per_s << "; "
+      << ceiling.vector_stores_mpix_per_s << " | | 100 | " << milliseconds(timings[0].seconds)
+      << "; " << milliseconds(timings[1].seconds) << " |\n";
   double baseline = 0;
   const double triangles = static_cast<double>(scene.triangles.size());
   for (std::size_t i = 0; i < timed.size(); ++i) {
@@ -240,19 +243,20 @@ void print_scene_rows(const BenchScene& scene, const std::vector<const TriangleA
     const tri::Spread& seconds = timings[i + 2].seconds;
     if (algorithm.name == "barycentric_double") baseline = seconds.median;
     const double pixel_rate = tri::mpix_per_second(
-        static_cast<double>(covered_pixels(algorithm, scene.triangles)), seconds.median);
+        static_cast<double>(covered_pixels(algorithm, scene)), seconds.median);
     out << "|  | `" << algorithm.name << "`" << (algorithm.threaded ? " (threads)" : "") << " | "
         << std::defaultfloat << std::setprecision(3) << triangles / seconds.median / 1e6 << " | "
         << std::fixed << std::setprecision(0) << pixel_rate << " | ";
     if (baseline > 0) out << std::setprecision(1) << baseline / seconds.median;
-    out << " | " << std::setprecision(0) << 100 * pixel_rate / std_fill_rate << " | "
+    out << " | " << std::setprecision(0) << 100 * pixel_rate / ceiling.mpix_per_s() << " | "
         << milliseconds(seconds) << " |\n";
   }
   out.flush();
 }
 
 void benchmark_scene(const BenchScene& scene, const std::vector<const TriangleAlgorithm*>& timed,
-                     const Options& options, Canvas& canvas, std::ostream& out) {
+                     const Options& options, std::ostream& out) {
+  Canvas canvas(scene.side, scene.side);
   const TimingPlan plan = timing_plan(options);
   const std::vector<std::function<void()>> runs = scene_runs(scene, timed, canvas);
   refuse_absurd_scene(scene, runs, plan, options.force);
@@ -360,16 +364,17 @@ int run(const tri::CliArguments& args, std::ostream& out) {
   const std::vector<BenchScene> scenes = bench_scenes();
   const Options options = options_from(args, algorithms, scenes);
   const std::vector<const TriangleAlgorithm*> timed = selected(algorithms, options);
-  Canvas canvas(canvas_side, canvas_side);
   bool header_written = false;  // written with the first rows, so a refused run prints no table
   for (const BenchScene& scene : scenes) {
     if (options.probes || scene.name.find(options.scene_filter) == std::string::npos) continue;
     if (!header_written) print_table_header(out);
     header_written = true;
-    benchmark_scene(scene, timed, options, canvas, out);
+    benchmark_scene(scene, timed, options, out);
   }
-  if (options.scene_filter.empty() || options.probes)
+  if (options.scene_filter.empty() || options.probes) {
+    Canvas canvas(canvas_side, canvas_side);
     print_probes(scenes.front(), canvas, options, out);
+  }
   return 0;
 }
 
@@ -379,7 +384,8 @@ int main(int argc, char** argv) {
   const tri::CommandLine command_line(
       "08_fast_exact_bench",
       "Times chapter 08's variants (and fixed_point_8, barycentric_double) on large, tiny, mesh,\n"
-      "mixed and sliver scenes of a 512x512 canvas, beside the std::fill rate of that canvas,\n"
+      "mixed and sliver scenes of a 512x512 canvas and on large triangles of a 4096x4096 one,\n"
+      "beside the write ceiling of the canvas (the faster of memset and vector stores),\n"
       "all in interleaved rounds on the steady clock. Prints a Markdown table of medians with\n"
       "their spread. Build in Release; run on an otherwise idle machine.",
       {{"repeats", "N", "timed rounds per measurement, the median is printed (default 7)"},

@@ -93,7 +93,7 @@ int main(int argc, char** argv) {
   const tri::CommandLine command_line(
       "09_speed_vs_error",
       "Chapter 09, speed against error: draws the same scene suites with every registered\n"
-      "algorithm, times them (warm-up, median of repeated samples, beside a std::fill ceiling)\n"
+      "algorithm, times them (warm-up, median of repeated samples, beside the write ceiling)\n"
       "and measures their error against the exact oracle; then chapter 10's coverage algorithms\n"
       "against the exact area. Writes 09_report.csv and 09_coverage.csv (every measurement),\n"
       "09_report.md (one row per algorithm, both parts, the machine), 09_speed_vs_error.svg and\n"

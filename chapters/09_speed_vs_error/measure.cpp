@@ -26,16 +26,12 @@ PreparedScene prepare_scene(const SuiteScene& suite, std::size_t error_triangle_
 
 FillCeilings measure_fill_ceilings(int width, int height, int threads, const TimingPlan& plan) {
   Canvas canvas(width, height);
-  const double pixels = static_cast<double>(width) * height;
   FillCeilings ceilings;
   ceilings.threads = std::max(1, threads);
-  ceilings.single_thread_mpix_per_s =
-      mpix_per_second(pixels, time_canvas_fill(canvas, 1, plan).seconds.median);
-  ceilings.threads_mpix_per_s =
-      ceilings.threads == 1
-          ? ceilings.single_thread_mpix_per_s
-          : mpix_per_second(pixels,
-                            time_canvas_fill(canvas, ceilings.threads, plan).seconds.median);
+  ceilings.one_thread = measure_fill_ceiling(canvas, 1, plan);
+  ceilings.all_threads = ceilings.threads == 1
+                             ? ceilings.one_thread
+                             : measure_fill_ceiling(canvas, ceilings.threads, plan);
   return ceilings;
 }
 
@@ -75,7 +71,7 @@ Measurement row_for(std::string_view name, std::string_view chapter, std::string
   m.height = prepared.scene.height;
   m.triangles = prepared.triangles.size();
   m.fill_ceiling_mpix_per_s =
-      threaded ? ceilings.threaded_mpix_per_s() : ceilings.single_thread_mpix_per_s;
+      threaded ? ceilings.threaded_mpix_per_s() : ceilings.single_thread_mpix_per_s();
   m.error_triangles = count_triangles(prepared.error_scene);
   return m;
 }
@@ -130,6 +126,16 @@ double median_of(std::vector<double> values) {
   return values.empty() ? 0.0 : spread_of(std::move(values)).median;
 }
 
+// The median of each fill's rate over the scenes' ceilings.
+FillCeiling median_ceiling(const std::vector<FillCeiling>& ceilings) {
+  std::vector<double> memset, stores;
+  for (const FillCeiling& c : ceilings) {
+    memset.push_back(c.memset_mpix_per_s);
+    stores.push_back(c.vector_stores_mpix_per_s);
+  }
+  return {median_of(std::move(memset)), median_of(std::move(stores))};
+}
+
 std::string progress_line(std::size_t done, std::size_t total, const Measurement& m,
                           double elapsed_seconds) {
   char line[256];
@@ -150,7 +156,11 @@ BenchReport run_benchmark(std::span<const TriangleAlgorithm> algorithms,
   report.error_triangle_limit = settings.error_triangle_limit;
   const auto start = std::chrono::steady_clock::now();
   const std::size_t total = settings.scenes.size() * (algorithms.size() + peers.size());
-  std::vector<double> single_ceilings, threaded_ceilings;
+  for (const int side : settings.reference_canvas_sides) {
+    Canvas canvas(side, side);
+    report.reference_ceilings.push_back({side, measure_fill_ceiling(canvas, 1, settings.timing)});
+  }
+  std::vector<FillCeiling> single_ceilings, threaded_ceilings;
   for (const SuiteScene& suite : settings.scenes) {
     const PreparedScene prepared = prepare_scene(suite, settings.error_triangle_limit);
     report.width = prepared.scene.width;
@@ -158,8 +168,8 @@ BenchReport run_benchmark(std::span<const TriangleAlgorithm> algorithms,
     const FillCeilings ceilings =
         measure_fill_ceilings(prepared.scene.width, prepared.scene.height,
                               static_cast<int>(std::max(1u, machine.threads)), settings.timing);
-    single_ceilings.push_back(ceilings.single_thread_mpix_per_s);
-    threaded_ceilings.push_back(ceilings.threads_mpix_per_s);
+    single_ceilings.push_back(ceilings.one_thread);
+    threaded_ceilings.push_back(ceilings.all_threads);
     report.ceilings.threads = ceilings.threads;
     const auto record = [&](Measurement row) {
       report.rows.push_back(std::move(row));
@@ -176,8 +186,8 @@ BenchReport run_benchmark(std::span<const TriangleAlgorithm> algorithms,
     for (const ExternalPeer& peer : peers)
       record(measure(peer, prepared, settings.timing, ceilings));
   }
-  report.ceilings.single_thread_mpix_per_s = median_of(single_ceilings);
-  report.ceilings.threads_mpix_per_s = median_of(threaded_ceilings);
+  report.ceilings.one_thread = median_ceiling(single_ceilings);
+  report.ceilings.all_threads = median_ceiling(threaded_ceilings);
   return report;
 }
 

@@ -16,6 +16,7 @@
 #include "common/scene.hpp"
 #include "common/triangle_algorithm.hpp"
 #include "measure/error_metrics.hpp"
+#include "measure/fill_ceiling.hpp"
 #include "measure/timing.hpp"
 
 namespace tri::ch09 {
@@ -32,22 +33,30 @@ struct PreparedScene {
 /// error_triangle_limit triangles (all of them for 0).
 PreparedScene prepare_scene(const SuiteScene& suite, std::size_t error_triangle_limit);
 
-/// The std::fill ceilings of one canvas size, measured in the same run as the algorithms.
+/// The write ceilings of one canvas size (measure/fill_ceiling.hpp), measured in the same run as
+/// the algorithms: the faster of memset and vector stores, in one thread and in `threads`.
 struct FillCeilings {
-  double single_thread_mpix_per_s = 0;
+  FillCeiling one_thread;
   /// Filled by `threads` threads started for every fill, as a threaded algorithm starts them for
   /// every batch; on a small canvas starting them can cost more than the fill.
-  double threads_mpix_per_s = 0;
+  FillCeiling all_threads;
   int threads = 1;
 
-  /// The ceiling of a threaded algorithm: the faster of the two fills (it could use one thread).
+  double single_thread_mpix_per_s() const noexcept { return one_thread.mpix_per_s(); }
+  /// The ceiling of a threaded algorithm: the faster of the two (it could use one thread).
   double threaded_mpix_per_s() const noexcept {
-    return std::max(single_thread_mpix_per_s, threads_mpix_per_s);
+    return std::max(one_thread.mpix_per_s(), all_threads.mpix_per_s());
   }
 };
 
-/// Times std::fill over a width x height canvas in one thread and in `threads` threads.
+/// Times the ceiling fills over a width x height canvas in one thread and in `threads` threads.
 FillCeilings measure_fill_ceilings(int width, int height, int threads, const TimingPlan& plan);
+
+/// The one-thread ceiling of a square canvas of another size than the suite's, for reference.
+struct SizedCeiling {
+  int side = 0;
+  FillCeiling one_thread;
+};
 
 /// One algorithm on one scene: a row of the CSV.
 struct Measurement {
@@ -124,7 +133,8 @@ struct BenchReport {
   int width = 0;  ///< canvas of the suite (every scene of a suite has the same)
   int height = 0;
   std::size_t error_triangle_limit = 0;
-  FillCeilings ceilings;          ///< medians over the scenes of the per-scene ceilings
+  FillCeilings ceilings;  ///< medians over the scenes of the per-scene ceilings
+  std::vector<SizedCeiling> reference_ceilings;  ///< settings.reference_canvas_sides, in order
   std::vector<Measurement> rows;  ///< scene by scene, every algorithm on each
 };
 

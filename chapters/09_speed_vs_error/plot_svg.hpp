@@ -1,7 +1,7 @@
 /// @file
 /// 09_speed_vs_error.svg, drawn by hand: error per covered pixel across (log, with "exact" at a
 /// floor), written Mpixels/s up (log), one labelled point per algorithm coloured by chapter,
-/// precision families joined by lines, the std::fill ceiling as a horizontal line.
+/// precision families joined by lines, the write ceiling as a horizontal line.
 #pragma once
 
 #include <span>

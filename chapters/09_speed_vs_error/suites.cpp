@@ -110,12 +110,15 @@ BenchSettings bench_settings(SuiteSize size) {
   switch (size) {
     case SuiteSize::tiny:
       settings.timing = {0.0, 1, 1};  // one run, one sample: the tests check the format only
+      settings.reference_canvas_sides = {64};
       break;
     case SuiteSize::quick:
       settings.timing = {0.01, 3, 1 << 20};
+      settings.reference_canvas_sides = {512, 4096};
       break;
     case SuiteSize::full:
       settings.timing = {0.02, 7, 1 << 22};
+      settings.reference_canvas_sides = {512, 4096};
       break;
   }
   return settings;

@@ -44,6 +44,8 @@ struct BenchSettings {
   TimingPlan timing;
   /// The error is measured on the first this many triangles of each scene (0: all of them).
   std::size_t error_triangle_limit = 0;
+  /// Square canvases whose one-thread write ceiling the report quotes beside the suite's.
+  std::vector<int> reference_canvas_sides;
 };
 
 /// The settings of a suite size.
