@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <optional>
 
 #include "chapters/07_exact_coverage/fixed_point.hpp"
 #include "chapters/08_fast_exact/incremental.hpp"
@@ -75,48 +76,36 @@ void for_each_block(const TriangleSetup& setup, Visit&& visit) {
 /// by block; each partial block goes to test_block(block); outside blocks to nobody.
 template <class FillRun, class TestBlock>
 void for_each_block_run(const TriangleSetup& setup, FillRun&& fill_run, TestBlock&& test_block) {
-  const ch05::PixelBox& r = setup.range;
-  for (int y = r.min.y; y <= r.max.y; y += block_size) {
-    const int last_y = y + block_size - 1 < r.max.y ? y + block_size - 1 : r.max.y;
-    int run_first_x = -1, run_last_x = -1;
-    for (int x = r.min.x; x <= r.max.x; x += block_size) {
-      const int last_x = x + block_size - 1 < r.max.x ? x + block_size - 1 : r.max.x;
-      const ch05::PixelBox block{{x, y}, {last_x, last_y}};
-      const BlockCoverage coverage = classify_block(setup, block);
-      if (coverage == BlockCoverage::inside) {
-        if (run_first_x < 0) run_first_x = x;
-        run_last_x = last_x;
-        continue;
+  std::optional<ch05::PixelBox> run;  // the inside blocks met since the last other block
+  const auto end_run = [&] {
+    if (run) fill_run(*run);
+    run.reset();
+  };
+  for_each_block(setup, [&](const ch05::PixelBox& block, BlockCoverage coverage) {
+    if (run && run->min.y != block.min.y) end_run();  // a new row of blocks
+    if (coverage == BlockCoverage::inside) {
+      if (run) {
+        run->max.x = block.max.x;
+      } else {
+        run = block;
       }
-      if (run_first_x >= 0) fill_run(ch05::PixelBox{{run_first_x, y}, {run_last_x, last_y}});
-      run_first_x = -1;
-      if (coverage == BlockCoverage::partial) test_block(block);
+      return;
     }
-    if (run_first_x >= 0) fill_run(ch05::PixelBox{{run_first_x, y}, {run_last_x, last_y}});
-  }
+    end_run();
+    if (coverage == BlockCoverage::partial) test_block(block);
+  });
+  end_run();
 }
 // [/listing]
 
-/// The pixels of a partial block, each tested with step 2's one-branch test on incrementally
-/// updated edge values; writer.pixel(x, y) for the covered ones.
+/// The pixels of a partial block, each tested with step 2's one-branch test on step 1's
+/// incrementally updated edge values; writer.pixel(x, y) for the covered ones.
 template <PixelWriter Writer>
 void fill_block_pixels(const TriangleSetup& setup, const ch05::PixelBox& block, Writer& writer) {
-  const std::int64_t dx = block.min.x - setup.range.min.x;
-  const std::int64_t dy = block.min.y - setup.range.min.y;
-  const auto& [e0, e1, e2] = setup.edges;
-  std::int64_t row0 = e0.at(dx, dy), row1 = e1.at(dx, dy), row2 = e2.at(dx, dy);
-  for (int y = block.min.y; y <= block.max.y; ++y) {
-    std::int64_t w0 = row0, w1 = row1, w2 = row2;
-    for (int x = block.min.x; x <= block.max.x; ++x) {
-      if (inside_all_edges(w0, w1, w2)) writer.pixel(x, y);
-      w0 += e0.step_x;
-      w1 += e1.step_x;
-      w2 += e2.step_x;
-    }
-    row0 += e0.step_y;
-    row1 += e1.step_y;
-    row2 += e2.step_y;
-  }
+  walk_incremental(setup, block,
+                   [&](int x, int y, std::int64_t w0, std::int64_t w1, std::int64_t w2) {
+                     if (inside_all_edges(w0, w1, w2)) writer.pixel(x, y);
+                   });
 }
 
 /// Step 4 · 8x8 blocks: skip the outside ones, fill runs of inside ones span by span, and test

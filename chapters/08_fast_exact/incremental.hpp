@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <utility>
 
 #include "chapters/08_fast_exact/triangle_setup.hpp"
 #include "common/canvas.hpp"
@@ -13,16 +14,17 @@
 namespace tri::ch08 {
 
 // [listing walk_incremental]
-/// Visits every pixel of the setup's range, row by row from the bottom, with the three edge
-/// values at that pixel: visit(x, y, w0, w1, w2). Each value is the one before plus a step, one
-/// addition per edge and pixel instead of chapter 07's two multiplications.
+/// Visits every pixel of a rectangle within the setup's range, row by row from the bottom, with
+/// the three edge values at that pixel: visit(x, y, w0, w1, w2). Each value is the one before
+/// plus a step, one addition per edge and pixel instead of chapter 07's two multiplications.
 template <class Visit>
-void walk_incremental(const TriangleSetup& setup, Visit&& visit) {
+void walk_incremental(const TriangleSetup& setup, const ch05::PixelBox& box, Visit&& visit) {
+  const std::int64_t dx = box.min.x - setup.range.min.x, dy = box.min.y - setup.range.min.y;
   const auto& [e0, e1, e2] = setup.edges;
-  std::int64_t row0 = e0.value, row1 = e1.value, row2 = e2.value;
-  for (int y = setup.range.min.y; y <= setup.range.max.y; ++y) {
+  std::int64_t row0 = e0.at(dx, dy), row1 = e1.at(dx, dy), row2 = e2.at(dx, dy);
+  for (int y = box.min.y; y <= box.max.y; ++y) {
     std::int64_t w0 = row0, w1 = row1, w2 = row2;
-    for (int x = setup.range.min.x; x <= setup.range.max.x; ++x) {
+    for (int x = box.min.x; x <= box.max.x; ++x) {
       visit(x, y, w0, w1, w2);
       w0 += e0.step_x;
       w1 += e1.step_x;
@@ -34,6 +36,12 @@ void walk_incremental(const TriangleSetup& setup, Visit&& visit) {
   }
 }
 // [/listing]
+
+/// walk_incremental over the setup's whole range: every candidate pixel of the triangle.
+template <class Visit>
+void walk_incremental(const TriangleSetup& setup, Visit&& visit) {
+  walk_incremental(setup, setup.range, std::forward<Visit>(visit));
+}
 
 /// Step 1 · incremental edge functions: chapter 07's rasterizer (same snapping, same bias, same
 /// candidate pixels) with walk_incremental, three comparisons per pixel.
