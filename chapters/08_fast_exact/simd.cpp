@@ -11,39 +11,11 @@ namespace {
 // Lanes as GCC's and Clang's generic vectors: each target lowers them to its own instructions
 // (SSE2 registers by default, AVX2/AVX-512 ones with -march=native, scalar code where there are
 // none). Plain std::array loops were vectorized by GCC 12 at -O2 but not at -O3 (README, step 5).
+// One template serves every lane type and width. It is a typedef: GCC ignores the attribute on a
+// `using` alias of a dependent type.
 template <class Lane, int N>
-struct VectorOf;
-template <>
-struct VectorOf<std::int32_t, 4> {
-  using type = std::int32_t __attribute__((vector_size(16)));
-};
-template <>
-struct VectorOf<std::int32_t, 8> {
-  using type = std::int32_t __attribute__((vector_size(32)));
-};
-template <>
-struct VectorOf<std::int64_t, 4> {
-  using type = std::int64_t __attribute__((vector_size(32)));
-};
-template <>
-struct VectorOf<std::int64_t, 8> {
-  using type = std::int64_t __attribute__((vector_size(64)));
-};
-template <>
-struct VectorOf<std::uint32_t, 4> {
-  using type = std::uint32_t __attribute__((vector_size(16)));
-};
-template <>
-struct VectorOf<std::uint32_t, 8> {
-  using type = std::uint32_t __attribute__((vector_size(32)));
-};
-template <>
-struct VectorOf<float, 4> {
-  using type = float __attribute__((vector_size(16)));
-};
-template <>
-struct VectorOf<float, 8> {
-  using type = float __attribute__((vector_size(32)));
+struct VectorOf {
+  typedef Lane type __attribute__((vector_size(N * sizeof(Lane))));
 };
 
 template <class Lane, int N>
