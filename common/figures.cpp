@@ -28,6 +28,20 @@ void FigureWriter::save_svg(std::string_view name, std::string_view svg) {
   save_text(std::string(name) + ".svg", svg);
 }
 
+std::string point_text(glm::ivec2 p) {
+  return "(" + std::to_string(p.x) + ", " + std::to_string(p.y) + ")";
+}
+
+std::vector<glm::ivec2> painted_pixels(const Canvas& canvas, Color color) {
+  std::vector<glm::ivec2> pixels;
+  for (int y = 0; y < canvas.height(); ++y) {
+    for (int x = 0; x < canvas.width(); ++x) {
+      if (canvas.pixel(x, y) == color) pixels.emplace_back(x, y);
+    }
+  }
+  return pixels;
+}
+
 Canvas magnified(const Canvas& canvas, int factor) {
   if (factor < 1) throw std::invalid_argument("magnification factor must be at least 1");
   Canvas big(canvas.width() * factor, canvas.height() * factor);

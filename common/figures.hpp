@@ -9,7 +9,10 @@
 #include <string_view>
 #include <vector>
 
+#include <glm/vec2.hpp>
+
 #include "common/canvas.hpp"
+#include "common/color.hpp"
 
 namespace tri {
 
@@ -29,6 +32,12 @@ class FigureWriter {
   std::filesystem::path folder_;
   std::ostream& log_;
 };
+
+/// "(x, y)": a pixel's coordinates as the figures' labels and notes write them.
+std::string point_text(glm::ivec2 p);
+
+/// The pixels of a canvas painted in `color`, bottom row first, left to right.
+std::vector<glm::ivec2> painted_pixels(const Canvas& canvas, Color color);
 
 /// A copy of the canvas with every pixel blown up to a factor×factor square, so single pixels
 /// are visible in the figures (factor >= 1).

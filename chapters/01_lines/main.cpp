@@ -14,6 +14,7 @@
 
 namespace {
 
+using tri::point_text;
 using tri::PixelDiagram;
 using tri::PixelMark;
 using tri::ch01::line_algorithms;
@@ -24,10 +25,6 @@ namespace dc = tri::diagram_colors;
 constexpr glm::ivec2 star_centre{32, 32};
 constexpr int star_radius = 30;
 constexpr int star_spoke_count = 24;
-
-std::string point_text(glm::ivec2 p) {
-  return "(" + std::to_string(p.x) + ", " + std::to_string(p.y) + ")";
-}
 
 // One tie step of the star: the two candidate pixels and which algorithms drew each.
 struct StarTie {

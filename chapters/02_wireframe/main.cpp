@@ -17,16 +17,13 @@
 
 namespace {
 
+using tri::point_text;
 using tri::Canvas;
 using tri::LabelPlace;
 using tri::PixelDiagram;
 using tri::PixelMark;
 using Vertices = std::array<glm::ivec2, 3>;
 namespace dc = tri::diagram_colors;
-
-std::string point_text(glm::ivec2 p) {
-  return "(" + std::to_string(p.x) + ", " + std::to_string(p.y) + ")";
-}
 
 std::size_t drawn_count(const Canvas& canvas, tri::Color background) {
   return static_cast<std::size_t>(std::count_if(canvas.pixels().begin(), canvas.pixels().end(),

@@ -17,6 +17,8 @@
 
 namespace {
 
+using tri::painted_pixels;
+using tri::point_text;
 using tri::Canvas;
 using tri::Color;
 using tri::LabelPlace;
@@ -44,21 +46,6 @@ glm::dvec2 at(glm::ivec2 p) {
   return glm::dvec2(p);
 }
 
-std::string point_text(glm::ivec2 p) {
-  return "(" + std::to_string(p.x) + ", " + std::to_string(p.y) + ")";
-}
-
-// The pixels of a canvas painted in `color`.
-std::vector<glm::ivec2> pixels_of(const Canvas& canvas, Color color) {
-  std::vector<glm::ivec2> out;
-  for (int y = 0; y < canvas.height(); ++y) {
-    for (int x = 0; x < canvas.width(); ++x) {
-      if (canvas.pixel(x, y) == color) out.emplace_back(x, y);
-    }
-  }
-  return out;
-}
-
 // Step 4: tinyrenderer's three triangles, a whole scene, with their ideal edges on top.
 tri::SvgFigure tinyrenderer_figure() {
   Canvas canvas(200, 200);
@@ -75,7 +62,8 @@ tri::SvgFigure tinyrenderer_figure() {
     d.triangle(at(a), at(b), at(c), dc::black, 1);
     d.legend_fill(std::string(tinyrenderer_names[i]) + " " + point_text(a) + " " + point_text(b) +
                       " " + point_text(c) + ": " +
-                      std::to_string(pixels_of(canvas, tinyrenderer_colors[i]).size()) + " pixels",
+                      std::to_string(painted_pixels(canvas, tinyrenderer_colors[i]).size()) +
+                      " pixels",
                   tinyrenderer_colors[i]);
   }
   d.legend_line("ideal triangle edges", dc::black);
@@ -207,9 +195,9 @@ void draw_slid_lines(PixelDiagram& d, const Vertices& v, Color color) {
 }
 
 void fill_comparison(PixelDiagram& d, const BugComparison& cmp) {
-  d.fill(pixels_of(cmp.both, marked), dc::covered);
-  d.fill(pixels_of(cmp.lost, marked), light_sky);
-  d.fill(pixels_of(cmp.extra, marked), dc::vermillion);
+  d.fill(painted_pixels(cmp.both, marked), dc::covered);
+  d.fill(painted_pixels(cmp.lost, marked), light_sky);
+  d.fill(painted_pixels(cmp.extra, marked), dc::vermillion);
 }
 
 tri::SvgFigure published_bug_figure() {
@@ -241,8 +229,8 @@ tri::SvgFigure published_bug_zoom_figure() {
   PixelDiagram d(zoom_first, zoom_last,
                  "Zoom on the third triangle: the published test tests against slid edges", 12);
   fill_comparison(d, cmp);
-  for (const auto p : pixels_of(cmp.extra, marked)) d.mark(p, PixelMark::cross, dc::black);
-  for (const auto p : pixels_of(cmp.both, marked)) d.mark(p, PixelMark::square, dc::black);
+  for (const auto p : painted_pixels(cmp.extra, marked)) d.mark(p, PixelMark::cross, dc::black);
+  for (const auto p : painted_pixels(cmp.both, marked)) d.mark(p, PixelMark::square, dc::black);
   d.triangle(at(v[0]), at(v[1]), at(v[2]), dc::black);
   draw_slid_lines(d, v, dc::purple);
   d.vertex(at(v[0]), "A", LabelPlace::below_left);
@@ -273,8 +261,8 @@ tri::SvgFigure zero_area_figure() {
   }
   PixelDiagram d({0, 0}, {23, 29}, "Zero-area triangles draw only the centres on their segment",
                  18);
-  d.fill(pixels_of(bresenham, marked), dc::light_gray);
-  d.fill(pixels_of(drawn, marked), dc::sky_blue);
+  d.fill(painted_pixels(bresenham, marked), dc::light_gray);
+  d.fill(painted_pixels(drawn, marked), dc::sky_blue);
   for (const auto& [a, b, c] : segments) d.line(at(a), at(c), dc::vermillion);
   d.vertex(at(segments[0][0]), "A", LabelPlace::above_right);
   d.vertex(at(segments[0][1]), "B", LabelPlace::below_right);

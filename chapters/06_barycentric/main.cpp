@@ -15,6 +15,8 @@
 
 namespace {
 
+using tri::painted_pixels;
+using tri::point_text;
 using tri::Canvas;
 using tri::Color;
 using tri::LabelPlace;
@@ -36,23 +38,8 @@ glm::dvec2 at(glm::ivec2 p) {
   return glm::dvec2(p);
 }
 
-std::string point_text(glm::ivec2 p) {
-  return "(" + std::to_string(p.x) + ", " + std::to_string(p.y) + ")";
-}
-
 std::string triangle_text(const PixelTriangle& t) {
   return point_text(t[0]) + " " + point_text(t[1]) + " " + point_text(t[2]);
-}
-
-// The pixels of a canvas painted in `color`.
-std::vector<glm::ivec2> pixels_of(const Canvas& canvas, Color color) {
-  std::vector<glm::ivec2> out;
-  for (int y = 0; y < canvas.height(); ++y) {
-    for (int x = 0; x < canvas.width(); ++x) {
-      if (canvas.pixel(x, y) == color) out.emplace_back(x, y);
-    }
-  }
-  return out;
 }
 
 // The pixels of a clamped bounding box.
@@ -88,7 +75,8 @@ tri::SvgFigure bounding_boxes_figure() {
                       " pixels tested",
                   box_colors[i]);
     d.legend_fill(std::string(tinyrenderer_names[i]) + " triangle: " +
-                      std::to_string(pixels_of(drawn, tinyrenderer_colors[i]).size()) + " drawn",
+                      std::to_string(painted_pixels(drawn, tinyrenderer_colors[i]).size()) +
+                      " drawn",
                   tinyrenderer_colors[i]);
   }
   d.fill_from(drawn, tri::colors::black);
@@ -113,7 +101,8 @@ tri::SvgFigure tinyrenderer_figure() {
     const auto& t = tinyrenderer_triangles[i].vertices;
     d.triangle(at(t[0]), at(t[1]), at(t[2]), dc::black, 1);
     d.legend_fill(std::string(tinyrenderer_names[i]) + " " + triangle_text(t) + ": " +
-                      std::to_string(pixels_of(canvas, tinyrenderer_colors[i]).size()) + " pixels",
+                      std::to_string(painted_pixels(canvas, tinyrenderer_colors[i]).size()) +
+                      " pixels",
                   tinyrenderer_colors[i]);
   }
   d.legend_line("ideal triangle edges", dc::black);
@@ -175,7 +164,7 @@ tri::SvgFigure zero_area_unguarded_figure() {
     tri::ch06::fill_triangle_barycentric_unguarded<double>(unguarded, t[0], t[1], t[2], marked);
     tri::ch06::fill_triangle_barycentric<double>(guarded, t[0], t[1], t[2], marked);
   }
-  const auto drawn = pixels_of(unguarded, marked);
+  const auto drawn = painted_pixels(unguarded, marked);
   d.fill(drawn, dc::vermillion);
   for (const auto p : drawn) d.mark(p, PixelMark::ring, dc::black);
   for (const auto& t : degenerate) {
@@ -200,9 +189,9 @@ tri::SvgFigure zero_area_unguarded_figure() {
   d.legend_fill("drawn without the guard", dc::vermillion);
   d.legend_mark("NaN weights: centre on the segment", PixelMark::ring);
   d.legend_line("the ideal segment (zero area)", dc::blue);
-  d.legend_note(
-      "Without the guard: " + std::to_string(drawn.size()) +
-      " pixels drawn. With the guard: " + std::to_string(pixels_of(guarded, marked).size()) + ".");
+  d.legend_note("Without the guard: " + std::to_string(drawn.size()) +
+                " pixels drawn. With the guard: " +
+                std::to_string(painted_pixels(guarded, marked).size()) + ".");
   return tri::SvgFigure{"06_zero_area_unguarded", d.svg()};
 }
 
@@ -265,7 +254,7 @@ tri::SvgFigure float_zero_area_far_away_figure() {
   const glm::ivec2 first(0, 0), last(31, 31);
   PixelDiagram d(first, last, "float draws a zero-area triangle whose vertices are 10^7 away", 18);
   std::vector<glm::ivec2> on_line, off_line;
-  for (const auto p : pixels_of(with_float, marked)) {
+  for (const auto p : painted_pixels(with_float, marked)) {
     // On the line through the vertices exactly when the integer cross product is 0.
     const glm::i64vec2 u = glm::i64vec2(t[1]) - glm::i64vec2(t[0]);
     const glm::i64vec2 v = glm::i64vec2(p) - glm::i64vec2(t[0]);
@@ -285,7 +274,8 @@ tri::SvgFigure float_zero_area_far_away_figure() {
   d.legend_note("A " + point_text(t[0]) + " and B " + point_text(t[1]) +
                 " lie far off the canvas.");
   d.legend_note("float draws " + std::to_string(on_line.size() + off_line.size()) +
-                " pixels, double " + std::to_string(pixels_of(with_double, marked).size()) + ".");
+                " pixels, double " + std::to_string(painted_pixels(with_double, marked).size()) +
+                ".");
   return tri::SvgFigure{"06_float_zero_area_far_away", d.svg()};
 }
 
