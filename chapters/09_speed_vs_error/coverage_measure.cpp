@@ -15,16 +15,8 @@ namespace {
 CoverageMeasurement row_for(std::string_view name, std::string_view chapter, std::string_view rule,
                             int samples, const PreparedScene& prepared) {
   CoverageMeasurement m;
-  m.algorithm = name;
-  m.chapter = chapter;
-  m.rule = rule;
+  static_cast<RowIdentity&>(m) = row_identity(name, chapter, rule, prepared);
   m.samples = samples;
-  m.scene = prepared.suite.name;
-  m.grid = prepared.suite.grid;
-  m.mesh = prepared.suite.mesh;
-  m.width = prepared.scene.width;
-  m.height = prepared.scene.height;
-  m.triangles = prepared.triangles.size();
   return m;
 }
 

@@ -18,17 +18,9 @@
 namespace tri::ch09 {
 
 /// One coverage algorithm or peer on one scene: a row of 09_coverage.csv.
-struct CoverageMeasurement {
-  std::string algorithm;
-  std::string chapter;  ///< "10_coverage" or "external"
-  std::string rule;     ///< "area", or what a peer computes
-  int samples = 0;      ///< samples per pixel; 0 for an exact-area method
-  std::string scene;
-  std::string grid;
-  bool mesh = false;
-  int width = 0;
-  int height = 0;
-  std::size_t triangles = 0;
+/// chapter is "10_coverage" or "external"; rule is "area", or what a peer computes.
+struct CoverageMeasurement : RowIdentity {
+  int samples = 0;                   ///< samples per pixel; 0 for an exact-area method
   std::uint64_t touched_pixels = 0;  ///< pixels each triangle touches, each triangle on its own
   Timing timing;                     ///< seconds per draw of the whole scene
   AreaErrorReport error;             ///< against the exact area, on the error scene

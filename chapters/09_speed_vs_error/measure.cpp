@@ -35,6 +35,19 @@ FillCeilings measure_fill_ceilings(int width, int height, int threads, const Tim
   return ceilings;
 }
 
+RowIdentity row_identity(std::string_view name, std::string_view chapter, std::string_view rule,
+                         const PreparedScene& prepared) {
+  return {.algorithm = std::string(name),
+          .chapter = std::string(chapter),
+          .rule = std::string(rule),
+          .scene = prepared.suite.name,
+          .grid = prepared.suite.grid,
+          .mesh = prepared.suite.mesh,
+          .width = prepared.scene.width,
+          .height = prepared.scene.height,
+          .triangles = prepared.triangles.size()};
+}
+
 double Measurement::triangles_per_second() const noexcept {
   const double seconds = timing.seconds.median;
   return seconds > 0 ? static_cast<double>(triangles) / seconds : 0.0;
@@ -60,16 +73,8 @@ namespace {
 Measurement row_for(std::string_view name, std::string_view chapter, std::string_view rule,
                     bool threaded, const PreparedScene& prepared, const FillCeilings& ceilings) {
   Measurement m;
-  m.algorithm = name;
-  m.chapter = chapter;
-  m.rule = rule;
+  static_cast<RowIdentity&>(m) = row_identity(name, chapter, rule, prepared);
   m.threaded = threaded;
-  m.scene = prepared.suite.name;
-  m.grid = prepared.suite.grid;
-  m.mesh = prepared.suite.mesh;
-  m.width = prepared.scene.width;
-  m.height = prepared.scene.height;
-  m.triangles = prepared.triangles.size();
   m.fill_ceiling_mpix_per_s =
       threaded ? ceilings.threaded_mpix_per_s() : ceilings.single_thread_mpix_per_s();
   m.error_triangles = count_triangles(prepared.error_scene);

@@ -9,6 +9,7 @@
 #include <ostream>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "chapters/09_speed_vs_error/machine.hpp"
@@ -58,20 +59,28 @@ struct SizedCeiling {
   FillCeiling one_thread;
 };
 
-/// One algorithm on one scene: a row of the CSV.
-struct Measurement {
+/// What names a row of either report part: who drew, and the scene drawn.
+struct RowIdentity {
   std::string algorithm;
-  std::string chapter;
+  std::string chapter;  ///< the chapter folder, or "external" for a peer
   std::string rule;
-  bool threaded = false;
-  std::string precision_family;  ///< the registry's precision family (empty for none)
-  int precision_bits = 0;
   std::string scene;
   std::string grid;
   bool mesh = false;
   int width = 0;
   int height = 0;
   std::size_t triangles = 0;
+};
+
+/// The identity of a row: the drawer's name, chapter and rule, and the prepared scene's.
+RowIdentity row_identity(std::string_view name, std::string_view chapter, std::string_view rule,
+                         const PreparedScene& prepared);
+
+/// One algorithm on one scene: a row of the CSV.
+struct Measurement : RowIdentity {
+  bool threaded = false;
+  std::string precision_family;  ///< the registry's precision family (empty for none)
+  int precision_bits = 0;
   std::uint64_t written_pixels = 0;    ///< pixel writes of one draw of the scene (write counts)
   Timing timing;                       ///< seconds per draw of the whole scene
   double fill_ceiling_mpix_per_s = 0;  ///< the ceiling that applies: threaded or single thread
@@ -135,7 +144,7 @@ struct BenchReport {
   std::size_t error_triangle_limit = 0;
   FillCeilings ceilings;  ///< medians over the scenes of the per-scene ceilings
   std::vector<SizedCeiling> reference_ceilings;  ///< settings.reference_canvas_sides, in order
-  std::vector<Measurement> rows;  ///< scene by scene, every algorithm on each
+  std::vector<Measurement> rows;                 ///< scene by scene, every algorithm on each
 };
 
 /// Runs every algorithm (timed in interleaved rounds), then every external peer, on every scene
