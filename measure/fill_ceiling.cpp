@@ -14,18 +14,17 @@ namespace tri {
 namespace {
 
 // [listing ceiling_fills]
-// Rows first_row <= y < end_row, with memset of one byte value or with chapter 08's 32-byte
+// Rows first_row <= y < end_row, with memset of one byte value or with chapter 08's 16-byte
 // stores of one colour word.
 void fill_rows(Canvas& canvas, int first_row, int end_row, CeilingFill fill, std::uint8_t shade) {
   const Color color{shade, static_cast<std::uint8_t>(255 - shade), 128, 255};
-  std::array<std::uint32_t, 8> words{};
-  words.fill(std::bit_cast<std::uint32_t>(color));
+  const auto word = std::bit_cast<std::uint32_t>(color);
   for (int y = first_row; y < end_row; ++y) {
     const std::span<Color> row = canvas.row(y);
     if (fill == CeilingFill::memset) {
       std::memset(row.data(), shade, row.size_bytes());
     } else {
-      ch08::fill_pixels(row.data(), static_cast<int>(row.size()), words);
+      ch08::fill_pixels(row.data(), static_cast<int>(row.size()), word);
     }
   }
 }

@@ -3,7 +3,7 @@
 /// any rasterizer that stores 4 bytes per covered pixel. Two fills are timed and the faster one
 /// is the ceiling: the C library's memset (which picks the widest stores the host has at run
 /// time, and non-temporal stores for buffers larger than the cache) and chapter 08's
-/// fill_pixels over whole rows (32-byte stores of one colour word, the portable build's widest).
+/// fill_pixels over whole rows (16-byte stores of one colour word, the portable build's widest).
 #pragma once
 
 #include <algorithm>

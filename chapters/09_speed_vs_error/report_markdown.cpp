@@ -88,7 +88,7 @@ std::string to_markdown(const BenchReport& report, std::span<const AlgorithmSumm
         "raised until a sample lasts at least the target, then timed samples with "
         "`std::chrono::steady_clock`; the speed is the median sample, single-threaded unless "
         "the algorithm is a threaded one. Pixels written are counted once, in a separate draw "
-        "with write counts on. The write ceiling is the faster of `memset` and 32-byte vector "
+        "with write counts on. The write ceiling is the faster of `memset` and 16-byte vector "
         "stores over every pixel of the same canvas, measured before each scene (the table "
         "quotes the median over scenes): no rasterizer that stores 4 bytes per pixel can write "
         "pixels faster. Threaded algorithms are compared with the faster of the one-thread "
