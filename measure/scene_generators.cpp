@@ -4,6 +4,7 @@
 #include <numbers>
 #include <vector>
 
+#include "chapters/07_exact_coverage/jittered_mesh.hpp"
 #include "common/random.hpp"
 
 namespace tri {
@@ -77,28 +78,18 @@ void jittered_grid(const SceneRecipe& r, Scene& scene, Random& random) {
   const double aspect = static_cast<double>(r.width) / r.height;
   const int nx = std::max(1, static_cast<int>(std::lround(std::sqrt(cells * aspect))));
   const int ny = std::max(1, (cells + nx - 1) / nx);  // round up: at least the triangles asked for
-  const double sx = (r.width + 2.0) / nx, sy = (r.height + 2.0) / ny;
-  std::vector<glm::dvec2> points;
-  for (int j = 0; j <= ny; ++j) {
-    for (int i = 0; i <= nx; ++i) {
-      // Below 1/6 of a cell every quad stays convex, so no triangle folds over its neighbour.
-      const double jitter_x = (i == 0 || i == nx) ? 0 : random.real(-0.15, 0.15) * sx;
-      const double jitter_y = (j == 0 || j == ny) ? 0 : random.real(-0.15, 0.15) * sy;
-      points.push_back(snapped({-1 + i * sx + jitter_x, -1 + j * sy + jitter_y}, r.grid_bits));
-    }
-  }
-  const auto at = [&](int i, int j) { return points[static_cast<std::size_t>(j * (nx + 1) + i)]; };
-  for (int j = 0; j < ny; ++j) {
-    for (int i = 0; i < nx; ++i) {
-      // Alternate the diagonal so the mesh has edges of every direction.
-      if ((i + j) % 2 == 0) {
-        add(scene, random, at(i, j), at(i + 1, j), at(i + 1, j + 1), r.grid_bits);
-        add(scene, random, at(i, j), at(i + 1, j + 1), at(i, j + 1), r.grid_bits);
-      } else {
-        add(scene, random, at(i, j), at(i + 1, j), at(i, j + 1), r.grid_bits);
-        add(scene, random, at(i + 1, j), at(i + 1, j + 1), at(i, j + 1), r.grid_bits);
-      }
-    }
+  // Chapter 07's mesh, its border vertices sliding along the border and its diagonals
+  // alternating, so the mesh has edges of every direction.
+  const ch07::JitteredGrid grid{.columns = nx,
+                                .rows = ny,
+                                .origin = {-1, -1},
+                                .cell = {(r.width + 2.0) / nx, (r.height + 2.0) / ny},
+                                .jitter = 0.15,
+                                .grid_bits = r.grid_bits,
+                                .pin_border_vertices = false,
+                                .alternate_diagonals = true};
+  for (const Triangle& t : ch07::jittered_grid_triangles(grid, random)) {
+    scene.primitives.emplace_back(SceneTriangle{t, random_color(random)});
   }
 }
 
