@@ -8,6 +8,7 @@
 
 #include "chapters/01_lines/lines.hpp"
 #include "chapters/02_wireframe/example_triangles.hpp"
+#include "chapters/02_wireframe/tinyrenderer_figure.hpp"
 #include "chapters/05_edge_function/bounding_box.hpp"
 #include "chapters/05_edge_function/cross_product.hpp"
 #include "chapters/05_edge_function/edge_function_fill.hpp"
@@ -17,13 +18,13 @@
 
 namespace {
 
-using tri::painted_pixels;
-using tri::point_text;
 using tri::Canvas;
 using tri::Color;
 using tri::LabelPlace;
+using tri::painted_pixels;
 using tri::PixelDiagram;
 using tri::PixelMark;
+using tri::point_text;
 namespace dc = tri::diagram_colors;
 using Vertices = std::array<glm::ivec2, 3>;
 
@@ -37,8 +38,6 @@ constexpr Color light_purple{235, 201, 220, 255};
 constexpr Color marked = tri::colors::white;
 
 using tri::ch02::tinyrenderer_triangles;
-constexpr std::array<Color, 3> tinyrenderer_colors{dc::vermillion, dc::blue, dc::green};
-constexpr std::array<const char*, 3> tinyrenderer_names{"first", "second", "third"};
 // The pixels of the published-bug zoom: the third triangle and its surroundings.
 constexpr glm::ivec2 zoom_first{116, 147}, zoom_last{182, 182};
 
@@ -48,25 +47,9 @@ glm::dvec2 at(glm::ivec2 p) {
 
 // Step 4: tinyrenderer's three triangles, a whole scene, with their ideal edges on top.
 tri::SvgFigure tinyrenderer_figure() {
-  Canvas canvas(200, 200);
-  for (std::size_t i = 0; i < tinyrenderer_triangles.size(); ++i) {
-    const auto& [a, b, c] = tinyrenderer_triangles[i].vertices;
-    tri::ch05::fill_triangle_edge_function(canvas, a, b, c, tinyrenderer_colors[i]);
-  }
-  PixelDiagram d({0, 0}, {199, 199},
-                 "tinyrenderer's three triangles filled by the edge-function test (200 x 200)", 3);
-  d.show_centres(false);
-  d.fill_from(canvas, tri::colors::black);
-  for (std::size_t i = 0; i < tinyrenderer_triangles.size(); ++i) {
-    const auto& [a, b, c] = tinyrenderer_triangles[i].vertices;
-    d.triangle(at(a), at(b), at(c), dc::black, 1);
-    d.legend_fill(std::string(tinyrenderer_names[i]) + " " + point_text(a) + " " + point_text(b) +
-                      " " + point_text(c) + ": " +
-                      std::to_string(painted_pixels(canvas, tinyrenderer_colors[i]).size()) +
-                      " pixels",
-                  tinyrenderer_colors[i]);
-  }
-  d.legend_line("ideal triangle edges", dc::black);
+  const PixelDiagram d = tri::ch02::tinyrenderer_fill_diagram(
+      "tinyrenderer's three triangles filled by the edge-function test (200 x 200)",
+      tri::ch05::fill_triangle_edge_function);
   return tri::SvgFigure{"05_tinyrenderer_triangles", d.svg()};
 }
 

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "chapters/02_wireframe/example_triangles.hpp"
+#include "chapters/02_wireframe/tinyrenderer_figure.hpp"
 #include "chapters/05_edge_function/bounding_box.hpp"
 #include "chapters/06_barycentric/barycentric.hpp"
 #include "chapters/06_barycentric/examples.hpp"
@@ -15,31 +16,28 @@
 
 namespace {
 
-using tri::painted_pixels;
-using tri::point_text;
 using tri::Canvas;
 using tri::Color;
 using tri::LabelPlace;
+using tri::painted_pixels;
 using tri::PixelDiagram;
 using tri::PixelMark;
+using tri::point_text;
+using tri::ch02::tinyrenderer_scene_diagram;
 using tri::ch02::tinyrenderer_triangles;
 using tri::ch06::PixelTriangle;
 namespace dc = tri::diagram_colors;
 
-constexpr std::array<Color, 3> tinyrenderer_colors{dc::vermillion, dc::blue, dc::green};
+using tri::ch02::tinyrenderer_figure_colors;
+using tri::ch02::tinyrenderer_names;
 // The same three, lightened towards white: the tested part of each bounding box.
 constexpr std::array<Color, 3> box_colors{Color{242, 191, 153, 255}, Color{153, 199, 224, 255},
                                           Color{153, 216, 199, 255}};
-constexpr std::array<const char*, 3> tinyrenderer_names{"first", "second", "third"};
 // Paints the pixel sets the figures compute on a (black) canvas before they are coloured.
 constexpr Color marked = tri::colors::white;
 
 glm::dvec2 at(glm::ivec2 p) {
   return glm::dvec2(p);
-}
-
-std::string triangle_text(const PixelTriangle& t) {
-  return point_text(t[0]) + " " + point_text(t[1]) + " " + point_text(t[2]);
 }
 
 // The pixels of a clamped bounding box.
@@ -52,20 +50,14 @@ std::vector<glm::ivec2> box_pixels(const PixelTriangle& t, int width, int height
   return out;
 }
 
-// A whole 200x200 scene at 3 units per pixel, without centre dots.
-PixelDiagram scene_diagram(const std::string& title) {
-  PixelDiagram d({0, 0}, {199, 199}, title, 3);
-  d.show_centres(false);
-  return d;
-}
-
 // Step 1: each triangle over its bounding box, the pixels the loop visits.
 tri::SvgFigure bounding_boxes_figure() {
-  PixelDiagram d = scene_diagram("Every pixel of each bounding box is tested; few are drawn");
+  PixelDiagram d =
+      tinyrenderer_scene_diagram("Every pixel of each bounding box is tested; few are drawn");
   Canvas drawn(200, 200);
   for (std::size_t i = 0; i < 3; ++i) {
     const auto [a, b, c] = tinyrenderer_triangles[i].vertices;
-    tri::ch06::fill_triangle_barycentric<double>(drawn, a, b, c, tinyrenderer_colors[i]);
+    tri::ch06::fill_triangle_barycentric<double>(drawn, a, b, c, tinyrenderer_figure_colors[i]);
   }
   for (std::size_t i = 0; i < 3; ++i) {
     const auto& t = tinyrenderer_triangles[i].vertices;
@@ -75,9 +67,9 @@ tri::SvgFigure bounding_boxes_figure() {
                       " pixels tested",
                   box_colors[i]);
     d.legend_fill(std::string(tinyrenderer_names[i]) + " triangle: " +
-                      std::to_string(painted_pixels(drawn, tinyrenderer_colors[i]).size()) +
+                      std::to_string(painted_pixels(drawn, tinyrenderer_figure_colors[i]).size()) +
                       " drawn",
-                  tinyrenderer_colors[i]);
+                  tinyrenderer_figure_colors[i]);
   }
   d.fill_from(drawn, tri::colors::black);
   for (const auto& triangle : tinyrenderer_triangles) {
@@ -90,28 +82,15 @@ tri::SvgFigure bounding_boxes_figure() {
 
 // Step 4: the three triangles filled, as tinyrenderer shows them.
 tri::SvgFigure tinyrenderer_figure() {
-  PixelDiagram d = scene_diagram("tinyrenderer's three triangles filled by barycentric weights");
-  Canvas canvas(200, 200);
-  for (std::size_t i = 0; i < 3; ++i) {
-    const auto& t = tinyrenderer_triangles[i].vertices;
-    tri::ch06::fill_triangle_barycentric<double>(canvas, t[0], t[1], t[2], tinyrenderer_colors[i]);
-  }
-  d.fill_from(canvas, tri::colors::black);
-  for (std::size_t i = 0; i < 3; ++i) {
-    const auto& t = tinyrenderer_triangles[i].vertices;
-    d.triangle(at(t[0]), at(t[1]), at(t[2]), dc::black, 1);
-    d.legend_fill(std::string(tinyrenderer_names[i]) + " " + triangle_text(t) + ": " +
-                      std::to_string(painted_pixels(canvas, tinyrenderer_colors[i]).size()) +
-                      " pixels",
-                  tinyrenderer_colors[i]);
-  }
-  d.legend_line("ideal triangle edges", dc::black);
+  const PixelDiagram d = tri::ch02::tinyrenderer_fill_diagram(
+      "tinyrenderer's three triangles filled by barycentric weights",
+      tri::ch06::fill_triangle_barycentric<double>);
   return tri::SvgFigure{"06_tinyrenderer_triangles", d.svg()};
 }
 
 // Step 5: the same triangles, each pixel a blend of red, green and blue by its weights.
 tri::SvgFigure weights_figure() {
-  PixelDiagram d = scene_diagram("Each pixel coloured wA red + wB green + wC blue");
+  PixelDiagram d = tinyrenderer_scene_diagram("Each pixel coloured wA red + wB green + wC blue");
   Canvas canvas(200, 200);
   for (const auto& triangle : tinyrenderer_triangles) {
     const auto& [a, b, c] = triangle.vertices;
