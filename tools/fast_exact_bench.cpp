@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "chapters/08_fast_exact/algorithms.hpp"
+#include "chapters/08_fast_exact/narrow_canvases.hpp"
 #include "chapters/08_fast_exact/pixel_writers.hpp"
 #include "chapters/08_fast_exact/threaded.hpp"
 #include "common/cli.hpp"
@@ -38,8 +39,8 @@ using tri::Timing;
 using tri::TimingPlan;
 using tri::TriangleAlgorithm;
 
-constexpr int canvas_side = 512;        // every scene's canvas but the one large-canvas scene
-constexpr int large_canvas_side = 4096;  // 64 MiB of pixels: far beyond any cache
+constexpr int canvas_side = 512;             // every scene's canvas but the one large-canvas scene
+constexpr int large_canvas_side = 4096;      // 64 MiB of pixels: far beyond any cache
 constexpr double min_sample_seconds = 0.03;  // one sample of a variant: about 30 ms of draws
 
 // What the command line asks for, checked before anything is measured.
@@ -84,8 +85,8 @@ std::vector<BenchScene> bench_scenes() {
   // The same kind of scene scaled 8x, on a canvas that no cache holds.
   tri::SceneRecipe large_canvas = random_recipe(200, 2040, 2040, 5);
   large_canvas.min_area = 640000;
-  scenes.push_back(bench_scene("large on 4096x4096 (area >= 640000)", large_canvas,
-                               large_canvas_side));
+  scenes.push_back(
+      bench_scene("large on 4096x4096 (area >= 640000)", large_canvas, large_canvas_side));
   tri::SceneRecipe tiny = random_recipe(100000, 3, 3, 2);
   tiny.min_area = 1;
   tiny.max_area = 10;
@@ -190,6 +191,27 @@ std::vector<std::function<void()>> scene_runs(const BenchScene& scene,
   return runs;
 }
 
+// Step 8's narrow canvases of the scene's size, drawn by fast_spans beside the RGBA8 rows.
+struct NarrowCanvases {
+  tri::ch08::IndexCanvas index;
+  tri::ch08::MaskCanvas mask;
+};
+
+// fast_spans into one byte per pixel (indices 1 to 255 in turn) and into one bit per pixel.
+void add_narrow_runs(const BenchScene& scene, NarrowCanvases& narrow,
+                     std::vector<std::function<void()>>& runs) {
+  runs.emplace_back([&scene, &narrow] {
+    for (std::size_t i = 0; i < scene.triangles.size(); ++i) {
+      tri::ch08::draw_triangle_spans_index8(narrow.index, scene.triangles[i].vertices,
+                                            static_cast<std::uint8_t>(1 + i % 255));
+    }
+  });
+  runs.emplace_back([&scene, &narrow] {
+    for (const SceneTriangle& t : scene.triangles)
+      tri::ch08::draw_triangle_spans_mask1(narrow.mask, t.vertices);
+  });
+}
+
 // One draw of each run tells how long the rounds will take: an absurd estimate is refused.
 void refuse_absurd_scene(const BenchScene& scene, const std::vector<std::function<void()>>& runs,
                          const TimingPlan& plan, bool forced) {
@@ -225,13 +247,33 @@ std::string milliseconds(const tri::Spread& seconds) {
   return text.str();
 }
 
+// The rows of step 8's narrow canvases, when fast_spans was timed: the same pixels as its RGBA8
+// row, fewer bytes per pixel. No % of ceiling: the ceiling is for 4 bytes per pixel.
+void print_narrow_rows(const BenchScene& scene, const std::vector<const TriangleAlgorithm*>& timed,
+                       const std::vector<Timing>& timings, double baseline, std::ostream& out) {
+  const auto spans = std::find_if(timed.begin(), timed.end(), [](const TriangleAlgorithm* a) {
+    return a->name == "fast_spans";
+  });
+  if (spans == timed.end()) return;
+  const double pixels = static_cast<double>(covered_pixels(**spans, scene));
+  const double triangles = static_cast<double>(scene.triangles.size());
+  const std::array<const char*, 2> formats{"1 byte", "1 bit"};
+  for (std::size_t k = 0; k < formats.size(); ++k) {
+    const tri::Spread& seconds = timings[2 + timed.size() + k].seconds;
+    out << "|  | `fast_spans`, " << formats[k] << " per pixel | " << std::defaultfloat
+        << std::setprecision(3) << triangles / seconds.median / 1e6 << " | " << std::fixed
+        << std::setprecision(0) << tri::mpix_per_second(pixels, seconds.median) << " | ";
+    if (baseline > 0) out << std::setprecision(1) << baseline / seconds.median;
+    out << " | | " << milliseconds(seconds) << " |\n";
+  }
+}
+
 // The rows of one scene: the ceiling's two fills, then one row per algorithm. timings holds the
 // fills first, as scene_runs made them.
 void print_scene_rows(const BenchScene& scene, const std::vector<const TriangleAlgorithm*>& timed,
                       const std::vector<Timing>& timings, std::ostream& out) {
   const double pixels_per_canvas = static_cast<double>(scene.side) * scene.side;
-  const tri::FillCeiling ceiling =
-      tri::fill_ceiling_of(pixels_per_canvas, timings[0], timings[1]);
+  const tri::FillCeiling ceiling = tri::fill_ceiling_of(pixels_per_canvas, timings[0], timings[1]);
   out << "| " << scene.name << " | (ceiling: `memset`; vector stores) | | " << std::fixed
       << std::setprecision(0) << ceiling.memset_mpix_per_s << "; "
       << ceiling.vector_stores_mpix_per_s << " | | 100 | " << milliseconds(timings[0].seconds)
@@ -242,8 +284,8 @@ void print_scene_rows(const BenchScene& scene, const std::vector<const TriangleA
     const TriangleAlgorithm& algorithm = *timed[i];
     const tri::Spread& seconds = timings[i + 2].seconds;
     if (algorithm.name == "barycentric_double") baseline = seconds.median;
-    const double pixel_rate = tri::mpix_per_second(
-        static_cast<double>(covered_pixels(algorithm, scene)), seconds.median);
+    const double pixel_rate =
+        tri::mpix_per_second(static_cast<double>(covered_pixels(algorithm, scene)), seconds.median);
     out << "|  | `" << algorithm.name << "`" << (algorithm.threaded ? " (threads)" : "") << " | "
         << std::defaultfloat << std::setprecision(3) << triangles / seconds.median / 1e6 << " | "
         << std::fixed << std::setprecision(0) << pixel_rate << " | ";
@@ -251,14 +293,20 @@ void print_scene_rows(const BenchScene& scene, const std::vector<const TriangleA
     out << " | " << std::setprecision(0) << 100 * pixel_rate / ceiling.mpix_per_s() << " | "
         << milliseconds(seconds) << " |\n";
   }
+  print_narrow_rows(scene, timed, timings, baseline, out);
   out.flush();
 }
 
 void benchmark_scene(const BenchScene& scene, const std::vector<const TriangleAlgorithm*>& timed,
                      const Options& options, std::ostream& out) {
   Canvas canvas(scene.side, scene.side);
+  NarrowCanvases narrow{{scene.side, scene.side}, {scene.side, scene.side}};
   const TimingPlan plan = timing_plan(options);
-  const std::vector<std::function<void()>> runs = scene_runs(scene, timed, canvas);
+  std::vector<std::function<void()>> runs = scene_runs(scene, timed, canvas);
+  if (std::any_of(timed.begin(), timed.end(),
+                  [](const TriangleAlgorithm* a) { return a->name == "fast_spans"; })) {
+    add_narrow_runs(scene, narrow, runs);
+  }
   refuse_absurd_scene(scene, runs, plan, options.force);
   print_scene_rows(scene, timed, time_scene(scene, runs, plan), out);
 }

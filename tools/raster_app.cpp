@@ -21,6 +21,7 @@
 #include "measure/registry.hpp"
 #include "measure/render_scene.hpp"
 #include "measure/timing.hpp"
+#include "tools/pixel_formats.hpp"
 
 namespace tri {
 namespace {
@@ -33,6 +34,7 @@ CommandLine raster_command_line() {
       "  raster --algo NAME --scene FILE [--out FILE.png] [--counts FILE.pgm]\n"
       "  raster --algo NAME --scene FILE --coverage FILE.pgm   (an algorithm of rule area)\n"
       "  raster --algo NAME --scene FILE --bench N\n"
+      "  (either of the last two with --format rgba8|index8|mask1|auto)\n"
       "Scene format: 'canvas W H [r g b]', 'tri x0 y0 x1 y1 x2 y2 [r g b]',\n"
       "'line x0 y0 x1 y1 [r g b]', '#' comments; y is up, integers are pixel centres.\n"
       "Limits: lines of at most 65536 bytes, at most 2000000 triangles and lines.\n"
@@ -53,6 +55,10 @@ CommandLine raster_command_line() {
           {"bench", "N",
            "time N draws of the scene after a warm-up; print the median frame's speed"},
           {"force", "", "run a --bench estimated to take more than 10 minutes anyway"},
+          {"format", "F",
+           "draw into rgba8 (default), index8 (a byte per pixel: a palette of at most 255 "
+           "colours), mask1 (a bit per pixel: one colour) or auto (the narrowest that holds the "
+           "scene); index8 and mask1 are drawn by fast_spans and expanded for the PNG"},
       });
 }
 
@@ -141,12 +147,66 @@ int run_coverage(const CliArguments& args, const Scene& scene, const ch10::AreaA
   return 0;
 }
 
+// --format, checked before anything is read: the format asked for (nothing for auto, which
+// depends on the scene). Refuses what cannot go together.
+std::optional<PixelFormat> checked_format(const CliArguments& args,
+                                          const TriangleAlgorithm* algorithm,
+                                          const ch10::AreaAlgorithm* area) {
+  const auto name = args.value("format");
+  if (!name) return PixelFormat::rgba8;
+  const std::optional<PixelFormat> format = parse_format(*name);
+  if (!format && *name != "auto") {
+    throw UsageError("--format must be rgba8, index8, mask1 or auto, not '" +
+                     printable_excerpt(*name) + "'");
+  }
+  if (area != nullptr) {
+    throw UsageError(std::string(area->name) + " has rule area: --format is for colour pictures");
+  }
+  if (algorithm == nullptr) throw UsageError("--format goes with --algo NAME");
+  if (format && !draws_format(*algorithm, *format)) {
+    throw UsageError(std::string(algorithm->name) + " draws RGBA8 only; index8 and mask1 are " +
+                     "drawn by " + std::string(narrow_format_algorithm) + " (chapter 08, step 8)");
+  }
+  if (args.has("counts") && format != PixelFormat::rgba8) {
+    throw UsageError("--counts counts the writes of the RGBA8 canvas: use --format rgba8");
+  }
+  return format;
+}
+
+// A scene drawn into a narrow format (chapter 08's step 8 canvases): benchmarked, or expanded to
+// RGBA8 for the PNG, the same picture an RGBA8 draw gives.
+int run_narrow(const CliArguments& args, const Scene& scene, const TriangleAlgorithm& algorithm,
+               PixelFormat format, std::optional<long long> frames, bool to_standard_output,
+               std::ostream& out, std::ostream& err) {
+  if (const auto refusal = format_refusal(scene, format)) throw std::runtime_error(*refusal);
+  NarrowRender render(scene, format);
+  if (frames) {
+    benchmark([&] { render.draw(); }, count_triangles(scene),
+              [&] { return pixels_per_frame(scene, &algorithm); }, *frames, args.has("force"), out,
+              err);
+    return 0;
+  }
+  const std::size_t refused = render.draw();
+  if (refused > 0) {
+    throw std::runtime_error(std::to_string(refused) +
+                             " triangle(s) have non-finite or out-of-range vertices");
+  }
+  OutputTransaction files(&out);
+  if (const auto path = args.value("out")) files.stage(*path, encode_png(render.expanded()));
+  files.commit();
+  std::ostream& report = to_standard_output ? err : out;
+  report << "drew " << count_triangles(scene) << " triangle(s) and 0 line(s) on " << scene.width
+         << "x" << scene.height << " with " << algorithm.name << " as " << format_name(format)
+         << '\n';
+  return 0;
+}
+
 int run(const CliArguments& args, std::ostream& out, std::ostream& err) {
   const auto algorithms = registered_algorithms();
   const auto area_algorithms = registered_area_algorithms();
   if (args.has("list")) {
     if (args.has("algo") || args.has("scene") || args.has("out") || args.has("counts") ||
-        args.has("coverage") || args.has("bench")) {
+        args.has("coverage") || args.has("bench") || args.has("format")) {
       throw UsageError("--list takes no other option");
     }
     print_list(algorithms, out);
@@ -185,6 +245,9 @@ int run(const CliArguments& args, std::ostream& out, std::ostream& err) {
                                 : std::string()));
   }
 
+  const std::optional<std::string> format_arg = args.value("format");
+  const std::optional<PixelFormat> chosen_format = checked_format(args, algorithm, area);
+
   // Every output is checked before any work, so a bad one costs nothing and destroys nothing.
   std::vector<std::filesystem::path> outputs;
   for (const char* option : {"out", "counts", "coverage"}) {
@@ -202,6 +265,12 @@ int run(const CliArguments& args, std::ostream& out, std::ostream& err) {
   if (area != nullptr) return run_coverage(args, scene, *area, frames, out, err);
   if (algorithm == nullptr && count_triangles(scene) > 0) {
     throw UsageError(*scene_path + " has triangles: choose an algorithm with --algo NAME");
+  }
+  if (format_arg) {
+    const PixelFormat format = chosen_format ? *chosen_format : narrowest_format(scene, *algorithm);
+    if (format != PixelFormat::rgba8) {
+      return run_narrow(args, scene, *algorithm, format, frames, to_standard_output, out, err);
+    }
   }
   if (frames) {
     benchmark(scene, algorithm, *frames, args.has("force"), out, err);
@@ -234,6 +303,7 @@ int run(const CliArguments& args, std::ostream& out, std::ostream& err) {
   report << "drew " << stats.triangles << " triangle(s) and " << stats.lines << " line(s) on "
          << scene.width << "x" << scene.height;
   if (algorithm != nullptr) report << " with " << algorithm->name;
+  if (format_arg) report << " as rgba8";
   report << '\n';
   return 0;
 }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <random>
 #include <regex>
 #include <set>
 #include <sstream>
@@ -438,4 +439,99 @@ TEST_CASE("The rate of a rule-area algorithm counts the pixels each triangle tou
   const std::vector<tri::SceneTriangle> twice = {{t}, {t}};
   CHECK(sampled > 28);
   CHECK(tri::touched_pixels(*standard_4, 8, 8, twice) == 2 * sampled);
+}
+
+namespace {
+
+// A scene of `count` overlapping triangles on the 1/256 grid, partly off the 97x61 canvas, in
+// `colors` colours taken in turn.
+std::string random_scene(int count, int colors, std::uint64_t seed) {
+  std::mt19937_64 random(seed);
+  std::uniform_int_distribution<int> x(-10 * 256, 107 * 256), y(-10 * 256, 71 * 256);
+  std::ostringstream scene;
+  scene << "canvas 97 61 10 20 30\n";
+  for (int i = 0; i < count; ++i) {
+    scene << "tri";
+    for (int v = 0; v < 3; ++v) scene << ' ' << x(random) / 256.0 << ' ' << y(random) / 256.0;
+    scene << ' ' << 40 * (i % colors) << " 100 " << 250 - 50 * (i % colors) << '\n';
+  }
+  return scene.str();
+}
+
+}  // namespace
+
+TEST_CASE("raster --format index8 and mask1 give the RGBA8 picture, byte for byte",
+          "[raster][format]") {
+  TempFolder dir;
+  for (const auto& [colors, format] :
+       std::vector<std::pair<int, std::string>>{{1, "mask1"}, {1, "index8"}, {3, "index8"}}) {
+    CAPTURE(colors, format);
+    const auto scene = dir.write("s.scene", random_scene(60, colors, 5 + colors));
+    const Run rgba = raster(
+        {"--algo", "fast_spans", "--scene", scene.string(), "--out", (dir / "rgba8.png").string()});
+    const Run narrow = raster({"--algo", "fast_spans", "--scene", scene.string(), "--format",
+                               format, "--out", (dir / "narrow.png").string()});
+    REQUIRE(rgba.status == 0);
+    REQUIRE(narrow.status == 0);
+    CHECK(narrow.out ==
+          "drew 60 triangle(s) and 0 line(s) on 97x61 with fast_spans as " + format + "\n");
+    CHECK(read_file(dir / "narrow.png") == read_file(dir / "rgba8.png"));
+  }
+}
+
+TEST_CASE("raster --format auto picks the narrowest format the scene and the algorithm allow",
+          "[raster][format]") {
+  TempFolder dir;
+  const auto one = dir.write("one.scene", random_scene(10, 1, 1));
+  const auto three = dir.write("three.scene", random_scene(10, 3, 2));
+  const auto lines = dir.write("lines.scene", random_scene(10, 1, 3) + "line 0 0 20 20\n");
+  const auto summary_ends = [&](const std::string& algo, const fs::path& scene,
+                                const std::string& format) {
+    const Run run = raster({"--algo", algo, "--scene", scene.string(), "--format", "auto"});
+    CHECK(run.status == 0);
+    CHECK(run.out.ends_with(" as " + format + "\n"));
+  };
+  summary_ends("fast_spans", one, "mask1");
+  summary_ends("fast_spans", three, "index8");
+  summary_ends("fast_spans", lines, "rgba8");  // a narrow format draws no lines
+  summary_ends("fast_hybrid", one, "rgba8");   // it draws RGBA8 only
+}
+
+TEST_CASE(
+    "raster refuses a format the algorithm or the scene cannot have, and keeps the earlier "
+    "picture",
+    "[raster][format]") {
+  TempFolder dir;
+  const auto three = dir.write("three.scene", random_scene(10, 3, 4));
+  const auto previous = dir.write("prev.png", "the earlier picture");
+  const auto refused = [&](std::vector<std::string> args, int status, const std::string& reason) {
+    const Run run = raster(std::move(args));
+    CHECK(run.status == status);
+    CHECK(is_one_line(run.err));
+    CHECK(run.err.find(reason) != std::string::npos);
+    CHECK(read_file(previous) == "the earlier picture");
+  };
+  const std::string scene = three.string(), out = previous.string();
+  refused({"--algo", "fast_hybrid", "--scene", scene, "--format", "mask1", "--out", out}, 2,
+          "fast_hybrid draws RGBA8 only; index8 and mask1 are drawn by fast_spans");
+  refused({"--algo", "fast_spans", "--scene", scene, "--format", "mask1", "--out", out}, 1,
+          "mask1 holds 1 colour besides the background, and the scene's triangles have 3");
+  refused({"--algo", "fast_spans", "--scene", scene, "--format", "index8", "--counts", out}, 2,
+          "--counts counts the writes of the RGBA8 canvas");
+  refused({"--algo", "fast_spans", "--scene", scene, "--format", "bgr", "--out", out}, 2,
+          "--format must be rgba8, index8, mask1 or auto, not 'bgr'");
+  refused({"--algo", "area_cells", "--scene", scene, "--format", "index8", "--coverage", out}, 2,
+          "area_cells has rule area: --format is for colour pictures");
+}
+
+TEST_CASE("raster --bench times a narrow format with the one-line speed report",
+          "[raster][format][bench]") {
+  TempFolder dir;
+  const auto scene = dir.write("one.scene", random_scene(20, 1, 6));
+  const Run run = raster(
+      {"--algo", "fast_spans", "--scene", scene.string(), "--format", "mask1", "--bench", "3"});
+  REQUIRE(run.status == 0);
+  CHECK(std::regex_match(run.out, std::regex("triangles=20 frames=3 seconds=[0-9.e+-]+ "
+                                             "min_seconds=[0-9.e+-]+ max_seconds=[0-9.e+-]+ "
+                                             "tris_per_s=[0-9.e+-]+ mpix_per_s=[0-9.e+-]+\n")));
 }

@@ -90,6 +90,8 @@ void fill_spans(const TriangleSetup& setup, Writer& writer) {
 }
 template void fill_spans(const TriangleSetup&, RowWriter&);
 template void fill_spans(const TriangleSetup&, CountingWriter&);
+template void fill_spans(const TriangleSetup&, IndexWriter&);
+template void fill_spans(const TriangleSetup&, MaskWriter&);
 
 void draw_triangle_spans(Canvas& canvas, const Triangle& triangle, Color color) {
   const auto setup = setup_triangle(triangle, canvas.width(), canvas.height());

@@ -7,6 +7,7 @@
 #include <array>
 #include <cstdint>
 
+#include "chapters/08_fast_exact/narrow_canvases.hpp"
 #include "chapters/08_fast_exact/pixel_writers.hpp"
 #include "chapters/08_fast_exact/triangle_setup.hpp"
 #include "common/canvas.hpp"
@@ -102,6 +103,8 @@ template <PixelWriter Writer>
 void fill_spans(const TriangleSetup& setup, Writer& writer);
 extern template void fill_spans(const TriangleSetup&, RowWriter&);
 extern template void fill_spans(const TriangleSetup&, CountingWriter&);
+extern template void fill_spans(const TriangleSetup&, IndexWriter&);
+extern template void fill_spans(const TriangleSetup&, MaskWriter&);
 
 /// Step 3 · span traversal: setup, then one filled span per row from SpanWalker. A sliver costs
 /// its rows, not its bounding box.

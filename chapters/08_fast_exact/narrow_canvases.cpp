@@ -1,0 +1,33 @@
+#include "chapters/08_fast_exact/narrow_canvases.hpp"
+
+#include "chapters/08_fast_exact/spans.hpp"
+#include "chapters/08_fast_exact/triangle_setup.hpp"
+
+namespace tri::ch08 {
+
+IndexCanvas::IndexCanvas(int width, int height)
+    : width_(width),
+      height_(height),
+      bytes_(static_cast<std::size_t>(width) * static_cast<std::size_t>(height), 0) {}
+
+MaskCanvas::MaskCanvas(int width, int height)
+    : width_(width),
+      height_(height),
+      words_per_row_((width + 63) / 64),
+      words_(static_cast<std::size_t>(words_per_row_) * static_cast<std::size_t>(height), 0) {}
+
+void draw_triangle_spans_index8(IndexCanvas& canvas, const Triangle& triangle, std::uint8_t index) {
+  const auto setup = setup_triangle(triangle, canvas.width(), canvas.height());
+  if (!setup) return;
+  IndexWriter writer(canvas, index);
+  fill_spans(*setup, writer);
+}
+
+void draw_triangle_spans_mask1(MaskCanvas& canvas, const Triangle& triangle) {
+  const auto setup = setup_triangle(triangle, canvas.width(), canvas.height());
+  if (!setup) return;
+  MaskWriter writer(canvas);
+  fill_spans(*setup, writer);
+}
+
+}  // namespace tri::ch08

@@ -1,0 +1,108 @@
+/// @file
+/// Step 8 · only the bytes the picture needs: canvases of one byte per pixel (a palette index,
+/// for a scene of at most 255 colours) and of one bit per pixel (covered or not, for a one-colour
+/// scene or when only coverage is wanted), with the writers that let step 3's span traversal fill
+/// them. The traversal decides which pixels to write exactly as for the RGBA8 canvas; only the
+/// store differs.
+#pragma once
+
+#include <cstdint>
+#include <cstring>
+#include <span>
+#include <vector>
+
+#include "chapters/08_fast_exact/pixel_writers.hpp"
+#include "common/triangle_algorithm.hpp"
+
+namespace tri::ch08 {
+
+/// W×H pixels of one byte each, y up like Canvas: 0 is the background, 1 to 255 palette entries.
+class IndexCanvas {
+ public:
+  IndexCanvas(int width, int height);
+  int width() const noexcept { return width_; }
+  int height() const noexcept { return height_; }
+  std::uint8_t index(int x, int y) const noexcept { return bytes_[offset(x, y)]; }
+  /// Row y's bytes (precondition: 0 <= y < height).
+  std::uint8_t* row(int y) noexcept { return bytes_.data() + offset(0, y); }
+
+ private:
+  std::size_t offset(int x, int y) const noexcept {
+    return static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) +
+           static_cast<std::size_t>(x);
+  }
+  int width_, height_;
+  std::vector<std::uint8_t> bytes_;
+};
+
+/// W×H pixels of one bit each, y up: 1 where a triangle covers the pixel. Each row is whole
+/// 64-bit words; pixel x of a row is bit x % 64 of word x / 64.
+class MaskCanvas {
+ public:
+  MaskCanvas(int width, int height);
+  int width() const noexcept { return width_; }
+  int height() const noexcept { return height_; }
+  int words_per_row() const noexcept { return words_per_row_; }
+  bool covered(int x, int y) const noexcept { return (words_[word(x, y)] >> (x % 64)) & 1u; }
+  /// Row y's words (precondition: 0 <= y < height).
+  std::uint64_t* row(int y) noexcept { return words_.data() + word(0, y); }
+
+ private:
+  std::size_t word(int x, int y) const noexcept {
+    return static_cast<std::size_t>(y) * static_cast<std::size_t>(words_per_row_) +
+           static_cast<std::size_t>(x / 64);
+  }
+  int width_, height_, words_per_row_;
+  std::vector<std::uint64_t> words_;
+};
+
+/// Writes one palette index into an IndexCanvas: a span is one memset.
+class IndexWriter {
+ public:
+  IndexWriter(IndexCanvas& canvas, std::uint8_t index) noexcept : canvas_(canvas), index_(index) {}
+  void span(int y, int x_begin, int x_end) noexcept {
+    std::memset(canvas_.row(y) + x_begin, index_, static_cast<std::size_t>(x_end - x_begin));
+  }
+  void pixel(int x, int y) noexcept { canvas_.row(y)[x] = index_; }
+  int width() const noexcept { return canvas_.width(); }
+
+ private:
+  IndexCanvas& canvas_;
+  std::uint8_t index_;
+};
+
+// [listing mask_writer]
+/// Sets bits of a MaskCanvas: a span is a partial first word, whole words, a partial last word.
+class MaskWriter {
+ public:
+  explicit MaskWriter(MaskCanvas& canvas) noexcept : canvas_(canvas) {}
+  void span(int y, int x_begin, int x_end) noexcept {
+    std::uint64_t* words = canvas_.row(y);
+    const int first = x_begin / 64, last = (x_end - 1) / 64;
+    const std::uint64_t from_begin = ~std::uint64_t{0} << (x_begin % 64);
+    const std::uint64_t to_end = ~std::uint64_t{0} >> (63 - (x_end - 1) % 64);
+    if (first == last) {
+      words[first] |= from_begin & to_end;
+      return;
+    }
+    words[first] |= from_begin;
+    for (int w = first + 1; w < last; ++w) words[w] = ~std::uint64_t{0};
+    words[last] |= to_end;
+  }
+  void pixel(int x, int y) noexcept { canvas_.row(y)[x / 64] |= std::uint64_t{1} << (x % 64); }
+  int width() const noexcept { return canvas_.width(); }
+
+ private:
+  MaskCanvas& canvas_;
+};
+// [/listing]
+
+static_assert(PixelWriter<IndexWriter> && PixelWriter<MaskWriter>);
+
+/// Step 8 · step 3's spans into one byte per pixel: the triangle's pixels set to `index`.
+void draw_triangle_spans_index8(IndexCanvas& canvas, const Triangle& triangle, std::uint8_t index);
+
+/// Step 8 · step 3's spans into one bit per pixel: the triangle's pixels set to 1.
+void draw_triangle_spans_mask1(MaskCanvas& canvas, const Triangle& triangle);
+
+}  // namespace tri::ch08

@@ -1,0 +1,91 @@
+// Step 8: the narrow canvases hold exactly the pixels the RGBA8 canvas gets from the same
+// traversal, for one triangle and for a scene of overlapping ones.
+#include <catch2/catch.hpp>
+
+#include <array>
+#include <vector>
+
+#include "chapters/07_exact_coverage/coverage_oracle.hpp"
+#include "chapters/08_fast_exact/narrow_canvases.hpp"
+#include "chapters/08_fast_exact/spans.hpp"
+#include "chapters/08_fast_exact/test_triangles.hpp"
+#include "tests/support/pixels.hpp"
+
+using tri::Canvas;
+using tri::Triangle;
+using tri::ch08::IndexCanvas;
+using tri::ch08::MaskCanvas;
+
+namespace {
+
+constexpr tri::Color background{9, 9, 9, 255};
+
+// Canvas sizes whose rows end inside a 64-bit word, and one that spans several words.
+constexpr std::array<glm::ivec2, 3> sizes{{{45, 37}, {21, 19}, {130, 23}}};
+
+}  // namespace
+
+TEST_CASE("One byte and one bit per pixel hold exactly the oracle's pixels of each triangle",
+          "[08_fast_exact][step8]") {
+  tri::testing::Random random(77);
+  for (int i = 0; i < 1200; ++i) {
+    const glm::ivec2 size = sizes[static_cast<std::size_t>(i) % sizes.size()];
+    const Triangle t =
+        tri::ch08::testing::random_triangle(random, tri::ch08::testing::shape_number(i), 40);
+    INFO("triangle " << i << ": " << t[0].x << "," << t[0].y << " " << t[1].x << "," << t[1].y
+                     << " " << t[2].x << "," << t[2].y);
+    Canvas truth(size.x, size.y, background);
+    tri::ch07::draw_triangle_oracle(truth, t, tri::colors::white);
+    IndexCanvas indices(size.x, size.y);
+    tri::ch08::draw_triangle_spans_index8(indices, t, 7);
+    MaskCanvas mask(size.x, size.y);
+    tri::ch08::draw_triangle_spans_mask1(mask, t);
+    for (int y = 0; y < size.y; ++y) {
+      for (int x = 0; x < size.x; ++x) {
+        const bool covered = truth.pixel(x, y) == tri::colors::white;
+        REQUIRE(indices.index(x, y) == (covered ? 7 : 0));
+        REQUIRE(mask.covered(x, y) == covered);
+      }
+    }
+  }
+}
+
+TEST_CASE("A palette index canvas of overlapping triangles reads back as the RGBA8 canvas",
+          "[08_fast_exact][step8]") {
+  // Later triangles cover earlier ones in both; the palette turns indices into the same colours.
+  tri::testing::Random random(78);
+  std::vector<tri::Color> palette{background};
+  Canvas colors(130, 61, background);
+  IndexCanvas indices(130, 61);
+  for (int i = 0; i < 200; ++i) {
+    const Triangle t =
+        tri::ch08::testing::random_triangle(random, tri::ch08::testing::shape_number(i), 60);
+    palette.push_back(tri::Color{static_cast<std::uint8_t>(i), static_cast<std::uint8_t>(3 * i),
+                                 static_cast<std::uint8_t>(255 - i), 255});
+    tri::ch08::draw_triangle_spans(colors, t, palette.back());
+    tri::ch08::draw_triangle_spans_index8(indices, t, static_cast<std::uint8_t>(i + 1));
+  }
+  int drawn = 0;
+  for (int y = 0; y < colors.height(); ++y) {
+    for (int x = 0; x < colors.width(); ++x) {
+      REQUIRE(palette[indices.index(x, y)] == colors.pixel(x, y));
+      drawn += indices.index(x, y) != 0;
+    }
+  }
+  CHECK(drawn > 1000);  // the scene covers much of the canvas, so the comparison is not empty
+}
+
+TEST_CASE("A span of the mask sets exactly its bits, within one word and across words",
+          "[08_fast_exact][step8]") {
+  for (const auto& [begin, end] : std::vector<std::pair<int, int>>{
+           {0, 1}, {3, 9}, {60, 70}, {63, 64}, {64, 65}, {1, 200}, {0, 256}, {127, 129}}) {
+    CAPTURE(begin, end);
+    MaskCanvas mask(256, 2);
+    tri::ch08::MaskWriter writer(mask);
+    writer.span(1, begin, end);
+    for (int x = 0; x < 256; ++x) {
+      REQUIRE(mask.covered(x, 1) == (begin <= x && x < end));
+      REQUIRE_FALSE(mask.covered(x, 0));
+    }
+  }
+}

@@ -1,0 +1,127 @@
+#include "tools/pixel_formats.hpp"
+
+#include <algorithm>
+#include <vector>
+
+#include "chapters/08_fast_exact/narrow_canvases.hpp"
+#include "measure/render_scene.hpp"
+
+namespace tri {
+namespace {
+
+// The scene's triangle colours in order of first appearance.
+std::vector<Color> triangle_colors(const Scene& scene) {
+  std::vector<Color> colors;
+  for (const SceneTriangle& t : scene_triangles(scene)) {
+    if (std::find(colors.begin(), colors.end(), t.color) == colors.end()) colors.push_back(t.color);
+  }
+  return colors;
+}
+
+constexpr std::size_t max_palette_colors = 255;  // index 0 is the background
+
+}  // namespace
+
+std::string_view format_name(PixelFormat format) noexcept {
+  switch (format) {
+    case PixelFormat::index8:
+      return "index8";
+    case PixelFormat::mask1:
+      return "mask1";
+    case PixelFormat::rgba8:
+      break;
+  }
+  return "rgba8";
+}
+
+std::optional<PixelFormat> parse_format(std::string_view name) noexcept {
+  for (const PixelFormat f : {PixelFormat::rgba8, PixelFormat::index8, PixelFormat::mask1}) {
+    if (name == format_name(f)) return f;
+  }
+  return std::nullopt;
+}
+
+bool draws_format(const TriangleAlgorithm& algorithm, PixelFormat format) noexcept {
+  return format == PixelFormat::rgba8 || algorithm.name == narrow_format_algorithm;
+}
+
+std::optional<std::string> format_refusal(const Scene& scene, PixelFormat format) {
+  if (format == PixelFormat::rgba8) return std::nullopt;
+  const std::size_t lines = scene.primitives.size() - count_triangles(scene);
+  if (lines > 0) {
+    return std::string(format_name(format)) + " draws triangles only, and the scene has " +
+           std::to_string(lines) + " line(s)";
+  }
+  const std::size_t colors = triangle_colors(scene).size();
+  const std::size_t most = format == PixelFormat::mask1 ? 1 : max_palette_colors;
+  if (colors > most) {
+    return std::string(format_name(format)) + " holds " + std::to_string(most) +
+           (most == 1 ? " colour" : " colours") + " besides the background, and the scene's " +
+           "triangles have " + std::to_string(colors);
+  }
+  return std::nullopt;
+}
+
+PixelFormat narrowest_format(const Scene& scene, const TriangleAlgorithm& algorithm) {
+  for (const PixelFormat f : {PixelFormat::mask1, PixelFormat::index8}) {
+    if (draws_format(algorithm, f) && !format_refusal(scene, f)) return f;
+  }
+  return PixelFormat::rgba8;
+}
+
+struct NarrowRender::State {
+  std::vector<SceneTriangle> triangles;
+  std::vector<Color> palette;          // palette[0] is the background
+  std::vector<std::uint8_t> index_of;  // each triangle's palette index
+  ch08::IndexCanvas indices;
+  ch08::MaskCanvas mask;
+};
+
+NarrowRender::NarrowRender(const Scene& scene, PixelFormat format)
+    : scene_(scene), format_(format) {
+  const bool bytes = format == PixelFormat::index8;
+  state_ = std::make_unique<State>(State{scene_triangles(scene),
+                                         {scene.background},
+                                         {},
+                                         ch08::IndexCanvas(bytes ? scene.width : 0, scene.height),
+                                         ch08::MaskCanvas(bytes ? 0 : scene.width, scene.height)});
+  for (const Color& c : triangle_colors(scene)) state_->palette.push_back(c);
+  for (const SceneTriangle& t : state_->triangles) {
+    const auto at = std::find(state_->palette.begin() + 1, state_->palette.end(), t.color);
+    state_->index_of.push_back(static_cast<std::uint8_t>(at - state_->palette.begin()));
+  }
+}
+
+NarrowRender::~NarrowRender() = default;
+
+std::size_t NarrowRender::draw() {
+  std::size_t refused = 0;
+  for (std::size_t i = 0; i < state_->triangles.size(); ++i) {
+    const Triangle& t = state_->triangles[i].vertices;
+    if (validate_triangle(t) != DrawResult::drawn) {
+      ++refused;
+    } else if (format_ == PixelFormat::index8) {
+      ch08::draw_triangle_spans_index8(state_->indices, t, state_->index_of[i]);
+    } else {
+      ch08::draw_triangle_spans_mask1(state_->mask, t);
+    }
+  }
+  return refused;
+}
+
+Canvas NarrowRender::expanded() const {
+  Canvas canvas = make_canvas(scene_);
+  const Color one = state_->palette.size() > 1 ? state_->palette[1] : scene_.background;
+  for (int y = 0; y < canvas.height(); ++y) {
+    for (int x = 0; x < canvas.width(); ++x) {
+      if (format_ == PixelFormat::index8) {
+        canvas.put_pixel(x, y, state_->palette[state_->indices.index(x, y)]);
+      } else if (state_->mask.covered(x, y)) {
+        canvas.put_pixel(x, y, one);
+      }
+    }
+  }
+  return canvas;
+}
+
+}  // namespace tri

@@ -1,0 +1,65 @@
+/// @file
+/// raster --format: the pixel formats a scene can be drawn in (docs/DESIGN.md section 9). RGBA8 is
+/// the shared canvas; index8 (one byte per pixel, a palette of the scene's colours) and mask1 (one
+/// bit per pixel, for a one-colour scene) are chapter 08's step 8 canvases, drawn by fast_spans.
+#pragma once
+
+#include <cstddef>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "common/canvas.hpp"
+#include "common/scene.hpp"
+#include "common/triangle_algorithm.hpp"
+
+namespace tri {
+
+enum class PixelFormat { rgba8, index8, mask1 };
+
+/// "rgba8", "index8" or "mask1".
+std::string_view format_name(PixelFormat format) noexcept;
+
+/// The format a --format value names; "auto" and unknown names give nothing.
+std::optional<PixelFormat> parse_format(std::string_view name) noexcept;
+
+/// The name of the one algorithm that draws the narrow formats.
+inline constexpr std::string_view narrow_format_algorithm = "fast_spans";
+
+/// Whether the algorithm can draw the format: every algorithm draws rgba8, only
+/// narrow_format_algorithm draws index8 and mask1.
+bool draws_format(const TriangleAlgorithm& algorithm, PixelFormat format) noexcept;
+
+/// Why the scene cannot be drawn in the format, or nothing when it can: a narrow format draws
+/// triangles only, index8 holds at most 255 colours and mask1 one.
+std::optional<std::string> format_refusal(const Scene& scene, PixelFormat format);
+
+/// --format auto: the narrowest format that holds the scene and that the algorithm draws.
+PixelFormat narrowest_format(const Scene& scene, const TriangleAlgorithm& algorithm);
+
+/// A narrow format's draw of the scene's triangles (validated as draw_triangles does), kept ready
+/// to repeat for --bench; expanded() gives the RGBA8 canvas it stands for, the same pixels as an
+/// RGBA8 draw by narrow_format_algorithm.
+class NarrowRender {
+ public:
+  /// Prepares the canvas and palette (precondition: format_refusal(scene, format) is empty and
+  /// format is not rgba8).
+  NarrowRender(const Scene& scene, PixelFormat format);
+  ~NarrowRender();
+  NarrowRender(const NarrowRender&) = delete;
+  NarrowRender& operator=(const NarrowRender&) = delete;
+
+  /// Draws every valid triangle; returns how many were refused (non-finite or out of range).
+  std::size_t draw();
+  /// The RGBA8 picture: the background where no triangle drew, else the triangle's colour.
+  Canvas expanded() const;
+
+ private:
+  struct State;
+  const Scene& scene_;
+  PixelFormat format_;
+  std::unique_ptr<State> state_;
+};
+
+}  // namespace tri
