@@ -1,6 +1,8 @@
 #include "tools/pixel_formats.hpp"
 
 #include <algorithm>
+#include <array>
+#include <utility>
 #include <vector>
 
 #include "chapters/08_fast_exact/narrow_canvases.hpp"
@@ -20,23 +22,23 @@ std::vector<Color> triangle_colors(const Scene& scene) {
 
 constexpr std::size_t max_palette_colors = 255;  // index 0 is the background
 
+constexpr std::array<std::pair<PixelFormat, std::string_view>, 3> format_names{
+    {{PixelFormat::rgba8, "rgba8"},
+     {PixelFormat::index8, "index8"},
+     {PixelFormat::mask1, "mask1"}}};
+
 }  // namespace
 
 std::string_view format_name(PixelFormat format) noexcept {
-  switch (format) {
-    case PixelFormat::index8:
-      return "index8";
-    case PixelFormat::mask1:
-      return "mask1";
-    case PixelFormat::rgba8:
-      break;
+  for (const auto& [f, name] : format_names) {
+    if (f == format) return name;
   }
   return "rgba8";
 }
 
 std::optional<PixelFormat> parse_format(std::string_view name) noexcept {
-  for (const PixelFormat f : {PixelFormat::rgba8, PixelFormat::index8, PixelFormat::mask1}) {
-    if (name == format_name(f)) return f;
+  for (const auto& [f, n] : format_names) {
+    if (n == name) return f;
   }
   return std::nullopt;
 }
