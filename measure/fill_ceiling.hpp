@@ -1,8 +1,8 @@
 /// @file
 /// The write ceiling: how fast this machine writes every byte of a canvas at all, the bound for
 /// any rasterizer that stores 4 bytes per covered pixel. Two fills are timed and the faster one
-/// is the ceiling: the C library's memset (which picks the widest stores the host has at run
-/// time, and non-temporal stores for buffers larger than the cache) and chapter 08's
+/// is the ceiling: the C library's memset (whose code is chosen for the host at run time: wide
+/// vector stores, and the processor's string store for long buffers) and chapter 08's
 /// fill_pixels over whole rows (16-byte stores of one colour word, the portable build's widest).
 #pragma once
 
