@@ -7,6 +7,7 @@
 
 #include "chapters/03_interpolate_fill/algorithms.hpp"
 #include "chapters/03_interpolate_fill/test_helpers.hpp"
+#include "tests/support/registry_checks.hpp"
 
 using namespace tri::ch03;
 using namespace tri::ch03::testing;
@@ -36,11 +37,9 @@ std::uint32_t most_writes(const Canvas& canvas) {
 
 TEST_CASE("Chapter 03 registers gambetta_interpolate_fill as approximate",
           "[03_interpolate_fill][algorithms][registry]") {
-  REQUIRE(triangle_algorithms().size() == 1);
-  CHECK(registered().name == "gambetta_interpolate_fill");
-  CHECK(registered().chapter == "03_interpolate_fill");
-  CHECK(registered().rule == tri::CoverageRule::approximate);
-  CHECK_FALSE(registered().threaded);
+  tri::testing::check_chapter_entries(triangle_algorithms(), "03_interpolate_fill",
+                                      {"gambetta_interpolate_fill"},
+                                      tri::CoverageRule::approximate);
 }
 
 TEST_CASE("The registered fill is draw_filled_triangle on the nearest pixel centres",

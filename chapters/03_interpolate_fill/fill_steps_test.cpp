@@ -16,8 +16,6 @@ using tri::Canvas;
 
 namespace {
 
-const Vertices hand{{{1, 0}, {6, 3}, {2, 5}}};
-
 std::vector<double> values(std::initializer_list<double> list) {
   return list;
 }
@@ -28,7 +26,8 @@ TEST_CASE("Step 1 sorts the vertices by increasing y whatever their order",
           "[03_interpolate_fill][step1][steps][sort]") {
   std::array<int, 3> order{0, 1, 2};
   do {
-    const SortedTriangle t = sort_by_y(hand[order[0]], hand[order[1]], hand[order[2]]);
+    const SortedTriangle t =
+        sort_by_y(hand_triangle[order[0]], hand_triangle[order[1]], hand_triangle[order[2]]);
     CHECK(t.p0 == glm::ivec2(1, 0));
     CHECK(t.p1 == glm::ivec2(6, 3));
     CHECK(t.p2 == glm::ivec2(2, 5));
@@ -45,7 +44,7 @@ TEST_CASE("Step 1 keeps vertices of equal y in the order they came",
 
 TEST_CASE("Step 2 gives each edge one x per row, both end rows included",
           "[03_interpolate_fill][step2][steps][interpolate]") {
-  const SortedTriangle t = sort_by_y(hand[0], hand[1], hand[2]);
+  const SortedTriangle t = sort_by_y(hand_triangle[0], hand_triangle[1], hand_triangle[2]);
   const EdgeXs e = interpolate_edges(t, triangle_rows(t));
   CHECK_THAT(e.x01, Approx(values({1, 1 + 5 / 3.0, 1 + 10 / 3.0, 6})).margin(1e-12));
   CHECK_THAT(e.x12, Approx(values({6, 4, 2})).margin(1e-12));
@@ -58,7 +57,7 @@ TEST_CASE("Step 2 gives each edge one x per row, both end rows included",
 
 TEST_CASE("Step 2 on a clipped row range keeps each edge's rows in that range",
           "[03_interpolate_fill][step2][steps][interpolate][clip]") {
-  const SortedTriangle t = sort_by_y(hand[0], hand[1], hand[2]);
+  const SortedTriangle t = sort_by_y(hand_triangle[0], hand_triangle[1], hand_triangle[2]);
   const EdgeXs e = interpolate_edges(t, {2, 4});
   CHECK_THAT(e.x01, Approx(values({1 + 10 / 3.0, 6})).margin(1e-12));  // rows 2..3
   CHECK_THAT(e.x12, Approx(values({6, 4})).margin(1e-12));             // rows 3..4
@@ -100,7 +99,7 @@ TEST_CASE("Step 3 makes x012 exactly as long as x02",
 
 TEST_CASE("Step 3 drops x01's copy of row y1 and keeps x12's",
           "[03_interpolate_fill][step3][steps][concatenate]") {
-  const SortedTriangle t = sort_by_y(hand[0], hand[1], hand[2]);
+  const SortedTriangle t = sort_by_y(hand_triangle[0], hand_triangle[1], hand_triangle[2]);
   EdgeXs e = interpolate_edges(t, triangle_rows(t));
   const auto x012 = concatenate_short_sides(e.x01, e.x12);
   CHECK_THAT(x012, Approx(values({1, 1 + 5 / 3.0, 1 + 10 / 3.0, 6, 4, 2})).margin(1e-12));

@@ -1,19 +1,23 @@
 /// @file
-/// What chapter 03's tests share: pixel sets of a fill and of the book's unclipped composition.
+/// What chapter 03's tests share: the hand triangle, pixel sets of a fill and of the book's
+/// unclipped composition.
 #pragma once
 
 #include <array>
 #include <cstdint>
 #include <utility>
 
+#include "chapters/03_interpolate_fill/diagram_support.hpp"
 #include "chapters/03_interpolate_fill/fill_steps.hpp"
 #include "chapters/03_interpolate_fill/filled_triangle.hpp"
 #include "tests/support/pixels.hpp"
 
 namespace tri::ch03::testing {
 
+using figures::hand_triangle;
 using tri::testing::minus;
 using tri::testing::PixelSet;
+using tri::testing::random_vertices;
 using Vertices = std::array<glm::ivec2, 3>;
 
 /// The pixels draw_filled_triangle writes on a counting width x height canvas.
@@ -38,13 +42,6 @@ inline PixelSet book_fill_pixels(const Vertices& v, int width, int height) {
 /// How many pixels are in exactly one of the two sets.
 inline int differing_pixels(const PixelSet& a, const PixelSet& b) {
   return static_cast<int>(tri::testing::symmetric_difference(a, b).size());
-}
-
-/// Three vertices with both coordinates in [low, high].
-inline Vertices random_vertices(tri::testing::Random& random, int low, int high) {
-  Vertices v;
-  for (glm::ivec2& p : v) p = {random.integer(low, high), random.integer(low, high)};
-  return v;
 }
 
 /// Twice the signed area, in 64 bits; zero for collinear vertices.

@@ -14,8 +14,6 @@ using tri::Canvas;
 
 namespace {
 
-const Vertices hand{{{1, 0}, {6, 3}, {2, 5}}};
-
 PixelSet spans_pixels(int first_row, const LeftRightXs& spans) {
   Canvas canvas(16, 16);
   canvas.enable_write_counts();
@@ -27,7 +25,7 @@ PixelSet spans_pixels(int first_row, const LeftRightXs& spans) {
 
 TEST_CASE("Trap `i < i1`: every edge array reaches its upper vertex's row",
           "[03_interpolate_fill][traps]") {
-  const SortedTriangle t = sort_by_y(hand[0], hand[1], hand[2]);
+  const SortedTriangle t = sort_by_y(hand_triangle[0], hand_triangle[1], hand_triangle[2]);
   const EdgeXs e = interpolate_edges(t, triangle_rows(t));
   CHECK(e.x01.size() == 4);  // rows 0..3, not 0..2
   CHECK(e.x12.size() == 3);  // rows 3..5
@@ -38,7 +36,7 @@ TEST_CASE("Trap `i < i1`: every edge array reaches its upper vertex's row",
 
 TEST_CASE("Traps `y < P2.y` and `x < x_right`: the top row and each span's right end are drawn",
           "[03_interpolate_fill][traps]") {
-  const PixelSet pixels = fill_pixels(hand, 16, 16);
+  const PixelSet pixels = fill_pixels(hand_triangle, 16, 16);
   CHECK(pixels.count({2, 5}) == 1);  // row y2, the apex P2
   // The right end of every row: round(x012) = 1, 3, 4, 6, 4, 2 on rows 0..5.
   const int right_ends[] = {1, 3, 4, 6, 4, 2};
@@ -50,7 +48,7 @@ TEST_CASE("Traps `y < P2.y` and `x < x_right`: the top row and each span's right
 
 TEST_CASE("Trap: without the pop_back, x012 is one row too long and every row above P1 shifts",
           "[03_interpolate_fill][traps][pop_back]") {
-  const SortedTriangle t = sort_by_y(hand[0], hand[1], hand[2]);
+  const SortedTriangle t = sort_by_y(hand_triangle[0], hand_triangle[1], hand_triangle[2]);
   const EdgeXs e = interpolate_edges(t, triangle_rows(t));
   const std::vector<double> x012 = concatenate_short_sides(e.x01, e.x12);
   std::vector<double> doubled = e.x01;  // the port: pop_back commented out
@@ -72,7 +70,7 @@ TEST_CASE("Trap: the port's one-short Interpolate hides its missing pop_back",
           "[03_interpolate_fill][traps][pop_back]") {
   // Dropping each array's last value mimics `i < i1`. Then x01 no longer ends on row y1, so
   // x01 + x12 happens to have the right length and values, and only the top row is lost.
-  const SortedTriangle t = sort_by_y(hand[0], hand[1], hand[2]);
+  const SortedTriangle t = sort_by_y(hand_triangle[0], hand_triangle[1], hand_triangle[2]);
   EdgeXs e = interpolate_edges(t, triangle_rows(t));
   const std::vector<double> x012 = concatenate_short_sides(e.x01, e.x12);
   for (auto* array : {&e.x01, &e.x12, &e.x02}) array->pop_back();
@@ -106,7 +104,8 @@ TEST_CASE("Trap: real vertices are rounded to the nearest pixel centre, also bel
     fill.draw(canvas, triangle, tri::colors::white);
     return tri::testing::written_pixels(canvas);
   };
-  CHECK(registered_pixels({{{1.4, 0.4}, {5.6, 2.6}, {2.2, 4.6}}}) == fill_pixels(hand, 16, 16));
+  CHECK(registered_pixels({{{1.4, 0.4}, {5.6, 2.6}, {2.2, 4.6}}}) ==
+        fill_pixels(hand_triangle, 16, 16));
   // -0.6 is nearest to -1; an int conversion would truncate it towards zero, to 0.
   const PixelSet below_zero = registered_pixels({{{-0.6, 0.2}, {6.4, -0.3}, {5.7, 6.5}}});
   CHECK(below_zero == fill_pixels({{{-1, 0}, {6, 0}, {6, 7}}}, 16, 16));

@@ -3,28 +3,21 @@
 #include <catch2/catch.hpp>
 
 #include "tests/support/pixels.hpp"
+#include "tests/support/registry_checks.hpp"
+
+using namespace tri;
+using namespace tri::testing;
 
 namespace {
 
-using tri::Canvas;
-using tri::Triangle;
-using tri::TriangleAlgorithm;
-using tri::testing::PixelSet;
-using tri::testing::written_pixels;
-
 const TriangleAlgorithm& registered(std::string_view name) {
-  for (const auto& algorithm : tri::ch04::triangle_algorithms()) {
-    if (algorithm.name == name) return algorithm;
-  }
-  FAIL("no algorithm named " << name);
-  throw std::logic_error("unreachable");
+  return algorithm_named(ch04::triangle_algorithms(), name);
 }
 
 PixelSet drawn(const TriangleAlgorithm& algorithm, const Triangle& triangle, int size = 64) {
   Canvas canvas(size, size);
   canvas.enable_write_counts();
-  CHECK(tri::draw_triangle(algorithm, canvas, triangle, tri::colors::white) ==
-        tri::DrawResult::drawn);
+  CHECK(draw_triangle(algorithm, canvas, triangle, colors::white) == DrawResult::drawn);
   CHECK(canvas.outside_writes() == 0);
   return written_pixels(canvas);
 }
@@ -39,12 +32,11 @@ struct Deviation {
 };
 
 Deviation deviation_on_random_triangles(const TriangleAlgorithm& algorithm) {
-  tri::testing::Random random(2024);
+  Random random(2024);
   Deviation deviation;
   for (int n = 0; n < 1000; ++n) {
-    glm::ivec2 v[3];
-    for (auto& p : v) p = {random.integer(-4, 67), random.integer(-4, 67)};
-    const PixelSet truth = tri::testing::inclusive_pixels(v[0], v[1], v[2], 64, 64);
+    const VertexTriple v = random_vertices(random, -4, 67);
+    const PixelSet truth = inclusive_pixels(v[0], v[1], v[2], 64, 64);
     if (truth.empty()) continue;  // zero area (or entirely off the canvas)
     const PixelSet got = drawn(algorithm, {glm::dvec2(v[0]), glm::dvec2(v[1]), glm::dvec2(v[2])});
     ++deviation.triangles;
@@ -55,44 +47,38 @@ Deviation deviation_on_random_triangles(const TriangleAlgorithm& algorithm) {
   return deviation;
 }
 
+// The deviation of the registered algorithm `name`, checked field by field against `expected`.
+void check_deviation(std::string_view name, const Deviation& expected) {
+  const Deviation d = deviation_on_random_triangles(registered(name));
+  CHECK(d.triangles == expected.triangles);
+  CHECK(d.covered == expected.covered);
+  CHECK(d.missed == expected.missed);
+  CHECK(d.extra == expected.extra);
+}
+
 }  // namespace
 
 TEST_CASE("Chapter 04 registers the two-loop and the single-loop fills as approximate",
           "[04_scanline][algorithms][registry]") {
-  const auto algorithms = tri::ch04::triangle_algorithms();
-  REQUIRE(algorithms.size() == 2);
-  CHECK(algorithms[0].name == "scanline_two_loops");
-  CHECK(algorithms[1].name == "scanline_single_loop");
-  for (const auto& algorithm : algorithms) {
-    CHECK(algorithm.chapter == "04_scanline");
-    CHECK(algorithm.rule == tri::CoverageRule::approximate);
-    CHECK_FALSE(algorithm.summary.empty());
-    CHECK(algorithm.draw != nullptr);
-    CHECK_FALSE(algorithm.threaded);
-  }
+  check_chapter_entries(ch04::triangle_algorithms(), "04_scanline",
+                        {"scanline_two_loops", "scanline_single_loop"}, CoverageRule::approximate);
 }
 
 TEST_CASE("The single-loop fill never misses an inclusive pixel and its int casts add extras",
           "[04_scanline][traps][registry][deviation]") {
-  const Deviation d = deviation_on_random_triangles(registered("scanline_single_loop"));
-  CHECK(d.triangles == 999);
-  CHECK(d.covered == 392828);
-  CHECK(d.missed == 0);
-  CHECK(d.extra == 29776);
+  check_deviation("scanline_single_loop",
+                  {.triangles = 999, .covered = 392828, .missed = 0, .extra = 29776});
 }
 
 TEST_CASE("The two-loop fill both misses and adds pixels against the inclusive truth",
           "[04_scanline][traps][registry][deviation]") {
-  const Deviation d = deviation_on_random_triangles(registered("scanline_two_loops"));
-  CHECK(d.triangles == 999);
-  CHECK(d.covered == 392828);
-  CHECK(d.missed == 9043);
-  CHECK(d.extra == 41734);
+  check_deviation("scanline_two_loops",
+                  {.triangles = 999, .covered = 392828, .missed = 9043, .extra = 41734});
 }
 
 TEST_CASE("Registered fills round each vertex to its nearest pixel centre",
           "[04_scanline][algorithms][registry]") {
-  for (const auto& algorithm : tri::ch04::triangle_algorithms()) {
+  for (const auto& algorithm : ch04::triangle_algorithms()) {
     const PixelSet exact = drawn(algorithm, {{{0, 0}, {6, 2}, {2, 5}}});
     CHECK(drawn(algorithm, {{{0.4, -0.5}, {5.5, 2.49}, {1.6, 4.5}}}) == exact);
     CHECK(drawn(algorithm, {{{0.5, 0}, {6, 2}, {2, 5}}}) != exact);  // halves round up
@@ -101,7 +87,7 @@ TEST_CASE("Registered fills round each vertex to its nearest pixel centre",
 
 TEST_CASE("Registered fills draw nothing for a point or a horizontal segment",
           "[04_scanline][algorithms][registry][safety]") {
-  for (const auto& algorithm : tri::ch04::triangle_algorithms()) {
+  for (const auto& algorithm : ch04::triangle_algorithms()) {
     CHECK(drawn(algorithm, {{{0, 0}, {0, 0}, {0, 0}}}).empty());
     CHECK(drawn(algorithm, {{{3, 7}, {30, 7}, {12, 7}}}).empty());
   }
@@ -119,19 +105,16 @@ TEST_CASE(
     "Registered fills stay on the canvas and bounded for vertices at plus or minus 1e7 and 2^30",
     "[04_scanline][traps][registry][safety]") {
   for (const double far : {1e7, 1e7 + 0.3, 1073741824.0}) {
-    for (const auto& algorithm : tri::ch04::triangle_algorithms()) {
+    for (const auto& algorithm : ch04::triangle_algorithms()) {
       Canvas canvas(64, 64);
       canvas.enable_write_counts();
-      tri::draw_triangle(algorithm, canvas, {{{-far, -far}, {far, -far}, {0, far}}},
-                         tri::colors::white);
+      draw_triangle(algorithm, canvas, {{{-far, -far}, {far, -far}, {0, far}}}, colors::white);
       CHECK(canvas.outside_writes() == 0);
       for (const auto count : canvas.write_counts()) CHECK(count == 1);  // covers the canvas once
-      canvas.clear(tri::colors::black);
-      tri::draw_triangle(algorithm, canvas, {{{-far, -far}, {0, 0}, {far, far}}},
-                         tri::colors::white);
-      tri::draw_triangle(algorithm, canvas, {{{far, far}, {-far, far}, {far, -far}}},
-                         tri::colors::white);
-      tri::draw_triangle(algorithm, canvas, {{{-far, 0}, {far, 0}, {0, 0}}}, tri::colors::white);
+      canvas.clear(colors::black);
+      draw_triangle(algorithm, canvas, {{{-far, -far}, {0, 0}, {far, far}}}, colors::white);
+      draw_triangle(algorithm, canvas, {{{far, far}, {-far, far}, {far, -far}}}, colors::white);
+      draw_triangle(algorithm, canvas, {{{-far, 0}, {far, 0}, {0, 0}}}, colors::white);
       CHECK(canvas.outside_writes() == 0);
       for (const auto count : canvas.write_counts()) CHECK(count <= 3);
     }

@@ -5,19 +5,17 @@
 
 #include "chapters/05_edge_function/algorithms.hpp"
 #include "tests/support/pixels.hpp"
+#include "tests/support/registry_checks.hpp"
 
-using tri::Canvas;
-using tri::DrawResult;
-using tri::Triangle;
-using tri::testing::inclusive_pixels;
-using tri::testing::PixelSet;
+using namespace tri;
+using namespace tri::testing;
 
 namespace {
 
 constexpr double two_to_30 = 1073741824.0;
 
-const tri::TriangleAlgorithm& edge_function() {
-  const auto algorithms = tri::ch05::triangle_algorithms();
+const TriangleAlgorithm& edge_function() {
+  const auto algorithms = ch05::triangle_algorithms();
   REQUIRE(algorithms.size() == 1);
   return algorithms.front();
 }
@@ -27,33 +25,27 @@ const tri::TriangleAlgorithm& edge_function() {
 PixelSet drawn(const Triangle& triangle, int size = 32) {
   Canvas canvas(size, size);
   canvas.enable_write_counts();
-  REQUIRE(tri::draw_triangle(edge_function(), canvas, triangle, tri::colors::white) ==
-          DrawResult::drawn);
+  REQUIRE(draw_triangle(edge_function(), canvas, triangle, colors::white) == DrawResult::drawn);
   CHECK(canvas.outside_writes() == 0);
-  CHECK(tri::testing::overdrawn_pixels(canvas).empty());
-  return tri::testing::written_pixels(canvas);
+  CHECK(overdrawn_pixels(canvas).empty());
+  return written_pixels(canvas);
 }
 
 }  // namespace
 
 TEST_CASE("Chapter 05 registers edge_function as an inclusive algorithm",
           "[05_edge_function][step4][registry]") {
-  const tri::TriangleAlgorithm& algorithm = edge_function();
-  CHECK(algorithm.name == "edge_function");
-  CHECK(algorithm.chapter == "05_edge_function");
-  CHECK(algorithm.rule == tri::CoverageRule::inclusive);
-  CHECK_FALSE(algorithm.summary.empty());
-  CHECK_FALSE(algorithm.threaded);
+  check_chapter_entries(ch05::triangle_algorithms(), "05_edge_function", {"edge_function"},
+                        CoverageRule::inclusive);
 }
 
 TEST_CASE("edge_function covers exactly the inclusive pixels of random integer triangles",
           "[05_edge_function][step4][registry][random]") {
-  tri::testing::Random random(5301);
+  Random random(5301);
   int tested = 0;
   for (int i = 0; i < 3000; ++i) {
-    std::array<glm::ivec2, 3> v{};
-    for (auto& vertex : v) vertex = {random.integer(-8, 40), random.integer(-8, 40)};
-    if (tri::testing::doubled_area(v[0], v[1], v[2]) == 0) continue;
+    const VertexTriple v = random_vertices(random, -8, 40);
+    if (doubled_area(v[0], v[1], v[2]) == 0) continue;
     const Triangle triangle{glm::dvec2(v[0]), glm::dvec2(v[1]), glm::dvec2(v[2])};
     REQUIRE(drawn(triangle) == inclusive_pixels(v[0], v[1], v[2], 32, 32));
     ++tested;
@@ -63,13 +55,13 @@ TEST_CASE("edge_function covers exactly the inclusive pixels of random integer t
 
 TEST_CASE("edge_function rounds each vertex to the nearest pixel centre first",
           "[05_edge_function][step4][registry]") {
-  tri::testing::Random random(5302);
+  Random random(5302);
   for (int i = 0; i < 500; ++i) {
     Triangle triangle{};
     for (auto& vertex : triangle) vertex = {random.real(-8, 40), random.real(-8, 40)};
-    const glm::ivec2 a = tri::nearest_pixel(triangle[0]), b = tri::nearest_pixel(triangle[1]),
-                     c = tri::nearest_pixel(triangle[2]);
-    if (tri::testing::doubled_area(a, b, c) == 0) continue;
+    const glm::ivec2 a = nearest_pixel(triangle[0]), b = nearest_pixel(triangle[1]),
+                     c = nearest_pixel(triangle[2]);
+    if (doubled_area(a, b, c) == 0) continue;
     REQUIRE(drawn(triangle) == inclusive_pixels(a, b, c, 32, 32));
   }
   // 2.5 rounds up to 3 and 0.49 down to 0.
@@ -96,9 +88,8 @@ TEST_CASE("edge_function stays on the canvas for vertices at 1e7 and 2^30",
     CHECK(drawn({glm::dvec2(0, far), glm::dvec2(far, -far), glm::dvec2(-far, -far)}).size() ==
           32 * 32);
     const Triangle sliver{glm::dvec2(-far, 3), glm::dvec2(far, 5), glm::dvec2(-far, 4)};
-    CHECK(drawn(sliver) == inclusive_pixels(tri::nearest_pixel(sliver[0]),
-                                            tri::nearest_pixel(sliver[1]),
-                                            tri::nearest_pixel(sliver[2]), 32, 32));
+    CHECK(drawn(sliver) == inclusive_pixels(nearest_pixel(sliver[0]), nearest_pixel(sliver[1]),
+                                            nearest_pixel(sliver[2]), 32, 32));
     CHECK(drawn({glm::dvec2(far, far), glm::dvec2(far, -far), glm::dvec2(far, 0)}).empty());
   }
 }

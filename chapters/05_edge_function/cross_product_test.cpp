@@ -9,6 +9,7 @@ using tri::ch05::cross_2d;
 using tri::ch05::edge_cross;
 using tri::ch05::edge_crosses;
 using tri::ch05::edge_crosses_published_bug;
+using tri::testing::random_point;
 
 namespace {
 
@@ -19,11 +20,6 @@ constexpr std::int64_t two_to_62 = std::int64_t{1} << 62;
 
 Wide wide_cross(glm::ivec2 a, glm::ivec2 b, glm::ivec2 p) {
   return (Wide{b.x} - a.x) * (Wide{p.y} - a.y) - (Wide{b.y} - a.y) * (Wide{p.x} - a.x);
-}
-
-glm::ivec2 random_point(tri::testing::Random& random, int low, int high) {
-  const int x = random.integer(low, high);
-  return {x, random.integer(low, high)};
 }
 
 }  // namespace

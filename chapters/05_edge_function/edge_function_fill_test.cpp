@@ -11,12 +11,9 @@
 #include "chapters/05_edge_function/edge_function_fill.hpp"
 #include "tests/support/pixels.hpp"
 
+using namespace tri::ch05;
+using namespace tri::testing;
 using tri::Canvas;
-using tri::ch05::fill_triangle_edge_function;
-using tri::ch05::fill_triangle_published_bug;
-using tri::testing::inclusive_pixels;
-using tri::testing::PixelSet;
-using tri::testing::written_pixels;
 
 namespace {
 
@@ -30,7 +27,7 @@ PixelSet drawn(Fill fill, glm::ivec2 a, glm::ivec2 b, glm::ivec2 c, int width, i
   canvas.enable_write_counts();
   fill(canvas, a, b, c, tri::colors::white);
   CHECK(canvas.outside_writes() == 0);
-  CHECK(tri::testing::overdrawn_pixels(canvas).empty());
+  CHECK(overdrawn_pixels(canvas).empty());
   return written_pixels(canvas);
 }
 
@@ -68,18 +65,17 @@ TEST_CASE("The fill paints exactly the 16 hand-checked pixels of a small triangl
 
 TEST_CASE("The fill covers the inclusive pixels of random triangles in all six vertex orders",
           "[05_edge_function][step4][fill][random]") {
-  tri::testing::Random random(5201);
+  Random random(5201);
   int clockwise = 0, counter_clockwise = 0;
   for (int i = 0; i < 1000; ++i) {
-    std::array<glm::ivec2, 3> v{};
-    for (auto& vertex : v) vertex = {random.integer(-8, 40), random.integer(-8, 40)};
-    const std::int64_t area = tri::ch05::edge_cross(v[0], v[1], v[2]);
+    const VertexTriple v = random_vertices(random, -8, 40);
+    const std::int64_t area = edge_cross(v[0], v[1], v[2]);
     if (area == 0) continue;  // zero area: pinned in its own test
     const PixelSet expected = inclusive_pixels(v[0], v[1], v[2], 32, 32);
     std::array<int, 3> order{0, 1, 2};
     do {
       const glm::ivec2 a = v[order[0]], b = v[order[1]], c = v[order[2]];
-      (tri::ch05::edge_cross(a, b, c) > 0 ? counter_clockwise : clockwise) += 1;
+      (edge_cross(a, b, c) > 0 ? counter_clockwise : clockwise) += 1;
       REQUIRE(filled(a, b, c, 32, 32) == expected);
     } while (std::next_permutation(order.begin(), order.end()));
   }
@@ -110,7 +106,7 @@ TEST_CASE("The published test draws other pixels than the right one on the tinyr
     const auto& [a, b, c] = tinyrenderer_triangles[i].vertices;
     const PixelSet right = filled(a, b, c, 200, 200);
     const PixelSet published = drawn(fill_triangle_published_bug, a, b, c, 200, 200);
-    const PixelSet both = tri::testing::intersection(right, published);
+    const PixelSet both = intersection(right, published);
     CHECK(right.size() == expected[i].right);
     CHECK(published.size() == expected[i].published);
     CHECK(both.size() == expected[i].both);
@@ -136,7 +132,7 @@ TEST_CASE("Zero-area triangles draw the pixel centres lying exactly on their seg
   CHECK(filled({2, 3}, {9, 3}, {5, 3}, 32, 32).size() == 8);    // horizontal
   CHECK(filled({4, 9}, {4, 1}, {4, 40}, 32, 32).size() == 31);  // vertical, clipped above y = 31
 
-  tri::testing::Random random(5202);
+  Random random(5202);
   for (int i = 0; i < 500; ++i) {
     const glm::ivec2 p(random.integer(-10, 40), random.integer(-10, 40));
     const glm::ivec2 d(random.integer(-6, 6), random.integer(-6, 6));
@@ -179,14 +175,14 @@ TEST_CASE("Vertices at 1e7 and 2^30 are clipped to the canvas with no outside wr
   CHECK(sliver.size() == 4 * 32 + 1);
   CHECK(sliver.count({0, 11}) == 1);
 
-  tri::testing::Random random(5203);
+  Random random(5203);
   for (const int far : {10'000'000, two_to_30}) {
     for (int i = 0; i < 300; ++i) {
       // Two far vertices and one near the canvas, so most triangles cross it.
       const glm::ivec2 p(random.integer(-far, far), random.integer(-far, far));
       const glm::ivec2 q(random.integer(-far, far), random.integer(-far, far));
       const glm::ivec2 r(random.integer(-8, 40), random.integer(-8, 40));
-      if (tri::ch05::edge_cross(p, q, r) == 0) continue;
+      if (edge_cross(p, q, r) == 0) continue;
       REQUIRE(filled(p, q, r, 32, 32) == inclusive_pixels(p, q, r, 32, 32));
     }
   }

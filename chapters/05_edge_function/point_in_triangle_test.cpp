@@ -8,12 +8,8 @@
 #include "chapters/05_edge_function/point_in_triangle.hpp"
 #include "tests/support/pixels.hpp"
 
-using tri::ch05::edge_cross;
-using tri::ch05::edge_crosses;
-using tri::ch05::inside_triangle;
-using tri::ch05::inside_triangle_published_bug;
-using tri::ch05::same_sign_or_zero;
-using tri::testing::PixelSet;
+using namespace tri::ch05;
+using namespace tri::testing;
 
 namespace {
 
@@ -65,10 +61,9 @@ TEST_CASE("The inside test includes the vertices and the pixel centres on the ed
 
 TEST_CASE("The inside test answers the same for both windings and all six vertex orders",
           "[05_edge_function][step3][inside]") {
-  tri::testing::Random random(5101);
+  Random random(5101);
   for (int i = 0; i < 300; ++i) {
-    std::array<glm::ivec2, 3> v{};
-    for (auto& vertex : v) vertex = {random.integer(-4, 24), random.integer(-4, 24)};
+    const VertexTriple v = random_vertices(random, -4, 24);
     const PixelSet first =
         pixels_passing(20, 20, [&](glm::ivec2 p) { return inside_triangle(v[0], v[1], v[2], p); });
     std::array<int, 3> order{0, 1, 2};

@@ -5,29 +5,16 @@
 #include "chapters/06_barycentric/algorithms.hpp"
 #include "chapters/06_barycentric/fill.hpp"
 #include "chapters/06_barycentric/random_triangles.hpp"
+#include "tests/support/registry_checks.hpp"
 
-using tri::Canvas;
-using tri::CoverageRule;
-using tri::TriangleAlgorithm;
-using tri::ch06::PixelTriangle;
-using tri::ch06::testing::random_triangle;
-using tri::ch06::testing::triangle_with_edge_through_canvas;
-using tri::testing::inclusive_pixels;
-using tri::testing::PixelSet;
-using tri::testing::Random;
-using tri::testing::written_pixels;
+using namespace tri;
+using namespace tri::ch06;
+using namespace tri::ch06::testing;
+using namespace tri::testing;
 
 namespace {
 
-const TriangleAlgorithm& algorithm_named(std::string_view name) {
-  for (const TriangleAlgorithm& algorithm : tri::ch06::triangle_algorithms()) {
-    if (algorithm.name == name) return algorithm;
-  }
-  FAIL("no algorithm named " << name);
-  throw;  // unreachable: FAIL throws
-}
-
-tri::Triangle as_doubles(const PixelTriangle& t) {
+Triangle as_doubles(const PixelTriangle& t) {
   return {glm::dvec2(t[0]), glm::dvec2(t[1]), glm::dvec2(t[2])};
 }
 
@@ -46,8 +33,7 @@ Deviation measure(const TriangleAlgorithm& algorithm, const std::vector<PixelTri
   for (const PixelTriangle& t : triangles) {
     Canvas canvas(size, size);
     canvas.enable_write_counts();
-    REQUIRE(tri::draw_triangle(algorithm, canvas, as_doubles(t), tri::colors::white) ==
-            tri::DrawResult::drawn);
+    REQUIRE(draw_triangle(algorithm, canvas, as_doubles(t), colors::white) == DrawResult::drawn);
     const PixelSet drawn = written_pixels(canvas);
     const PixelSet exact = inclusive_pixels(t[0], t[1], t[2], size, size);
     long long missed = 0, extra = 0;
@@ -65,7 +51,7 @@ Deviation measure(const TriangleAlgorithm& algorithm, const std::vector<PixelTri
 std::vector<PixelTriangle> triangles_on_canvas(std::uint64_t seed, int count, int size) {
   Random random(seed);
   std::vector<PixelTriangle> triangles;
-  for (int i = 0; i < count; ++i) triangles.push_back(random_triangle(random, 0, size - 1));
+  for (int i = 0; i < count; ++i) triangles.push_back(random_vertices(random, 0, size - 1));
   return triangles;
 }
 
@@ -82,26 +68,17 @@ std::vector<PixelTriangle> triangles_reaching(std::uint64_t seed, int count, int
 
 TEST_CASE("Chapter 06 registers barycentric_float and barycentric_double",
           "[06_barycentric][step6][06][registry]") {
-  const auto algorithms = tri::ch06::triangle_algorithms();
-  REQUIRE(algorithms.size() == 2);
-  CHECK(algorithms[0].name == "barycentric_float");
-  CHECK(algorithms[1].name == "barycentric_double");
-  for (const TriangleAlgorithm& algorithm : algorithms) {
-    CHECK(algorithm.chapter == "06_barycentric");
-    CHECK(algorithm.rule == CoverageRule::approximate);
-    CHECK_FALSE(algorithm.summary.empty());
-    CHECK_FALSE(algorithm.threaded);
-  }
+  check_chapter_entries(ch06::triangle_algorithms(), "06_barycentric",
+                        {"barycentric_float", "barycentric_double"}, CoverageRule::approximate);
 }
 
 TEST_CASE("The registered algorithms round the vertices to the nearest pixel centre",
           "[06_barycentric][step6][06][registry]") {
-  for (const TriangleAlgorithm& algorithm : tri::ch06::triangle_algorithms()) {
+  for (const TriangleAlgorithm& algorithm : ch06::triangle_algorithms()) {
     Canvas canvas(8, 8);
     canvas.enable_write_counts();
     // Rounds to the hand-checked triangle (1,1), (6,2), (3,5).
-    tri::draw_triangle(algorithm, canvas, {{{0.5, 1.49}, {6.4, 1.5}, {2.6, 5.2}}},
-                       tri::colors::white);
+    draw_triangle(algorithm, canvas, {{{0.5, 1.49}, {6.4, 1.5}, {2.6, 5.2}}}, colors::white);
     CHECK(written_pixels(canvas) ==
           inclusive_pixels({1, 1}, {6, 2}, {3, 5}, canvas.width(), canvas.height()));
   }
@@ -110,7 +87,7 @@ TEST_CASE("The registered algorithms round the vertices to the nearest pixel cen
 TEST_CASE("Both algorithms cover exactly the inclusive pixels on a 256x256 canvas",
           "[06_barycentric][step6][06][registry][deviation]") {
   const auto triangles = triangles_on_canvas(608, 200, 256);
-  for (const TriangleAlgorithm& algorithm : tri::ch06::triangle_algorithms()) {
+  for (const TriangleAlgorithm& algorithm : ch06::triangle_algorithms()) {
     const Deviation deviation = measure(algorithm, triangles, 256);
     INFO(algorithm.name);
     CHECK(deviation.covered == 993566);
@@ -121,8 +98,10 @@ TEST_CASE("Both algorithms cover exactly the inclusive pixels on a 256x256 canva
 
 TEST_CASE("Far outside the canvas float deviates from 10^4 on, double only beyond 10^7",
           "[06_barycentric][step6][06][registry][deviation]") {
-  const TriangleAlgorithm& with_float = algorithm_named("barycentric_float");
-  const TriangleAlgorithm& with_double = algorithm_named("barycentric_double");
+  const TriangleAlgorithm& with_float =
+      algorithm_named(ch06::triangle_algorithms(), "barycentric_float");
+  const TriangleAlgorithm& with_double =
+      algorithm_named(ch06::triangle_algorithms(), "barycentric_double");
   struct Expected {
     int reach;
     long long covered;
@@ -156,16 +135,15 @@ TEST_CASE("Far outside the canvas float deviates from 10^4 on, double only beyon
 TEST_CASE("Degenerate and huge triangles draw safely through the registry",
           "[06_barycentric][step6][06][registry]") {
   constexpr double huge = 1 << 30;
-  for (const TriangleAlgorithm& algorithm : tri::ch06::triangle_algorithms()) {
+  for (const TriangleAlgorithm& algorithm : ch06::triangle_algorithms()) {
     INFO(algorithm.name);
     Canvas canvas(32, 32);
     canvas.enable_write_counts();
-    tri::draw_triangle(algorithm, canvas, {{{0, 0}, {0, 0}, {0, 0}}}, tri::colors::white);
-    tri::draw_triangle(algorithm, canvas, {{{2, 3}, {10, 3}, {30, 3}}}, tri::colors::white);
-    tri::draw_triangle(algorithm, canvas, {{{1, 1}, {5, 9}, {7, 13}}}, tri::colors::white);
+    draw_triangle(algorithm, canvas, {{{0, 0}, {0, 0}, {0, 0}}}, colors::white);
+    draw_triangle(algorithm, canvas, {{{2, 3}, {10, 3}, {30, 3}}}, colors::white);
+    draw_triangle(algorithm, canvas, {{{1, 1}, {5, 9}, {7, 13}}}, colors::white);
     CHECK(written_pixels(canvas).empty());
-    tri::draw_triangle(algorithm, canvas, {{{-huge, -huge}, {huge, -huge}, {0, huge}}},
-                       tri::colors::white);
+    draw_triangle(algorithm, canvas, {{{-huge, -huge}, {huge, -huge}, {0, huge}}}, colors::white);
     CHECK(written_pixels(canvas).size() == 32 * 32);
     CHECK(canvas.outside_writes() == 0);
   }

@@ -9,20 +9,12 @@
 #include "chapters/06_barycentric/random_triangles.hpp"
 #include "tests/support/pixels.hpp"
 
-using tri::ch06::barycentric;
-using tri::ch06::barycentric_unguarded;
-using tri::ch06::cross_of_rows;
-using tri::ch06::degenerate_weights;
-using tri::ch06::is_inside;
-using tri::ch06::Weights;
-using tri::ch06::testing::random_point;
-using tri::testing::Random;
-
-namespace {}  // namespace
+using namespace tri::ch06;
+using namespace tri::testing;
 
 TEST_CASE("The cross product of the two rows holds both weights and twice the area",
           "[06_barycentric][step2][06][barycentric]") {
-  const auto [a, b, c] = tri::ch06::hand_checked_triangle;
+  const auto [a, b, c] = hand_checked_triangle;
   // P - A = (2, 2) = 2/9 AB + 4/9 AC, and AB x AC = 5*4 - 2*1 = 18.
   CHECK(cross_of_rows<double>(a, b, c, {3, 3}) == glm::dvec3(4, 8, 18));
   CHECK(cross_of_rows<float>(a, b, c, {3, 3}) == glm::vec3(4, 8, 18));
@@ -32,7 +24,7 @@ TEST_CASE("The cross product of the two rows holds both weights and twice the ar
 
 TEST_CASE("The weights of a hand-checked point are 1/3, 2/9 and 4/9",
           "[06_barycentric][step2][06][barycentric]") {
-  const auto [a, b, c] = tri::ch06::hand_checked_triangle;
+  const auto [a, b, c] = hand_checked_triangle;
   const Weights<double> w = barycentric<double>(a, b, c, {3, 3});
   CHECK(w.x == Approx(1.0 / 3.0).epsilon(1e-15));
   CHECK(w.y == 4.0 / 18.0);
@@ -56,12 +48,9 @@ TEST_CASE("Each vertex has the weights (1,0,0), (0,1,0), (0,0,1) exactly, even a
   int checked = 0;
   for (int i = 0; i < 2000; ++i) {
     const int reach = i < 1000 ? 300 : (1 << 30);
-    const glm::ivec2 a = random_point(random, -reach, reach);
-    const glm::ivec2 b = random_point(random, -reach, reach);
-    const glm::ivec2 c = random_point(random, -reach, reach);
+    const auto [a, b, c] = random_vertices(random, -reach, reach);
     // Skip zero areas, and huge areas that double itself rounds to zero (the guard's case).
-    if (tri::testing::doubled_area(a, b, c) == 0 || cross_of_rows<double>(a, b, c, a).z == 0)
-      continue;
+    if (doubled_area(a, b, c) == 0 || cross_of_rows<double>(a, b, c, a).z == 0) continue;
     ++checked;
     CHECK(barycentric<double>(a, b, c, a) == Weights<double>(1, 0, 0));
     CHECK(barycentric<double>(a, b, c, b) == Weights<double>(0, 1, 0));
@@ -79,11 +68,9 @@ TEST_CASE("The weights sum to 1 and rebuild the pixel they were computed for",
           "[06_barycentric][step2][06][barycentric]") {
   Random random(602);
   for (int i = 0; i < 2000; ++i) {
-    const glm::ivec2 a = random_point(random, -1000, 1000);
-    const glm::ivec2 b = random_point(random, -1000, 1000);
-    const glm::ivec2 c = random_point(random, -1000, 1000);
+    const auto [a, b, c] = random_vertices(random, -1000, 1000);
     const glm::ivec2 p = random_point(random, -1000, 1000);
-    if (tri::testing::doubled_area(a, b, c) == 0) continue;
+    if (doubled_area(a, b, c) == 0) continue;
     const Weights<double> w = barycentric<double>(a, b, c, p);
     CHECK(std::abs(w.x + w.y + w.z - 1) < 1e-9);
     const glm::dvec2 rebuilt = w.x * glm::dvec2(a) + w.y * glm::dvec2(b) + w.z * glm::dvec2(c);
@@ -94,7 +81,7 @@ TEST_CASE("The weights sum to 1 and rebuild the pixel they were computed for",
 
 TEST_CASE("Swapping two vertices swaps their weights, whatever the winding",
           "[06_barycentric][step2][06][barycentric]") {
-  const auto [a, b, c] = tri::ch06::hand_checked_triangle;
+  const auto [a, b, c] = hand_checked_triangle;
   const glm::ivec2 p(3, 3);
   const Weights<double> abc = barycentric<double>(a, b, c, p);
   const Weights<double> acb = barycentric<double>(a, c, b, p);

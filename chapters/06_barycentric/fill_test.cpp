@@ -9,23 +9,15 @@
 #include "chapters/06_barycentric/random_triangles.hpp"
 #include "tests/support/pixels.hpp"
 
+using namespace tri::ch06;
+using namespace testing;
+using namespace tri::testing;
 using tri::Canvas;
-using tri::ch06::fill_triangle_barycentric;
-using tri::ch06::fill_triangle_barycentric_unguarded;
-using tri::ch06::PixelTriangle;
-using tri::ch06::testing::filled;
-using tri::ch06::testing::filled_pixels;
-using tri::ch06::testing::random_point;
-using tri::testing::inclusive_pixels;
-using tri::testing::PixelSet;
-using tri::testing::Random;
-using tri::testing::vertex_orders;
-using tri::testing::written_pixels;
 
 namespace {
 
 PixelSet unguarded_pixels(const PixelTriangle& t, int width, int height) {
-  return tri::testing::pixels_drawn(width, height, [&](Canvas& canvas) {
+  return pixels_drawn(width, height, [&](Canvas& canvas) {
     fill_triangle_barycentric_unguarded<double>(canvas, t[0], t[1], t[2], tri::colors::white);
   });
 }
@@ -40,20 +32,15 @@ TEST_CASE("The hand-checked triangle fills exactly its 13 pixels",
                           {2, 3}, {3, 3}, {4, 3}, {5, 3},          // y = 3
                           {3, 4}, {4, 4},                          // y = 4
                           {3, 5}};                                 // y = 5
-  CHECK(filled_pixels<double>(tri::ch06::hand_checked_triangle, 8, 8) == expected);
-  CHECK(filled_pixels<float>(tri::ch06::hand_checked_triangle, 8, 8) == expected);
+  CHECK(filled_pixels<double>(hand_checked_triangle, 8, 8) == expected);
+  CHECK(filled_pixels<float>(hand_checked_triangle, 8, 8) == expected);
 }
 
 TEST_CASE("Every vertex order fills the same pixels", "[06_barycentric][step4][06][fill]") {
   Random random(603);
-  std::vector<PixelTriangle> triangles{tri::ch06::hand_checked_triangle};
+  std::vector<PixelTriangle> triangles{hand_checked_triangle};
   for (const auto& t : tri::ch02::tinyrenderer_triangles) triangles.push_back(t.vertices);
-  for (int i = 0; i < 50; ++i) {
-    const glm::ivec2 a = random_point(random, -20, 84);
-    const glm::ivec2 b = random_point(random, -20, 84);
-    const glm::ivec2 c = random_point(random, -20, 84);
-    triangles.push_back({a, b, c});
-  }
+  for (int i = 0; i < 50; ++i) triangles.push_back(random_vertices(random, -20, 84));
   for (const PixelTriangle& t : triangles) {
     const PixelSet first = filled_pixels<double>(t, 64, 64);
     for (const PixelTriangle& order : vertex_orders(t)) {
@@ -67,11 +54,8 @@ TEST_CASE("No pixel is written twice and none outside the canvas",
           "[06_barycentric][step4][06][fill]") {
   Random random(604);
   for (int i = 0; i < 100; ++i) {
-    const glm::ivec2 a = random_point(random, -40, 104);
-    const glm::ivec2 b = random_point(random, -40, 104);
-    const glm::ivec2 c = random_point(random, -40, 104);
-    const Canvas canvas = filled<float>({a, b, c}, 64, 64);
-    CHECK(tri::testing::overdrawn_pixels(canvas).empty());
+    const Canvas canvas = filled<float>(random_vertices(random, -40, 104), 64, 64);
+    CHECK(overdrawn_pixels(canvas).empty());
     CHECK(canvas.outside_writes() == 0);
   }
 }
@@ -123,9 +107,7 @@ TEST_CASE("With the guard removed a triangle of non-zero area fills the same pix
           "[06_barycentric][step4][06][fill]") {
   Random random(605);
   for (int i = 0; i < 50; ++i) {
-    const glm::ivec2 a = random_point(random, -10, 40);
-    const glm::ivec2 b = random_point(random, -10, 40);
-    const glm::ivec2 c = random_point(random, -10, 40);
+    const auto [a, b, c] = random_vertices(random, -10, 40);
     if (inclusive_pixels(a, b, c, 32, 32).empty()) continue;
     CHECK(unguarded_pixels({a, b, c}, 32, 32) == filled_pixels<double>({a, b, c}, 32, 32));
   }
@@ -133,11 +115,11 @@ TEST_CASE("With the guard removed a triangle of non-zero area fills the same pix
 
 TEST_CASE("Colouring by the weights shows each vertex's own colour at its pixel",
           "[06_barycentric][step5][06][fill][weights]") {
-  const auto [a, b, c] = tri::ch06::hand_checked_triangle;
+  const auto [a, b, c] = hand_checked_triangle;
   Canvas canvas(8, 8);
   canvas.enable_write_counts();
-  tri::ch06::fill_triangle_with_weights(canvas, a, b, c, tri::colors::red, tri::colors::green,
-                                        tri::colors::blue);
+  fill_triangle_with_weights(canvas, a, b, c, tri::colors::red, tri::colors::green,
+                             tri::colors::blue);
   CHECK(canvas.pixel(a.x, a.y) == tri::colors::red);
   CHECK(canvas.pixel(b.x, b.y) == tri::colors::green);
   CHECK(canvas.pixel(c.x, c.y) == tri::colors::blue);

@@ -1,5 +1,6 @@
 /// @file
-/// Seeded random triangles for chapter 06's tests, and the fill they test (tests only).
+/// Seeded triangles with an edge through a pixel centre for chapter 06's tests, and the fill they
+/// test (tests only). Random points and triangles in a range are tri::testing's.
 #pragma once
 
 #include "chapters/06_barycentric/examples.hpp"
@@ -8,26 +9,12 @@
 
 namespace tri::ch06::testing {
 
-/// A point with both coordinates in [low, high], x drawn first.
-inline glm::ivec2 random_point(tri::testing::Random& random, int low, int high) {
-  const int x = random.integer(low, high);
-  const int y = random.integer(low, high);
-  return {x, y};
-}
-
-/// Three vertices with coordinates in [low, high].
-inline PixelTriangle random_triangle(tri::testing::Random& random, int low, int high) {
-  const glm::ivec2 a = random_point(random, low, high);
-  const glm::ivec2 b = random_point(random, low, high);
-  const glm::ivec2 c = random_point(random, low, high);
-  return {a, b, c};
-}
-
 /// Two vertices within ±reach and the third placed so that a random pixel centre of a size x size
 /// canvas is the midpoint of an edge: the edge crosses the canvas through a pixel centre, where
 /// rounding decides. Precondition: reach + 2 * size <= 2^30.
 inline PixelTriangle triangle_with_edge_through_canvas(tri::testing::Random& random, int reach,
                                                        int size) {
+  using tri::testing::random_point;
   const glm::ivec2 a = random_point(random, -reach, reach);
   const glm::ivec2 b = random_point(random, -reach, reach);
   const glm::ivec2 m = random_point(random, 0, size - 1);

@@ -87,4 +87,17 @@ PixelSet inclusive_pixels(glm::ivec2 a, glm::ivec2 b, glm::ivec2 c, int width, i
   return set;
 }
 
+glm::ivec2 random_point(Random& random, int low, int high) {
+  const int x = random.integer(low, high);
+  const int y = random.integer(low, high);
+  return {x, y};
+}
+
+VertexTriple random_vertices(Random& random, int low, int high) {
+  const glm::ivec2 a = random_point(random, low, high);
+  const glm::ivec2 b = random_point(random, low, high);
+  const glm::ivec2 c = random_point(random, low, high);
+  return {a, b, c};
+}
+
 }  // namespace tri::testing

@@ -1,6 +1,7 @@
 /// @file
 /// Helpers the tests share: pixel sets read back from a canvas and their algebra, the six orders
-/// of a triangle's vertices, and a portable random generator.
+/// of a triangle's vertices, and a portable random generator with the points and triangles it
+/// draws.
 #pragma once
 
 #include <array>
@@ -70,5 +71,11 @@ PixelSet inclusive_pixels(glm::ivec2 a, glm::ivec2 b, glm::ivec2 c, int width, i
 
 /// The portable seeded generator, under the name the tests use.
 using Random = tri::Random;
+
+/// A point with both coordinates in [low, high], x drawn first.
+glm::ivec2 random_point(Random& random, int low, int high);
+
+/// Three points with coordinates in [low, high], drawn one after the other by random_point.
+VertexTriple random_vertices(Random& random, int low, int high);
 
 }  // namespace tri::testing
