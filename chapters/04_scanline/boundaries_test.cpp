@@ -2,19 +2,16 @@
 
 #include <catch2/catch.hpp>
 
-#include "chapters/02_wireframe/example_triangles.hpp"
 #include "chapters/04_scanline/lower_half.hpp"
 #include "chapters/04_scanline/scanline_fills.hpp"
 #include "chapters/04_scanline/scanline_test_support.hpp"
 
 namespace {
 
-using tri::ch02::tinyrenderer_triangles;
 using tri::ch04::sort_by_y;
 using tri::ch04::truncated_boundary_x;
-
-// tinyrenderer's red triangle, (10, 70), (50, 160), (70, 80).
-constexpr const auto& red = tinyrenderer_triangles[0].vertices;
+using tri::ch04::testing::red_triangle;
+using tri::ch04::testing::tinyrenderer_triangles;
 
 // The article's arithmetic for one boundary: the fraction in float, the float product cut to an
 // int by Vec2i's constructor.
@@ -39,7 +36,7 @@ TEST_CASE("Sorting by y puts the vertices bottom to top for all six orders",
       CHECK(sorted.p2 == expected.p2);
     }
   }
-  const auto sorted = sort_by_y(red[0], red[1], red[2]);
+  const auto sorted = sort_by_y(red_triangle[0], red_triangle[1], red_triangle[2]);
   CHECK(sorted.p0 == glm::ivec2(10, 70));
   CHECK(sorted.p1 == glm::ivec2(70, 80));
   CHECK(sorted.p2 == glm::ivec2(50, 160));
@@ -58,7 +55,8 @@ TEST_CASE("Sorting keeps vertices of equal y in the order they were passed",
 TEST_CASE("A boundary's x is truncated toward its start vertex, not rounded",
           "[04_scanline][step2][int-cast]") {
   // Red triangle, boundary A from (10,70) to (50,160), row 72: exact x = 10 + 80/90 = 10.89.
-  CHECK(truncated_boundary_x(red[0], red[1], 2, 90) == 10);  // rounding would give 11
+  CHECK(truncated_boundary_x(red_triangle[0], red_triangle[1], 2, 90) ==
+        10);  // rounding would give 11
   // White triangle, boundary A from (150,1) to (70,180), row 3: exact x = 150 - 160/179 = 149.11.
   CHECK(truncated_boundary_x({150, 1}, {70, 180}, 2, 179) == 150);  // rounding would give 149
   // A whole quotient is exact, in both directions.

@@ -5,23 +5,14 @@
 
 #include <catch2/catch.hpp>
 
-#include "chapters/02_wireframe/example_triangles.hpp"
 #include "chapters/04_scanline/scanline_test_support.hpp"
 
 namespace {
 
+using namespace tri::ch04;
+using namespace tri::ch04::testing;
+using namespace tri::testing;
 using tri::Canvas;
-using tri::ch02::tinyrenderer_triangles;
-using tri::ch04::fill_lower_half;
-using tri::ch04::lower_half_ends;
-using tri::ch04::sort_by_y;
-using tri::ch04::testing::add_row;
-using tri::ch04::testing::pixels_of;
-using tri::testing::PixelSet;
-using tri::testing::written_pixels;
-
-// tinyrenderer's red triangle, (10, 70), (50, 160), (70, 80).
-constexpr const auto& red = tinyrenderer_triangles[0].vertices;
 
 // Step 3 has its own colours, so it gets its own reader.
 PixelSet boundary_points(glm::ivec2 a, glm::ivec2 b, glm::ivec2 c) {
@@ -58,7 +49,7 @@ Gaps gaps_along(glm::ivec2 a, glm::ivec2 b, glm::ivec2 c, bool boundary_a) {
 TEST_CASE("Boundary B of the lower half stops short of t1 because of the +1 height",
           "[04_scanline][step3][trap]") {
   // Red triangle: t0 = (10,70), t1 = (70,80), t2 = (50,160). At row 80, B is 10/11 of the way.
-  const auto t = sort_by_y(red[0], red[1], red[2]);
+  const auto t = sort_by_y(red_triangle[0], red_triangle[1], red_triangle[2]);
   const auto top = lower_half_ends(t, 80);
   CHECK(top.b == 64);  // 10 + 60 * 10 / 11 = 64.5, truncated; t1.x is 70
   CHECK(top.a == 14);  // 10 + 40 * 10 / 90 = 14.4, truncated

@@ -3,19 +3,16 @@
 #include <catch2/catch.hpp>
 
 #include "chapters/01_lines/lines.hpp"
-#include "chapters/02_wireframe/example_triangles.hpp"
 #include "chapters/04_scanline/boundaries.hpp"
 #include "chapters/04_scanline/scanline_test_support.hpp"
 
 namespace {
 
 using tri::Canvas;
-using tri::ch02::tinyrenderer_triangles;
+using tri::ch04::testing::red_triangle;
+using tri::ch04::testing::tinyrenderer_triangles;
 using tri::testing::PixelSet;
 using tri::testing::written_pixels;
-
-// tinyrenderer's red triangle, (10, 70), (50, 160), (70, 80).
-constexpr const auto& red = tinyrenderer_triangles[0].vertices;
 
 // The pixels of chapter 01's Bresenham line from p to q.
 PixelSet line_pixels(glm::ivec2 p, glm::ivec2 q) {
@@ -83,7 +80,7 @@ TEST_CASE("Step 2 draws boundary A from t0 to t2 in red over boundary B in green
   }
   // The red triangle: A is the long edge on the left, rising from (10,70) to (50,160).
   Canvas canvas(200, 200);
-  tri::ch04::draw_sorted_boundaries(canvas, red[0], red[1], red[2]);
+  tri::ch04::draw_sorted_boundaries(canvas, red_triangle[0], red_triangle[1], red_triangle[2]);
   CHECK(canvas.pixel(10, 70) == tri::colors::red);
   CHECK(canvas.pixel(50, 160) == tri::colors::red);
   CHECK(canvas.pixel(70, 80) == tri::colors::green);

@@ -2,28 +2,14 @@
 
 #include <catch2/catch.hpp>
 
-#include "chapters/02_wireframe/example_triangles.hpp"
 #include "chapters/04_scanline/scanline_test_support.hpp"
 
 namespace {
 
+using namespace tri::ch04;
+using namespace tri::ch04::testing;
+using namespace tri::testing;
 using tri::Canvas;
-using tri::ch02::tinyrenderer_triangles;
-using tri::ch04::fill_single_loop;
-using tri::ch04::fill_single_loop_as_published;
-using tri::ch04::fill_two_loops;
-using tri::ch04::sort_by_y;
-using tri::ch04::testing::add_row;
-using tri::ch04::testing::drawn_by;
-using tri::ch04::testing::pixels_of;
-using tri::testing::inclusive_pixels;
-using tri::testing::minus;
-using tri::testing::overdrawn_pixels;
-using tri::testing::PixelSet;
-using tri::testing::vertex_orders;
-
-// tinyrenderer's red triangle, (10, 70), (50, 160), (70, 80).
-constexpr const auto& red = tinyrenderer_triangles[0].vertices;
 
 // The rows a pixel set touches.
 std::set<int> rows_of(const PixelSet& pixels) {
@@ -41,13 +27,8 @@ bool has_tied_y(glm::ivec2 a, glm::ivec2 b, glm::ivec2 c) {
 TEST_CASE("Step 6 fills a small hand-checked triangle row by row", "[04_scanline][step6]") {
   // t0 = (0,0), t1 = (6,2), t2 = (2,5). A: x = 2i/5. B: 6i/2 for i <= 2, then 6 - 4(i-2)/3.
   // Each truncated toward its start vertex: rows 0..5 span [0,0] [0,3] [0,6] [1,5] [1,4] [2,2].
-  PixelSet expected;
-  add_row(expected, 0, 0, 0);
-  add_row(expected, 1, 0, 3);
-  add_row(expected, 2, 0, 6);
-  add_row(expected, 3, 1, 5);
-  add_row(expected, 4, 1, 4);
-  add_row(expected, 5, 2, 2);
+  const PixelSet expected =
+      pixels_in_rows({{0, 0, 0}, {1, 0, 3}, {2, 0, 6}, {3, 1, 5}, {4, 1, 4}, {5, 2, 2}});
   const PixelSet filled = pixels_of(fill_single_loop, {0, 0}, {6, 2}, {2, 5}, 8, 6);
   CHECK(filled == expected);
   // The centres inside or on the triangle span [0,0] [1,3] [1,6] [2,4] [2,3] [2,2]: the int
@@ -61,15 +42,10 @@ TEST_CASE("Step 5 fills the same triangle with bent B boundaries and row t1.y tw
           "[04_scanline][step5]") {
   // Lower loop B = 6i/3 (the +1 height): [0,0] [0,2] [0,4]; upper loop B = 6 - 4i/4: rows 2..5
   // [0,6] [1,5] [1,4] [2,3].
-  PixelSet expected;
-  add_row(expected, 0, 0, 0);
-  add_row(expected, 1, 0, 2);
-  add_row(expected, 2, 0, 6);
-  add_row(expected, 3, 1, 5);
-  add_row(expected, 4, 1, 4);
-  add_row(expected, 5, 2, 3);
+  const PixelSet expected =
+      pixels_in_rows({{0, 0, 0}, {1, 0, 2}, {2, 0, 6}, {3, 1, 5}, {4, 1, 4}, {5, 2, 3}});
   const Canvas canvas = drawn_by(fill_two_loops, {0, 0}, {6, 2}, {2, 5}, 8, 6);
-  const PixelSet filled = tri::testing::written_pixels(canvas);
+  const PixelSet filled = written_pixels(canvas);
   CHECK(filled == expected);
   CHECK(overdrawn_pixels(canvas) == PixelSet{{0, 2}, {1, 2}, {2, 2}, {3, 2}, {4, 2}});
   // Against the single loop: loses (3,1), which lies on the edge t0-t1, and adds (3,5) beside t2.
@@ -82,13 +58,15 @@ TEST_CASE("The int cast puts (10,72) into the red triangle though its centre lie
           "[04_scanline][traps][int-cast][trap]") {
   // Row 72 of the red triangle: boundary A is at x = 10 + 40 * 2/90 = 10.89. Truncation starts
   // the span at 10; rounding would start it at 11, the first centre inside.
-  const PixelSet filled = pixels_of(fill_single_loop, red[0], red[1], red[2]);
-  const PixelSet inside = inclusive_pixels(red[0], red[1], red[2], 200, 200);
+  const PixelSet filled =
+      pixels_of(fill_single_loop, red_triangle[0], red_triangle[1], red_triangle[2]);
+  const PixelSet inside =
+      inclusive_pixels(red_triangle[0], red_triangle[1], red_triangle[2], 200, 200);
   CHECK(filled.count({10, 72}) == 1);
   CHECK(inside.count({10, 72}) == 0);
   CHECK(inside.count({11, 72}) == 1);
-  const auto t = sort_by_y(red[0], red[1], red[2]);
-  CHECK(tri::ch04::single_loop_ends(t, 2).a == 10);
+  const auto t = sort_by_y(red_triangle[0], red_triangle[1], red_triangle[2]);
+  CHECK(single_loop_ends(t, 2).a == 10);
 }
 
 TEST_CASE("The two-loop fill draws row t1.y twice", "[04_scanline][step5]") {
@@ -121,23 +99,17 @@ TEST_CASE("The published single loop stops one row short and never draws row t2.
   // A flat top loses its whole top edge: (0,3) .. (4,3).
   const PixelSet lost = minus(pixels_of(fill_single_loop, {2, 0}, {0, 3}, {4, 3}),
                               pixels_of(fill_single_loop_as_published, {2, 0}, {0, 3}, {4, 3}));
-  PixelSet top_edge;
-  add_row(top_edge, 3, 0, 4);
-  CHECK(lost == top_edge);
+  CHECK(lost == pixels_in_rows({{3, 0, 4}}));
 }
 
 TEST_CASE("The single loop takes the second half from the first row when t0.y == t1.y",
           "[04_scanline][traps][step6][division-by-zero]") {
   // Without `|| t1.y == t0.y`, row 0 would divide 0 by a lower height of 0.
   const auto t = sort_by_y({0, 0}, {4, 0}, {2, 3});
-  const auto first_row = tri::ch04::single_loop_ends(t, 0);
+  const auto first_row = single_loop_ends(t, 0);
   CHECK(first_row.a == 0);
   CHECK(first_row.b == 4);
-  PixelSet expected;
-  add_row(expected, 0, 0, 4);
-  add_row(expected, 1, 0, 4);
-  add_row(expected, 2, 1, 3);
-  add_row(expected, 3, 2, 2);
+  const PixelSet expected = pixels_in_rows({{0, 0, 4}, {1, 0, 4}, {2, 1, 3}, {3, 2, 2}});
   for (const auto& order : vertex_orders({0, 0}, {4, 0}, {2, 3})) {
     CHECK(pixels_of(fill_single_loop, order[0], order[1], order[2]) == expected);
   }
@@ -145,9 +117,7 @@ TEST_CASE("The single loop takes the second half from the first row when t0.y ==
 
 TEST_CASE("The single loop stays in the first half to the top when t1.y == t2.y",
           "[04_scanline][step6][division-by-zero]") {
-  PixelSet expected{{2, 0}, {2, 1}};
-  add_row(expected, 2, 1, 3);
-  add_row(expected, 3, 0, 4);
+  const PixelSet expected = pixels_in_rows({{0, 2, 2}, {1, 2, 2}, {2, 1, 3}, {3, 0, 4}});
   for (const auto& order : vertex_orders({2, 0}, {0, 3}, {4, 3})) {
     CHECK(pixels_of(fill_single_loop, order[0], order[1], order[2]) == expected);
   }
@@ -157,13 +127,8 @@ TEST_CASE("The single loop stays in the first half to the top when t1.y == t2.y"
 TEST_CASE("The two-loop fill on a flat bottom depends on which bottom vertex is t0",
           "[04_scanline][step5][division-by-zero][order]") {
   // The second loop runs A over the exact height from t0 and B over height + 1 from t1.
-  PixelSet common;
-  add_row(common, 0, 0, 4);
-  add_row(common, 1, 0, 4);
-  add_row(common, 2, 1, 3);
-  PixelSet left_first = common, right_first = common;
-  add_row(left_first, 3, 2, 3);
-  add_row(right_first, 3, 1, 2);
+  const PixelSet left_first = pixels_in_rows({{0, 0, 4}, {1, 0, 4}, {2, 1, 3}, {3, 2, 3}});
+  const PixelSet right_first = pixels_in_rows({{0, 0, 4}, {1, 0, 4}, {2, 1, 3}, {3, 1, 2}});
   CHECK(pixels_of(fill_two_loops, {0, 0}, {4, 0}, {2, 3}) == left_first);
   CHECK(pixels_of(fill_two_loops, {4, 0}, {0, 0}, {2, 3}) == right_first);
 }
@@ -173,7 +138,7 @@ TEST_CASE("The two-loop fill on a flat top covers the top edge with its second l
   const PixelSet single = pixels_of(fill_single_loop, {2, 0}, {0, 3}, {4, 3});
   for (const auto& order : vertex_orders({2, 0}, {0, 3}, {4, 3})) {
     const Canvas canvas = drawn_by(fill_two_loops, order[0], order[1], order[2]);
-    CHECK(tri::testing::written_pixels(canvas) == single);
+    CHECK(written_pixels(canvas) == single);
     CHECK(rows_of(overdrawn_pixels(canvas)) == std::set<int>{3});
     CHECK(overdrawn_pixels(canvas).size() == 4);  // the lower loop's [1,4] or [0,3]
   }
@@ -215,16 +180,12 @@ TEST_CASE("The two fills part ways on the article's triangles by these pixels",
 
 TEST_CASE("The single loop draws each pixel once and the same pixels for all six vertex orders",
           "[04_scanline][step6][order]") {
-  tri::testing::Random random(4);
   int tied = 0;
-  for (int n = 0; n < 300; ++n) {
-    const glm::ivec2 a{random.integer(0, 31), random.integer(0, 31)};
-    const glm::ivec2 b{random.integer(0, 31), random.integer(0, 31)};
-    const glm::ivec2 c{random.integer(0, 31), random.integer(0, 31)};
+  for (const auto& [a, b, c] : order_test_triangles()) {
     if (has_tied_y(a, b, c)) ++tied;
     const Canvas canvas = drawn_by(fill_single_loop, a, b, c, 32, 32);
     CHECK(overdrawn_pixels(canvas).empty());  // one pass per row, each row once
-    const PixelSet expected = tri::testing::written_pixels(canvas);
+    const PixelSet expected = written_pixels(canvas);
     for (const auto& order : vertex_orders(a, b, c)) {
       CHECK(pixels_of(fill_single_loop, order[0], order[1], order[2], 32, 32) == expected);
     }
@@ -234,12 +195,8 @@ TEST_CASE("The single loop draws each pixel once and the same pixels for all six
 
 TEST_CASE("The two-loop fill depends on vertex order only when two vertices share a row",
           "[04_scanline][step5][order]") {
-  tri::testing::Random random(4);
   int order_dependent = 0;
-  for (int n = 0; n < 300; ++n) {
-    const glm::ivec2 a{random.integer(0, 31), random.integer(0, 31)};
-    const glm::ivec2 b{random.integer(0, 31), random.integer(0, 31)};
-    const glm::ivec2 c{random.integer(0, 31), random.integer(0, 31)};
+  for (const auto& [a, b, c] : order_test_triangles()) {
     const PixelSet first = pixels_of(fill_two_loops, a, b, c, 32, 32);
     bool differs = false;
     for (const auto& order : vertex_orders(a, b, c)) {
