@@ -14,14 +14,9 @@
 #include "chapters/01_lines/line_reference.hpp"
 #include "tests/support/pixels.hpp"
 
+using namespace tri::ch01;
+using namespace tri::testing;
 using tri::Canvas;
-using tri::ch01::exact_line_pixel_at;
-using tri::ch01::exact_line_pixels;
-using tri::ch01::ExactLinePixel;
-using tri::ch01::line_algorithms;
-using tri::ch01::LineAlgorithm;
-using tri::testing::PixelSet;
-using tri::testing::Random;
 
 namespace {
 
@@ -54,7 +49,7 @@ Canvas draw(const LineAlgorithm& algorithm, glm::ivec2 from, glm::ivec2 to) {
 }
 
 PixelSet drawn_pixels(const LineAlgorithm& algorithm, glm::ivec2 from, glm::ivec2 to) {
-  return tri::testing::written_pixels(draw(algorithm, from, to));
+  return written_pixels(draw(algorithm, from, to));
 }
 
 Line random_line(Random& random, int low, int high) {
@@ -101,15 +96,33 @@ glm::ivec2 smaller_major_endpoint(const Line& line) {
   return axes.major(line.p0) <= axes.major(line.p1) ? line.p0 : line.p1;
 }
 
+// Draws 2000 seeded lines with `algorithm`, each from both ends, and checks every drawing against
+// the exact line with its ties sent toward tie_toward(line, start). Half the lines stay on the
+// canvas, half leave it (then the walk starts mid-line).
+template <typename TieToward>
+void check_ties_on_seeded_lines(const LineAlgorithm& algorithm, std::uint64_t seed,
+                                TieToward tie_toward) {
+  Random random(seed);
+  for (int trial = 0; trial < 2000; ++trial) {
+    const Line line = trial % 2 == 0 ? random_line(random, 0, canvas_size - 1)
+                                     : random_line(random, -60, canvas_size + 60);
+    CAPTURE(line.p0.x, line.p0.y, line.p1.x, line.p1.y);
+    CHECK(drawn_pixels(algorithm, line.p0, line.p1) ==
+          expected_with_ties_toward(line, tie_toward(line, line.p0)));
+    CHECK(drawn_pixels(algorithm, line.p1, line.p0) ==
+          expected_with_ties_toward(line, tie_toward(line, line.p1)));
+  }
+}
+
 // Checks what a drawing of `line` shows against the exact line: at every step the pixel is the
 // exact one, or at a tie one of the two pixels the line passes between; nothing is drawn twice
 // and nothing is drawn off the line's steps. Pixels off the canvas are invisible, so a step may
 // show nothing when its pixel (or, at a tie, one of the candidates) lies outside.
 void check_drawing_against_exact(const Canvas& canvas, const Line& line) {
   CAPTURE(line.p0.x, line.p0.y, line.p1.x, line.p1.y);
-  CHECK(tri::testing::overdrawn_pixels(canvas).empty());
+  CHECK(overdrawn_pixels(canvas).empty());
   const Axes axes = axes_of(line);
-  auto drawn = minors_by_major(tri::testing::written_pixels(canvas), axes);
+  auto drawn = minors_by_major(written_pixels(canvas), axes);
   for (const ExactLinePixel& exact : exact_line_pixels(line.p0, line.p1)) {
     const glm::ivec2 lower = exact.pixel - axes.minor_unit();
     const std::vector<std::int64_t> minors = drawn[axes.major(exact.pixel)];
@@ -189,7 +202,7 @@ TEST_CASE("Every line algorithm draws a zero-length line as exactly its one pixe
        {glm::ivec2(0, 0), glm::ivec2(63, 63), glm::ivec2(0, 63), glm::ivec2(17, 42)}) {
     CAPTURE(p.x, p.y);
     const Canvas canvas = draw(algorithm, p, p);
-    CHECK(tri::testing::written_pixels(canvas) == PixelSet{{p.x, p.y}});
+    CHECK(written_pixels(canvas) == PixelSet{{p.x, p.y}});
     CHECK(canvas.write_count(p.x, p.y) == 1);
     CHECK(canvas.outside_writes() == 0);
   }
@@ -202,13 +215,13 @@ TEST_CASE("Every line algorithm draws both endpoints and one pixel per step of t
   for (const Line& line : seeded_canvas_lines()) {
     CAPTURE(line.p0.x, line.p0.y, line.p1.x, line.p1.y);
     const Canvas canvas = draw(algorithm, line.p0, line.p1);
-    const PixelSet pixels = tri::testing::written_pixels(canvas);
+    const PixelSet pixels = written_pixels(canvas);
     const Axes axes = axes_of(line);
     const std::int64_t low = std::min(axes.major(line.p0), axes.major(line.p1));
     const std::int64_t n = std::abs(axes.major(line.p1) - axes.major(line.p0));
     CHECK(canvas.outside_writes() == 0);
     CHECK(pixels.size() == static_cast<std::size_t>(n + 1));
-    CHECK(tri::testing::overdrawn_pixels(canvas).empty());
+    CHECK(overdrawn_pixels(canvas).empty());
     CHECK(pixels.count({line.p0.x, line.p0.y}) == 1);
     CHECK(pixels.count({line.p1.x, line.p1.y}) == 1);
     const auto by_major = minors_by_major(pixels, axes);
@@ -309,30 +322,16 @@ TEST_CASE("Bresenham breaks ties toward the endpoint with the smaller major coor
           "[01_lines][step5][lines][ties][bresenham]") {
   const LineAlgorithm& bresenham = line_algorithms[2];
   REQUIRE(bresenham.name == "bresenham");
-  Random random(5);
-  for (int trial = 0; trial < 2000; ++trial) {
-    // Half the lines stay on the canvas, half leave it (then the walk starts mid-line).
-    const Line line = trial % 2 == 0 ? random_line(random, 0, canvas_size - 1)
-                                     : random_line(random, -60, canvas_size + 60);
-    CAPTURE(line.p0.x, line.p0.y, line.p1.x, line.p1.y);
-    const PixelSet expected = expected_with_ties_toward(line, smaller_major_endpoint(line));
-    CHECK(drawn_pixels(bresenham, line.p0, line.p1) == expected);
-    CHECK(drawn_pixels(bresenham, line.p1, line.p0) == expected);
-  }
+  check_ties_on_seeded_lines(bresenham, 5, [](const Line& line, glm::ivec2) {
+    return smaller_major_endpoint(line);  // whichever end the drawing starts from
+  });
 }
 
 TEST_CASE("midpoint breaks ties toward p0, the endpoint it starts from",
           "[01_lines][step6][lines][ties][midpoint]") {
   const LineAlgorithm& midpoint = line_algorithms[3];
   REQUIRE(midpoint.name == "midpoint");
-  Random random(6);
-  for (int trial = 0; trial < 2000; ++trial) {
-    const Line line = trial % 2 == 0 ? random_line(random, 0, canvas_size - 1)
-                                     : random_line(random, -60, canvas_size + 60);
-    CAPTURE(line.p0.x, line.p0.y, line.p1.x, line.p1.y);
-    CHECK(drawn_pixels(midpoint, line.p0, line.p1) == expected_with_ties_toward(line, line.p0));
-    CHECK(drawn_pixels(midpoint, line.p1, line.p0) == expected_with_ties_toward(line, line.p1));
-  }
+  check_ties_on_seeded_lines(midpoint, 6, [](const Line&, glm::ivec2 from) { return from; });
 }
 
 TEST_CASE("midpoint draws what Bresenham draws when p0 has the smaller major coordinate",
@@ -393,8 +392,8 @@ TEST_CASE("Bresenham draws a line from -2^30 to 2^30 across a 64x64 canvas colum
     for (const bool reversed : {false, true}) {
       const glm::ivec2 a(-two_30, 5), b(two_30, 9);
       const Canvas canvas = reversed ? draw(bresenham, b, a) : draw(bresenham, a, b);
-      CHECK(tri::testing::written_pixels(canvas) == row7);
-      CHECK(tri::testing::overdrawn_pixels(canvas).empty());
+      CHECK(written_pixels(canvas) == row7);
+      CHECK(overdrawn_pixels(canvas).empty());
       CHECK(canvas.outside_writes() == 0);
     }
   }
@@ -404,12 +403,12 @@ TEST_CASE("Bresenham draws a line from -2^30 to 2^30 across a 64x64 canvas colum
     PixelSet expected{{31, 0}};
     for (int y = 1; y < canvas_size; ++y) expected.emplace(32, y);
     const Canvas canvas = draw(bresenham, {60, two_30}, {3, -two_30});
-    CHECK(tri::testing::written_pixels(canvas) == expected);
+    CHECK(written_pixels(canvas) == expected);
     CHECK(canvas.outside_writes() == 0);
   }
   SECTION("a line above the canvas draws nothing and writes nothing outside it") {
     const Canvas canvas = draw(bresenham, {-two_30, 100}, {two_30, 100});
-    CHECK(tri::testing::written_pixels(canvas).empty());
+    CHECK(written_pixels(canvas).empty());
     CHECK(canvas.outside_writes() == 0);
   }
   SECTION("random lines with endpoints up to 2^30 away show exactly the exact visible pixels") {
@@ -435,9 +434,9 @@ TEST_CASE("Bresenham draws a line from -2^30 to 2^30 across a 64x64 canvas colum
         if (on_canvas(p)) expected.emplace(p.x, p.y);
       }
       const Canvas canvas = draw(bresenham, line.p0, line.p1);
-      const PixelSet pixels = tri::testing::written_pixels(canvas);
+      const PixelSet pixels = written_pixels(canvas);
       CHECK(pixels == expected);
-      CHECK(tri::testing::overdrawn_pixels(canvas).empty());
+      CHECK(overdrawn_pixels(canvas).empty());
       // It walks only the steps whose major coordinate is on the canvas, and writes only on it.
       CHECK(canvas.outside_writes() == 0);
       CHECK(static_cast<std::int64_t>(pixels.size()) <= steps_on_canvas);
