@@ -28,14 +28,19 @@ void draw_lower_half_boundary_points(Canvas& canvas, glm::ivec2 a, glm::ivec2 b,
 // [/listing]
 
 // [listing fill_lower_half]
+void fill_half(Canvas& canvas, const SortedTriangle& t, std::int64_t low, std::int64_t high,
+               HalfEnds ends, Color color) {
+  const RowsOnCanvas rows = rows_on_canvas(canvas, low, high);
+  for (std::int64_t y = rows.first; y <= rows.last; ++y) {
+    const SpanEnds span = ends(t, y);
+    fill_span_between(canvas, y, span.a, span.b, color);
+  }
+}
+
 void fill_lower_half(Canvas& canvas, glm::ivec2 a, glm::ivec2 b, glm::ivec2 c, Color color) {
   const SortedTriangle t = sort_by_y(a, b, c);
   if (t.p0.y == t.p2.y) return;  // all on one row: the total height would divide 0 by 0
-  const RowsOnCanvas rows = rows_on_canvas(canvas, t.p0.y, t.p1.y);
-  for (std::int64_t y = rows.first; y <= rows.last; ++y) {
-    const SpanEnds ends = lower_half_ends(t, y);
-    fill_span_between(canvas, y, ends.a, ends.b, color);
-  }
+  fill_half(canvas, t, t.p0.y, t.p1.y, lower_half_ends, color);
 }
 // [/listing]
 

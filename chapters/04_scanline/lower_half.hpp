@@ -30,6 +30,15 @@ SpanEnds lower_half_ends(const SortedTriangle& t, std::int64_t y) noexcept;
 /// shows gaps. Draws nothing when all three vertices share a row (the article divides 0 by 0).
 void draw_lower_half_boundary_points(Canvas& canvas, glm::ivec2 a, glm::ivec2 b, glm::ivec2 c);
 
+/// The ends of row y of one half of a sorted triangle: lower_half_ends, or step 5's
+/// upper_half_ends.
+using HalfEnds = SpanEnds (*)(const SortedTriangle& t, std::int64_t y) noexcept;
+
+/// The loop of steps 4 and 5: every row from `low` to `high` that lies on the canvas, filled from
+/// its A end to its B end as `ends` gives them, both included.
+void fill_half(Canvas& canvas, const SortedTriangle& t, std::int64_t low, std::int64_t high,
+               HalfEnds ends, Color color);
+
 /// Step 4: the same rows, each filled from its A point to its B point, both included, which
 /// closes the gaps. Draws nothing when all three vertices share a row.
 void fill_lower_half(Canvas& canvas, glm::ivec2 a, glm::ivec2 b, glm::ivec2 c, Color color);

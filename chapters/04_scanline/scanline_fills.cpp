@@ -32,16 +32,8 @@ SpanEnds upper_half_ends(const SortedTriangle& t, std::int64_t y) noexcept {
 void fill_two_loops(Canvas& canvas, glm::ivec2 a, glm::ivec2 b, glm::ivec2 c, Color color) {
   const SortedTriangle t = sort_by_y(a, b, c);
   if (t.p0.y == t.p2.y) return;  // all on one row: the total height would divide 0 by 0
-  const RowsOnCanvas lower = rows_on_canvas(canvas, t.p0.y, t.p1.y);
-  for (std::int64_t y = lower.first; y <= lower.last; ++y) {
-    const SpanEnds ends = lower_half_ends(t, y);
-    fill_span_between(canvas, y, ends.a, ends.b, color);
-  }
-  const RowsOnCanvas upper = rows_on_canvas(canvas, t.p1.y, t.p2.y);
-  for (std::int64_t y = upper.first; y <= upper.last; ++y) {
-    const SpanEnds ends = upper_half_ends(t, y);
-    fill_span_between(canvas, y, ends.a, ends.b, color);
-  }
+  fill_half(canvas, t, t.p0.y, t.p1.y, lower_half_ends, color);  // step 4's loop
+  fill_half(canvas, t, t.p1.y, t.p2.y, upper_half_ends, color);  // row t1.y again, up to t2.y
 }
 // [/listing]
 
