@@ -2,6 +2,8 @@
 
 #include <cstdint>
 #include <cstdlib>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "chapters/03_interpolate_fill/diagram_support.hpp"
@@ -42,6 +44,23 @@ Step fill_step(void (*fill)(Canvas&, glm::ivec2, glm::ivec2, glm::ivec2, Color))
   return [fill](Canvas& canvas, glm::ivec2 a, glm::ivec2 b, glm::ivec2 c) {
     fill(canvas, a, b, c, colors::white);
   };
+}
+
+// A fill step on the green triangle: the triangle sorted by y, the step drawn on a counting
+// canvas, and the diagram with every pixel the step wrote filled.
+struct FilledStep {
+  SortedTriangle t;
+  Canvas drawn;
+  PixelDiagram diagram;
+};
+
+FilledStep filled_step(void (*fill)(Canvas&, glm::ivec2, glm::ivec2, glm::ivec2, Color),
+                       std::string title) {
+  const auto [a, b, c] = diagram_triangle().vertices;
+  FilledStep step{sort_by_y(a, b, c), drawn_by(fill_step(fill), diagram_triangle()),
+                  green_diagram(std::move(title))};
+  fill_written(step.diagram, step.drawn, dc::covered);
+  return step;
 }
 
 // Hatches the pixels a boundary would need to be connected: between its points on two
@@ -120,12 +139,9 @@ SvgFigure lower_half_points() {
 }
 
 SvgFigure lower_half_filled() {
+  auto [t, drawn, diagram] = filled_step(
+      fill_lower_half, "Step 4: each lower-half row filled from A to B; B lags behind its edge");
   const auto [a, b, c] = diagram_triangle().vertices;
-  const SortedTriangle t = sort_by_y(a, b, c);
-  const Canvas drawn = drawn_by(fill_step(fill_lower_half), diagram_triangle());
-  PixelDiagram diagram =
-      green_diagram("Step 4: each lower-half row filled from A to B; B lags behind its edge");
-  fill_written(diagram, drawn, dc::covered);
   int lost = 0;
   for (int y = t.p0.y; y <= t.p1.y; ++y) {
     for (int x = 0; x < drawn.width(); ++x) {
@@ -166,12 +182,8 @@ SvgFigure two_loops() {
 }
 
 SvgFigure single_loop() {
-  const auto [a, b, c] = diagram_triangle().vertices;
-  const SortedTriangle t = sort_by_y(a, b, c);
-  const Canvas drawn = drawn_by(fill_step(fill_single_loop), diagram_triangle());
-  PixelDiagram diagram =
-      green_diagram("Step 6: one loop with second_half, each pixel once, top row included");
-  fill_written(diagram, drawn, dc::covered);
+  auto [t, drawn, diagram] = filled_step(
+      fill_single_loop, "Step 6: one loop with second_half, each pixel once, top row included");
   for (int x = 0; x < drawn.width(); ++x) {
     if (drawn.write_count(x, t.p2.y) > 0) diagram.mark({x, t.p2.y}, PixelMark::square);
   }
