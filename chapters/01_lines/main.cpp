@@ -14,12 +14,8 @@
 
 namespace {
 
-using tri::point_text;
-using tri::PixelDiagram;
-using tri::PixelMark;
-using tri::ch01::line_algorithms;
-using tri::ch01::LineAlgorithm;
-using tri::ch01::Segment;
+using namespace tri;
+using namespace tri::ch01;
 namespace dc = tri::diagram_colors;
 
 constexpr glm::ivec2 star_centre{32, 32};

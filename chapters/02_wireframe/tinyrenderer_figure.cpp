@@ -31,4 +31,10 @@ PixelDiagram tinyrenderer_fill_diagram(const std::string& title, const WholePixe
   return d;
 }
 
+void label_vertices(PixelDiagram& d, const std::array<glm::ivec2, 3>& v,
+                    const std::array<LabelPlace, 3>& places) {
+  const std::array<const char*, 3> names{"A", "B", "C"};
+  for (std::size_t k = 0; k < 3; ++k) d.vertex(glm::dvec2(v[k]), names[k], places[k]);
+}
+
 }  // namespace tri::ch02

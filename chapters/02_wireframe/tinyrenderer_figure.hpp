@@ -1,6 +1,7 @@
 /// @file
-/// The figure chapters 05 and 06 both draw: tinyrenderer's three triangles as the chapter's fill
-/// paints them, with the ideal edges on top and each triangle's pixel count in the legend.
+/// What the figures of chapters 05 and 06 share: tinyrenderer's three triangles as the chapter's
+/// fill paints them, with the ideal edges on top and each triangle's pixel count in the legend, and
+/// the labels A, B, C on a triangle's vertices.
 #pragma once
 
 #include <array>
@@ -30,5 +31,10 @@ PixelDiagram tinyrenderer_scene_diagram(const std::string& title);
 /// tinyrenderer's three triangles filled by `fill` in the figure colours, their ideal edges in
 /// black, each in the legend with its vertices and the number of pixels it painted.
 PixelDiagram tinyrenderer_fill_diagram(const std::string& title, const WholePixelFill& fill);
+
+/// The vertices of the triangle v as dots labelled "A (x, y)", "B (x, y)" and "C (x, y)", each
+/// label at its own place.
+void label_vertices(PixelDiagram& d, const std::array<glm::ivec2, 3>& v,
+                    const std::array<LabelPlace, 3>& places);
 
 }  // namespace tri::ch02

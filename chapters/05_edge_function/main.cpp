@@ -18,13 +18,8 @@
 
 namespace {
 
-using tri::Canvas;
-using tri::Color;
-using tri::LabelPlace;
-using tri::painted_pixels;
-using tri::PixelDiagram;
-using tri::PixelMark;
-using tri::point_text;
+using namespace tri;
+using tri::ch02::label_vertices;
 namespace dc = tri::diagram_colors;
 using Vertices = std::array<glm::ivec2, 3>;
 
@@ -81,9 +76,8 @@ tri::SvgFigure edge_signs_figure() {
   d.line(at(a), at(b), dc::vermillion);
   d.line(at(b), at(c), dc::blue);
   d.line(at(c), at(a), dc::purple);
-  d.vertex(at(a), "A", LabelPlace::below_right);
-  d.vertex(at(b), "B", LabelPlace::below_right);
-  d.vertex(at(c), "C", LabelPlace::above_right);
+  label_vertices(d, {a, b, c},
+                 {LabelPlace::below_right, LabelPlace::below_right, LabelPlace::above_right});
   d.legend_fill("all three > 0: inside", light_green);
   d.legend_fill("all >= 0, one is 0: on an edge", dc::yellow);
   d.legend_mark("centre exactly on an edge (drawn)", PixelMark::square);
@@ -123,9 +117,7 @@ tri::SvgFigure bounding_box_figure(std::string name, const std::string& title, c
     }
   }
   d.triangle(at(v[0]), at(v[1]), at(v[2]), dc::black);
-  d.vertex(at(v[0]), "A", LabelPlace::left);
-  d.vertex(at(v[1]), "B", LabelPlace::below_right);
-  d.vertex(at(v[2]), "C", LabelPlace::above_right);
+  label_vertices(d, v, {LabelPlace::left, LabelPlace::below_right, LabelPlace::above_right});
   for (const glm::ivec2 p : v) {
     if (canvas.contains(p)) d.mark(p, PixelMark::square, dc::vermillion);
   }
@@ -216,9 +208,7 @@ tri::SvgFigure published_bug_zoom_figure() {
   for (const auto p : painted_pixels(cmp.both, marked)) d.mark(p, PixelMark::square, dc::black);
   d.triangle(at(v[0]), at(v[1]), at(v[2]), dc::black);
   draw_slid_lines(d, v, dc::purple);
-  d.vertex(at(v[0]), "A", LabelPlace::below_left);
-  d.vertex(at(v[1]), "B", LabelPlace::right);
-  d.vertex(at(v[2]), "C", LabelPlace::right);
+  label_vertices(d, v, {LabelPlace::below_left, LabelPlace::right, LabelPlace::right});
   d.legend_fill("inside, lost by the published test", light_sky);
   d.legend_fill("drawn by the published test only", dc::vermillion);
   d.legend_mark("outside the triangle, drawn", PixelMark::cross);
@@ -247,12 +237,10 @@ tri::SvgFigure zero_area_figure() {
   d.fill(painted_pixels(bresenham, marked), dc::light_gray);
   d.fill(painted_pixels(drawn, marked), dc::sky_blue);
   for (const auto& [a, b, c] : segments) d.line(at(a), at(c), dc::vermillion);
-  d.vertex(at(segments[0][0]), "A", LabelPlace::above_right);
-  d.vertex(at(segments[0][1]), "B", LabelPlace::below_right);
-  d.vertex(at(segments[0][2]), "C", LabelPlace::above_left);
-  d.vertex(at(segments[1][0]), "A", LabelPlace::below_right);
-  d.vertex(at(segments[1][1]), "B", LabelPlace::below_right);
-  d.vertex(at(segments[1][2]), "C", LabelPlace::below_left);
+  label_vertices(d, segments[0],
+                 {LabelPlace::above_right, LabelPlace::below_right, LabelPlace::above_left});
+  label_vertices(d, segments[1],
+                 {LabelPlace::below_right, LabelPlace::below_right, LabelPlace::below_left});
   d.vertex(at(segments[2][0]), "A = B = C", LabelPlace::above_left);
   d.legend_fill("drawn by the fill", dc::sky_blue);
   d.legend_fill("chapter 01's Bresenham line, not drawn by the fill", dc::light_gray);

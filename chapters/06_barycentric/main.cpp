@@ -16,20 +16,11 @@
 
 namespace {
 
-using tri::Canvas;
-using tri::Color;
-using tri::LabelPlace;
-using tri::painted_pixels;
-using tri::PixelDiagram;
-using tri::PixelMark;
-using tri::point_text;
-using tri::ch02::tinyrenderer_scene_diagram;
-using tri::ch02::tinyrenderer_triangles;
+using namespace tri;
+using namespace tri::ch02;
 using tri::ch06::PixelTriangle;
 namespace dc = tri::diagram_colors;
 
-using tri::ch02::tinyrenderer_figure_colors;
-using tri::ch02::tinyrenderer_names;
 // The same three, lightened towards white: the tested part of each bounding box.
 constexpr std::array<Color, 3> box_colors{Color{242, 191, 153, 255}, Color{153, 199, 224, 255},
                                           Color{153, 216, 199, 255}};
@@ -155,12 +146,10 @@ tri::SvgFigure zero_area_unguarded_figure() {
     }
     d.line(at(low), at(high), dc::blue);
   }
-  d.vertex(at(degenerate[0][0]), "A", LabelPlace::above_left);
-  d.vertex(at(degenerate[0][1]), "B", LabelPlace::above_left);
-  d.vertex(at(degenerate[0][2]), "C", LabelPlace::above_left);
-  d.vertex(at(degenerate[1][0]), "A", LabelPlace::above_right);
-  d.vertex(at(degenerate[1][1]), "B", LabelPlace::above_left);
-  d.vertex(at(degenerate[1][2]), "C", LabelPlace::above_right);
+  label_vertices(d, degenerate[0],
+                 {LabelPlace::above_left, LabelPlace::above_left, LabelPlace::above_left});
+  label_vertices(d, degenerate[1],
+                 {LabelPlace::above_right, LabelPlace::above_left, LabelPlace::above_right});
   d.vertex(at(degenerate[2][0]), "A = B", LabelPlace::above_right);
   d.vertex(at(degenerate[2][2]), "C", LabelPlace::above_left);
   d.vertex(at(degenerate[3][0]), "A = B = C", LabelPlace::above_left);
@@ -174,14 +163,24 @@ tri::SvgFigure zero_area_unguarded_figure() {
   return tri::SvgFigure{"06_zero_area_unguarded", d.svg()};
 }
 
+// The guarded fill of t in float and in double, each in `marked` on a size x size canvas.
+struct FloatAndDouble {
+  Canvas with_float, with_double;
+};
+
+FloatAndDouble filled_in_float_and_double(const PixelTriangle& t, int size) {
+  FloatAndDouble out{Canvas(size, size), Canvas(size, size)};
+  tri::ch06::fill_triangle_barycentric<float>(out.with_float, t[0], t[1], t[2], marked);
+  tri::ch06::fill_triangle_barycentric<double>(out.with_double, t[0], t[1], t[2], marked);
+  return out;
+}
+
 // The kept triangle of the seeded search, on its 16x16 canvas: where float and double agree, and
 // the one pixel centre on edge BC that only double draws. The vertices are 10^4 pixels away, so
 // their true coordinates go in the legend and the edges are cut to the canvas.
 tri::SvgFigure float_versus_double_figure() {
   const PixelTriangle& t = tri::ch06::float_double_disagreement;
-  Canvas with_float(16, 16), with_double(16, 16);
-  tri::ch06::fill_triangle_barycentric<float>(with_float, t[0], t[1], t[2], marked);
-  tri::ch06::fill_triangle_barycentric<double>(with_double, t[0], t[1], t[2], marked);
+  const auto [with_float, with_double] = filled_in_float_and_double(t, 16);
   const glm::ivec2 first(0, 0), last(15, 15);
   PixelDiagram d(first, last, "float and double disagree on one centre exactly on edge BC", 32);
   std::vector<glm::ivec2> both, double_only, float_only;
@@ -227,9 +226,7 @@ tri::SvgFigure float_versus_double_figure() {
 // the area as 2^21: the pixel centres float draws on the line and off it.
 tri::SvgFigure float_zero_area_far_away_figure() {
   const PixelTriangle& t = tri::ch06::collinear_at_ten_million;
-  Canvas with_float(32, 32), with_double(32, 32);
-  tri::ch06::fill_triangle_barycentric<float>(with_float, t[0], t[1], t[2], marked);
-  tri::ch06::fill_triangle_barycentric<double>(with_double, t[0], t[1], t[2], marked);
+  const auto [with_float, with_double] = filled_in_float_and_double(t, 32);
   const glm::ivec2 first(0, 0), last(31, 31);
   PixelDiagram d(first, last, "float draws a zero-area triangle whose vertices are 10^7 away", 18);
   std::vector<glm::ivec2> on_line, off_line;
