@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "chapters/09_speed_vs_error/byte_coverage_peer.hpp"
-#include "chapters/09_speed_vs_error/coverage_peer_libraries.hpp"
+#include "chapters/09_speed_vs_error/library_peers.hpp"
 
 namespace tri::ch09 {
 namespace {
@@ -57,11 +57,8 @@ class AggImage {
 }  // namespace
 
 CoveragePeer agg_coverage_peer() {
-  return byte_coverage_peer("agg_scanline_aa", "area to 8 bits", 0,
-                            [](int width, int height, std::span<const SceneTriangle> triangles) {
-                              require_within(triangles, height, agg_coordinate_limit, "AGG");
-                              return AggImage(width, height);
-                            });
+  return byte_coverage_peer<AggImage>("agg_scanline_aa", "area to 8 bits", 0, "AGG",
+                                      agg_coordinate_limit);
 }
 
 }  // namespace tri::ch09

@@ -5,8 +5,7 @@
 #include <stdexcept>
 
 #include "chapters/09_speed_vs_error/byte_coverage_peer.hpp"
-#include "chapters/09_speed_vs_error/cairo_peer.hpp"
-#include "chapters/09_speed_vs_error/coverage_peer_libraries.hpp"
+#include "chapters/09_speed_vs_error/library_peers.hpp"
 
 namespace tri::ch09 {
 namespace {
@@ -61,11 +60,8 @@ class CairoAlpha {
 }  // namespace
 
 CoveragePeer cairo_coverage_peer() {
-  return byte_coverage_peer("cairo_antialias", "area in x over 15 rows", 0,
-                            [](int width, int height, std::span<const SceneTriangle> triangles) {
-                              require_within(triangles, height, cairo_coordinate_limit, "cairo");
-                              return CairoAlpha(width, height);
-                            });
+  return byte_coverage_peer<CairoAlpha>("cairo_antialias", "area in x over 15 rows", 0, "cairo",
+                                        cairo_coordinate_limit);
 }
 
 }  // namespace tri::ch09

@@ -1,10 +1,9 @@
-#include "chapters/09_speed_vs_error/cairo_peer.hpp"
+#include "chapters/09_speed_vs_error/library_peers.hpp"
 
 #include <cairo.h>
 
 #include <cstring>
 #include <memory>
-#include <numeric>
 #include <stdexcept>
 #include <string>
 
@@ -86,34 +85,25 @@ std::vector<CairoTriangle> to_cairo(std::span<const SceneTriangle> triangles, in
 WriteCounts cairo_write_counts(int width, int height, std::span<const SceneTriangle> triangles) {
   const std::vector<CairoTriangle> converted = to_cairo(triangles, height);
   CairoCanvas mask(width, height, CAIRO_FORMAT_A8);
-  WriteCounts result;
-  result.counts.assign(static_cast<std::size_t>(width) * static_cast<std::size_t>(height), 0);
-  for (std::size_t t = 0; t < converted.size(); ++t) {
-    mask.clear();
-    mask.fill(converted[t].vertices);
-    mask.flush();
-    const PixelWindow window = pixels_around(triangles[t], width, height);
-    for (int y = window.y_begin; y < window.y_end; ++y) {
-      for (int x = window.x_begin; x < window.x_end; ++x) {
-        if (mask.alpha(x, height - 1 - y) != 0) {
-          ++result.counts[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
-                          static_cast<std::size_t>(x)];
-        }
-      }
-    }
-  }
-  return result;
+  return count_each_alone(
+      width, height, triangles,
+      [&](std::size_t t) {
+        mask.clear();
+        mask.fill(converted[t].vertices);
+        mask.flush();
+      },
+      [&](int x, int top_row) { return mask.alpha(x, top_row) != 0; });
 }
 
 ExternalPeer cairo_peer() {
   return {"cairo_no_antialias", "external", "approximate", false,
           [](const PreparedScene& prepared, const TimingPlan& plan) {
             const int width = prepared.scene.width, height = prepared.scene.height;
-            PeerResult result;
+            Timing timing;
             {
               const std::vector<CairoTriangle> triangles = to_cairo(prepared.triangles, height);
               CairoCanvas canvas(width, height, CAIRO_FORMAT_ARGB32);
-              result.timing = time_runs(
+              timing = time_runs(
                   [&] {
                     for (const CairoTriangle& t : triangles) {
                       canvas.set_color(t.color);
@@ -123,11 +113,7 @@ ExternalPeer cairo_peer() {
                   },
                   plan);
             }
-            const WriteCounts drawn = cairo_write_counts(width, height, prepared.triangles);
-            result.written_pixels =
-                std::accumulate(drawn.counts.begin(), drawn.counts.end(), std::uint64_t{0});
-            result.error = measure_error(cairo_write_counts, prepared.error_scene);
-            return result;
+            return peer_result(timing, cairo_write_counts, prepared);
           }};
 }
 

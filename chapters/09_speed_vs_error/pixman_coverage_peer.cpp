@@ -5,8 +5,7 @@
 #include <vector>
 
 #include "chapters/09_speed_vs_error/byte_coverage_peer.hpp"
-#include "chapters/09_speed_vs_error/coverage_peer_libraries.hpp"
-#include "chapters/09_speed_vs_error/pixman_peer.hpp"
+#include "chapters/09_speed_vs_error/library_peers.hpp"
 
 namespace tri::ch09 {
 namespace {
@@ -48,11 +47,8 @@ class PixmanAlpha {
 }  // namespace
 
 CoveragePeer pixman_coverage_peer() {
-  return byte_coverage_peer("pixman_a8", "samples on a 15 x 17 grid", 255,
-                            [](int width, int height, std::span<const SceneTriangle> triangles) {
-                              require_within(triangles, height, pixman_coordinate_limit, "pixman");
-                              return PixmanAlpha(width, height);
-                            });
+  return byte_coverage_peer<PixmanAlpha>("pixman_a8", "samples on a 15 x 17 grid", 255, "pixman",
+                                         pixman_coordinate_limit);
 }
 
 }  // namespace tri::ch09

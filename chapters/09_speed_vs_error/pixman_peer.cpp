@@ -1,4 +1,4 @@
-#include "chapters/09_speed_vs_error/pixman_peer.hpp"
+#include "chapters/09_speed_vs_error/library_peers.hpp"
 
 #include <pixman.h>
 
@@ -6,7 +6,6 @@
 #include <cmath>
 #include <cstring>
 #include <memory>
-#include <numeric>
 #include <vector>
 
 #include "chapters/09_speed_vs_error/y_down_peer.hpp"
@@ -71,48 +70,31 @@ std::vector<pixman_triangle_t> to_pixman(std::span<const SceneTriangle> triangle
 WriteCounts pixman_write_counts(int width, int height, std::span<const SceneTriangle> triangles) {
   const std::vector<pixman_triangle_t> converted = to_pixman(triangles, height);
   PixmanMask mask(width, height);
-  WriteCounts result;
-  result.counts.assign(static_cast<std::size_t>(width) * static_cast<std::size_t>(height), 0);
-  for (std::size_t t = 0; t < converted.size(); ++t) {
-    mask.clear();
-    mask.add(converted[t]);
-    const PixelWindow window = pixels_around(triangles[t], width, height);
-    for (int y = window.y_begin; y < window.y_end; ++y) {
-      for (int x = window.x_begin; x < window.x_end; ++x) {
-        if (mask.is_set(x, height - 1 - y)) {
-          ++result.counts[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
-                          static_cast<std::size_t>(x)];
-        }
-      }
-    }
-  }
-  return result;
+  return count_each_alone(
+      width, height, triangles,
+      [&](std::size_t t) {
+        mask.clear();
+        mask.add(converted[t]);
+      },
+      [&](int x, int top_row) { return mask.is_set(x, top_row); });
 }
 
 ExternalPeer pixman_peer() {
   return {"pixman_a1", "external", "top-left", false,
           [](const PreparedScene& prepared, const TimingPlan& plan) {
-            const int width = prepared.scene.width, height = prepared.scene.height;
-            PeerResult result;
-            {
-              // As for the book's algorithms: image and converted triangles ready before the
-              // clock; one pixman call per triangle inside it.
-              const std::vector<pixman_triangle_t> triangles =
-                  to_pixman(prepared.triangles, height);
-              PixmanMask mask(width, height);
-              // [listing pixman_timed_draw]
-              result.timing = time_runs(
-                  [&] {
-                    for (const pixman_triangle_t& t : triangles) mask.add(t);
-                  },
-                  plan);
-              // [/listing]
-            }
-            const WriteCounts drawn = pixman_write_counts(width, height, prepared.triangles);
-            result.written_pixels =
-                std::accumulate(drawn.counts.begin(), drawn.counts.end(), std::uint64_t{0});
-            result.error = measure_error(pixman_write_counts, prepared.error_scene);
-            return result;
+            // As for the book's algorithms: image and converted triangles ready before the
+            // clock; one pixman call per triangle inside it.
+            const std::vector<pixman_triangle_t> triangles =
+                to_pixman(prepared.triangles, prepared.scene.height);
+            PixmanMask mask(prepared.scene.width, prepared.scene.height);
+            // [listing pixman_timed_draw]
+            const Timing timing = time_runs(
+                [&] {
+                  for (const pixman_triangle_t& t : triangles) mask.add(t);
+                },
+                plan);
+            // [/listing]
+            return peer_result(timing, pixman_write_counts, prepared);
           }};
 }
 

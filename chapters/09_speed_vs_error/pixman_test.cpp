@@ -7,9 +7,8 @@
 #include <numeric>
 #include <stdexcept>
 
-#include "chapters/09_speed_vs_error/coverage_peer_libraries.hpp"
+#include "chapters/09_speed_vs_error/library_peers.hpp"
 #include "chapters/09_speed_vs_error/peer_test_support.hpp"
-#include "chapters/09_speed_vs_error/pixman_peer.hpp"
 
 using namespace tri::ch09::test;
 using Kind = tri::SceneRecipe::Kind;
@@ -59,9 +58,7 @@ TEST_CASE(
 
 TEST_CASE("pixman refuses a scene beyond its 16.16 fixed-point range, naming the limit",
           "[09_speed_vs_error][step7][pixman]") {
-  const std::vector<tri::SceneTriangle> far{{{{{0, 0}, {40000, 0}, {0, 5}}}, tri::colors::white}};
-  CHECK_THROWS_WITH(tri::ch09::pixman_write_counts(8, 8, far),
-                    Catch::Contains("pixman cannot draw this scene") && Catch::Contains("32767"));
+  check_refuses_far_vertex(tri::ch09::pixman_write_counts, 40000, "pixman", "32767");
 }
 
 TEST_CASE("pixman's row in the report: timed, and exact on the tiny suite",
