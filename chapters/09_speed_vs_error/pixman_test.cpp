@@ -9,6 +9,7 @@
 
 #include "chapters/09_speed_vs_error/library_peers.hpp"
 #include "chapters/09_speed_vs_error/peer_test_support.hpp"
+#include "common/canvas.hpp"
 
 using namespace tri::ch09::test;
 using Kind = tri::SceneRecipe::Kind;
@@ -92,8 +93,7 @@ TEST_CASE("pixman differs from the oracle only at centres within 2^-16 pixel of 
   std::size_t differing = 0;
   for (int y = 0; y < h; ++y) {
     for (int x = 0; x < w; ++x) {
-      const auto i =
-          static_cast<std::size_t>(y) * static_cast<std::size_t>(w) + static_cast<std::size_t>(x);
+      const std::size_t i = tri::pixel_index(x, y, w);
       if (pixman[i] == oracle[i]) continue;
       ++differing;
       double nearest = std::numeric_limits<double>::infinity();

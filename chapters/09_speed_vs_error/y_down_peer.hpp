@@ -9,6 +9,7 @@
 
 #include <glm/vec2.hpp>
 
+#include "common/canvas.hpp"
 #include "common/scene.hpp"
 #include "measure/error_metrics.hpp"
 
@@ -44,10 +45,7 @@ WriteCounts count_each_alone(int width, int height, std::span<const SceneTriangl
     const PixelWindow window = pixels_around(triangles[t], width, height);
     for (int y = window.y_begin; y < window.y_end; ++y) {
       for (int x = window.x_begin; x < window.x_end; ++x) {
-        if (is_set(x, height - 1 - y)) {
-          ++result.counts[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
-                          static_cast<std::size_t>(x)];
-        }
+        if (is_set(x, height - 1 - y)) ++result.counts[pixel_index(x, y, width)];
       }
     }
   }
