@@ -17,10 +17,10 @@
 
 namespace tri::ch09 {
 
-/// A library's coverage image: built for a width x height canvas (refusing a scene beyond the
-/// library's range), cleared, drawn into one triangle at a time, read as bytes.
+/// A library's coverage image: built for a width x height canvas, cleared, drawn into one
+/// triangle at a time (its vertices already in the library's y-down space), read as bytes.
 template <class Image>
-concept ByteCoverageImage = requires(Image image, const SceneTriangle& t, int x, int top_row) {
+concept ByteCoverageImage = requires(Image image, const YDownTriangle& t, int x, int top_row) {
   {image.clear()};
   {image.draw(t)};
   { image.value(x, top_row) } -> std::convertible_to<std::uint8_t>;
@@ -55,7 +55,7 @@ CoveragePeer byte_coverage_peer(std::string name, std::string rule, int samples,
               Image image(width, height);
               result.timing = time_runs(
                   [&] {
-                    for (const SceneTriangle& t : prepared.triangles) image.draw(t);
+                    for (const SceneTriangle& t : prepared.triangles) image.draw(to_y_down(t, height));
                   },
                   plan);
             }
@@ -64,7 +64,7 @@ CoveragePeer byte_coverage_peer(std::string name, std::string rule, int samples,
                 width, height, std::span(prepared.triangles),
                 [&](std::size_t t) {
                   image.clear();
-                  image.draw(prepared.triangles[t]);
+                  image.draw(to_y_down(prepared.triangles[t], height));
                 },
                 [&](int x, int top_row) { return image.value(x, top_row) != 0; });
             result.touched_pixels =
@@ -72,7 +72,7 @@ CoveragePeer byte_coverage_peer(std::string name, std::string rule, int samples,
             result.error = measure_area_error(
                 [&](ch10::CoverageCanvas& canvas, std::span<const SceneTriangle> triangles) {
                   image.clear();
-                  for (const SceneTriangle& t : triangles) image.draw(t);
+                  for (const SceneTriangle& t : triangles) image.draw(to_y_down(t, height));
                   const PixelWindow whole{0, width, 0, height};
                   add_image_coverage(image, canvas,
                                      triangles.size() == 1

@@ -3,6 +3,7 @@
 /// centres are at half-integers, and their coordinates have a limited range.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <span>
 #include <string>
@@ -22,6 +23,15 @@ inline glm::dvec2 to_y_down(glm::dvec2 p, int height) noexcept {
   return {p.x + 0.5, (height - 1 - p.y) + 0.5};
 }
 // [/listing]
+
+/// A triangle's three vertices in such a library's space.
+using YDownTriangle = std::array<glm::dvec2, 3>;
+
+/// The triangle's vertices, each mapped with to_y_down.
+inline YDownTriangle to_y_down(const SceneTriangle& triangle, int height) noexcept {
+  return {to_y_down(triangle.vertices[0], height), to_y_down(triangle.vertices[1], height),
+          to_y_down(triangle.vertices[2], height)};
+}
 
 /// The pixels, in our coordinates, that a library could set for one triangle: its bounding box
 /// grown by one pixel on every side (so a pixel set just outside still counts, as an error), cut
