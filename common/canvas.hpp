@@ -2,6 +2,7 @@
 /// The canvas every chapter draws on: W×H RGBA8 pixels, y up, origin at the bottom-left.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -14,6 +15,13 @@ namespace tri {
 
 /// Largest canvas side the tutorial accepts (@ref design_canvas "docs/DESIGN.md section 3").
 inline constexpr int max_canvas_side = 16384;
+
+/// Where pixel (x, y) of a grid `width` pixels wide sits in its array, rows stored one after the
+/// other from row 0 (precondition: 0 <= x < width, 0 <= y).
+inline std::size_t pixel_index(int x, int y, int width) noexcept {
+  return static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
+         static_cast<std::size_t>(x);
+}
 
 /// A grid of RGBA8 pixels. Pixel (x, y) is the sample at the point (x, y): integer coordinates are
 /// pixel centres, x grows to the right and y grows **up**. Rows are stored bottom row first.
@@ -81,10 +89,7 @@ class Canvas {
   std::span<const std::uint32_t> write_counts() const noexcept { return counts_; }
 
  private:
-  std::size_t index(int x, int y) const noexcept {
-    return static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) +
-           static_cast<std::size_t>(x);
-  }
+  std::size_t index(int x, int y) const noexcept { return pixel_index(x, y, width_); }
 
   int width_;
   int height_;

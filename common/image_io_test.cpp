@@ -71,6 +71,27 @@ Canvas numbered_canvas() {
   return canvas;
 }
 
+// A PNG as stb_image decodes it to RGBA8, top row first (decoded: false when stb refuses it).
+struct DecodedPng {
+  bool decoded = false;
+  int width = 0;
+  int height = 0;
+  int channels = 0;  ///< in the file
+  std::vector<std::uint8_t> rgba;
+};
+
+DecodedPng decode_png(const std::vector<std::uint8_t>& png) {
+  DecodedPng out;
+  stbi_uc* pixels = stbi_load_from_memory(png.data(), static_cast<int>(png.size()), &out.width,
+                                          &out.height, &out.channels, 4);
+  if (pixels == nullptr) return out;
+  out.decoded = true;
+  out.rgba.assign(pixels, pixels + static_cast<std::size_t>(out.width) *
+                                       static_cast<std::size_t>(out.height) * 4);
+  stbi_image_free(pixels);
+  return out;
+}
+
 }  // namespace
 
 TEST_CASE("The counts PGM has a P5 header and lists the top row first", "[common][image_io]") {
@@ -125,18 +146,11 @@ TEST_CASE("The PNG has the PNG signature and an 8-bit RGBA header of the canvas 
 TEST_CASE("The PNG decodes back to the canvas, top row first, alpha included",
           "[common][image_io][png]") {
   const Canvas canvas = numbered_canvas();
-  const auto png = encode_png(canvas);
-  int width = 0;
-  int height = 0;
-  int channels = 0;
-  stbi_uc* decoded = stbi_load_from_memory(png.data(), static_cast<int>(png.size()), &width,
-                                           &height, &channels, 4);
-  REQUIRE(decoded != nullptr);
-  const std::vector<std::uint8_t> image(decoded, decoded + 5 * 3 * 4);
-  stbi_image_free(decoded);
-  CHECK(width == 5);
-  CHECK(height == 3);
-  CHECK(channels == 4);
+  const DecodedPng png = decode_png(encode_png(canvas));
+  REQUIRE(png.decoded);
+  CHECK(png.width == 5);
+  CHECK(png.height == 3);
+  CHECK(png.channels == 4);
 
   std::vector<std::uint8_t> expected;
   for (int y = 2; y >= 0; --y) {
@@ -145,22 +159,15 @@ TEST_CASE("The PNG decodes back to the canvas, top row first, alpha included",
       expected.insert(expected.end(), {c.r, c.g, c.b, c.a});
     }
   }
-  CHECK(image == expected);
+  CHECK(png.rgba == expected);
 }
 
 TEST_CASE("A one-pixel canvas encodes as a valid PNG", "[common][image_io][png]") {
-  const auto png = encode_png(Canvas(1, 1, Color{1, 2, 3, 4}));
-  int width = 0;
-  int height = 0;
-  int channels = 0;
-  stbi_uc* decoded = stbi_load_from_memory(png.data(), static_cast<int>(png.size()), &width,
-                                           &height, &channels, 4);
-  REQUIRE(decoded != nullptr);
-  const std::vector<std::uint8_t> image(decoded, decoded + 4);
-  stbi_image_free(decoded);
-  CHECK(width == 1);
-  CHECK(height == 1);
-  CHECK(image == std::vector<std::uint8_t>{1, 2, 3, 4});
+  const DecodedPng png = decode_png(encode_png(Canvas(1, 1, Color{1, 2, 3, 4})));
+  REQUIRE(png.decoded);
+  CHECK(png.width == 1);
+  CHECK(png.height == 1);
+  CHECK(png.rgba == std::vector<std::uint8_t>{1, 2, 3, 4});
 }
 
 TEST_CASE("write_file_atomically creates the missing folders and leaves only the file",

@@ -7,6 +7,8 @@
 #include <optional>
 #include <stdexcept>
 
+#include "common/printable_text.hpp"
+
 namespace tri {
 namespace {
 
@@ -43,29 +45,6 @@ std::string hex(Color c) {
   return out;
 }
 
-std::string escaped(const std::string& text) {
-  std::string out;
-  for (const char ch : text) {
-    switch (ch) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      default:
-        out += ch;
-    }
-  }
-  return out;
-}
-
 double text_width(const std::string& text, double size = 12) {
   // Count code points, not bytes, so "×" or "½" count once.
   double points = 0;
@@ -88,7 +67,7 @@ std::string text_element(double x, double y, const std::string& text, const char
   std::string out = "<text x=\"" + unit(x) + "\" y=\"" + unit(y) + "\" font-size=\"" + unit(size) +
                     "\" text-anchor=\"" + anchor + "\" fill=\"" + hex(color) + "\"";
   if (halo) out += " stroke=\"#ffffff\" stroke-width=\"3\" paint-order=\"stroke\"";
-  return out + ">" + escaped(text) + "</text>\n";
+  return out + ">" + escape_xml(text) + "</text>\n";
 }
 
 std::string line_element(glm::dvec2 a, glm::dvec2 b, Color color, double width, bool dashed) {

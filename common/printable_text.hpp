@@ -1,6 +1,6 @@
 /// @file
 /// Showing untrusted text (a word from a scene file, a name from the command line) in a message:
-/// short, on one line, and harmless to a terminal.
+/// short, on one line, and harmless to a terminal; and any text inside an XML (SVG) document.
 #pragma once
 
 #include <cstddef>
@@ -16,5 +16,8 @@ inline constexpr std::size_t max_excerpt_characters = 32;
 /// controls, byte order mark) and bytes that are not valid UTF-8 written as `\xNN`, other UTF-8
 /// kept; cut after max_excerpt_characters with "...(N bytes)" saying how long it was.
 std::string printable_excerpt(std::string_view text);
+
+/// Text with &, <, > and " replaced by their XML entities, for an SVG's text and attributes.
+std::string escape_xml(std::string_view text);
 
 }  // namespace tri

@@ -131,10 +131,23 @@ LineStatus read_line(std::istream& in, std::string& buffer, std::string_view& li
 }
 
 glm::dvec2 point(const LineReader& reader, const std::vector<std::string_view>& words,
-                 std::size_t first, int index) {
+                 std::size_t first, std::size_t index) {
   const std::string x = "x" + std::to_string(index);
   const std::string y = "y" + std::to_string(index);
   return {reader.coordinate(words[first], x), reader.coordinate(words[first + 1], y)};
+}
+
+// A triangle or a line from its directive's words: its n points (x0 y0 x1 y1 ...) into the
+// member `points`, then an optional colour (white when absent). `usage` is the directive's form,
+// for the message when the count of values is wrong.
+template <class Primitive, std::size_t n>
+Primitive read_primitive(const LineReader& reader, const std::vector<std::string_view>& words,
+                         const char* usage, std::array<glm::dvec2, n> Primitive::*points) {
+  reader.expect_count(words, 1 + 2 * n, usage);
+  Primitive primitive;
+  for (std::size_t i = 0; i < n; ++i) (primitive.*points)[i] = point(reader, words, 1 + 2 * i, i);
+  primitive.color = reader.color(words, 1 + 2 * n, colors::white);
+  return primitive;
 }
 
 }  // namespace
@@ -178,17 +191,11 @@ Scene parse_scene(std::istream& in, std::string_view source_name, const SceneLim
                     " primitives, the limit of a scene");
       }
       if (directive == "tri") {
-        reader.expect_count(words, 7, "tri x0 y0 x1 y1 x2 y2 [r g b]");
-        SceneTriangle t;
-        for (int i = 0; i < 3; ++i) t.vertices[i] = point(reader, words, 1 + 2 * i, i);
-        t.color = reader.color(words, 7, colors::white);
-        scene.primitives.emplace_back(t);
+        scene.primitives.emplace_back(read_primitive(reader, words, "tri x0 y0 x1 y1 x2 y2 [r g b]",
+                                                     &SceneTriangle::vertices));
       } else {
-        reader.expect_count(words, 5, "line x0 y0 x1 y1 [r g b]");
-        SceneLine l;
-        for (int i = 0; i < 2; ++i) l.ends[i] = point(reader, words, 1 + 2 * i, i);
-        l.color = reader.color(words, 5, colors::white);
-        scene.primitives.emplace_back(l);
+        scene.primitives.emplace_back(
+            read_primitive(reader, words, "line x0 y0 x1 y1 [r g b]", &SceneLine::ends));
       }
     } else {
       reader.fail("unknown directive '" + printable_excerpt(directive) +

@@ -70,6 +70,12 @@ std::string read_file(const fs::path& path) {
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
+// The run failed with this exit status (1: an error, 2: a usage error) and said why.
+void check_fails(const Run& run, int status, const std::string& message) {
+  CHECK(run.status == status);
+  CHECK(run.err.find(message) != std::string::npos);
+}
+
 bool is_one_line(const std::string& text) {
   return !text.empty() && text.back() == '\n' && text.find('\n') == text.size() - 1;
 }
@@ -188,8 +194,7 @@ TEST_CASE("raster asks for an algorithm when the scene has triangles", "[raster]
   TempFolder dir;
   const auto scene = dir.write("t.scene", "canvas 8 8\ntri 0 0 7 0 0 7\n");
   const Run run = raster({"--scene", scene.string(), "--out", (dir / "x.png").string()});
-  CHECK(run.status == 2);
-  CHECK(run.err.find("choose an algorithm with --algo") != std::string::npos);
+  check_fails(run, 2, "choose an algorithm with --algo");
   CHECK(dir.file_count() == 1);
 }
 
@@ -197,11 +202,9 @@ TEST_CASE("raster reports a missing scene file, a missing --scene and bad option
           "[raster]") {
   TempFolder dir;
   Run run = raster({"--scene", (dir / "none.scene").string()});
-  CHECK(run.status == 1);
-  CHECK(run.err.find("none.scene: cannot open the scene file") != std::string::npos);
+  check_fails(run, 1, "none.scene: cannot open the scene file");
   run = raster({"--out", (dir / "x.png").string()});
-  CHECK(run.status == 2);
-  CHECK(run.err.find("--scene FILE is required") != std::string::npos);
+  check_fails(run, 2, "--scene FILE is required");
   run = raster({"--list", "--algo", "x"});
   CHECK(run.status == 2);
   const auto scene = dir.write("l.scene", "canvas 8 8\nline 0 0 7 7\n");
@@ -245,8 +248,7 @@ TEST_CASE("raster refuses its scene as an output before drawing, and the scene s
   const auto scene = dir.write("s.scene", text);
   for (const char* option : {"--out", "--counts"}) {
     const Run run = raster({"--scene", scene.string(), option, scene.string()});
-    CHECK(run.status == 2);
-    CHECK(run.err.find("is the input") != std::string::npos);
+    check_fails(run, 2, "is the input");
     CHECK(read_file(scene) == text);
   }
   fs::create_hard_link(scene, dir / "alias.png");
@@ -260,11 +262,9 @@ TEST_CASE("raster refuses two outputs naming one file and empty output paths", "
   const auto scene = dir.write("s.scene", "canvas 8 8\n");
   const auto same = (dir / "x").string();
   Run run = raster({"--scene", scene.string(), "--out", same, "--counts", same});
-  CHECK(run.status == 2);
-  CHECK(run.err.find("two outputs name one file") != std::string::npos);
+  check_fails(run, 2, "two outputs name one file");
   run = raster({"--scene", scene.string(), "--out", ""});
-  CHECK(run.status == 2);
-  CHECK(run.err.find("needs a non-empty value") != std::string::npos);
+  check_fails(run, 2, "needs a non-empty value");
   CHECK(dir.file_count() == 1);
 }
 
@@ -272,8 +272,7 @@ TEST_CASE("raster refuses to replace a device and leaves it a device", "[raster]
   TempFolder dir;
   const auto scene = dir.write("s.scene", "canvas 8 8\n");
   const Run run = raster({"--scene", scene.string(), "--out", "/dev/null"});
-  CHECK(run.status == 1);
-  CHECK(run.err.find("/dev/null: it is a character device") != std::string::npos);
+  check_fails(run, 1, "/dev/null: it is a character device");
   CHECK(fs::is_character_file("/dev/null"));
 }
 
@@ -311,12 +310,10 @@ TEST_CASE("raster --bench refuses a count estimated beyond ten minutes unless fo
   TempFolder dir;
   const auto scene = dir.write("big.scene", "canvas 2048 2048\ntri -10 -10 5000 -10 -10 5000\n");
   Run run = raster({"--algo", "edge_function", "--scene", scene.string(), "--bench", "1000000"});
-  CHECK(run.status == 2);
-  CHECK(run.err.find("add --force to run it anyway") != std::string::npos);
+  check_fails(run, 2, "add --force to run it anyway");
   CHECK(run.out.empty());
   run = raster({"--algo", "edge_function", "--scene", scene.string(), "--force"});
-  CHECK(run.status == 2);
-  CHECK(run.err.find("--force goes with --bench") != std::string::npos);
+  check_fails(run, 2, "--force goes with --bench");
 }
 
 TEST_CASE("raster draws the same picture with progress pieces as in one batch", "[raster]") {
@@ -385,16 +382,13 @@ TEST_CASE("raster refuses --coverage without a rule-area algorithm and colours w
   const auto scene = dir.write("t.scene", "canvas 8 8\ntri 0 0 7 0 0 7\n");
   Run run = raster(
       {"--algo", "fast_hybrid", "--scene", scene.string(), "--coverage", (dir / "x.pgm").string()});
-  CHECK(run.status == 2);
-  CHECK(run.err.find("--coverage needs an algorithm of rule area") != std::string::npos);
+  check_fails(run, 2, "--coverage needs an algorithm of rule area");
   CHECK(run.err.find("fast_hybrid has rule top-left") != std::string::npos);
   run = raster(
       {"--algo", "area_cells", "--scene", scene.string(), "--out", (dir / "x.png").string()});
-  CHECK(run.status == 2);
-  CHECK(run.err.find("area_cells has rule area") != std::string::npos);
+  check_fails(run, 2, "area_cells has rule area");
   run = raster({"--algo", "samples_grid_4x4", "--scene", scene.string()});
-  CHECK(run.status == 2);
-  CHECK(run.err.find("choose --coverage FILE.pgm or --bench N") != std::string::npos);
+  check_fails(run, 2, "choose --coverage FILE.pgm or --bench N");
   CHECK(dir.file_count() == 1);
 }
 

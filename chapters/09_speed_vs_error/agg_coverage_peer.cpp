@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "chapters/09_speed_vs_error/byte_coverage_peer.hpp"
-#include "chapters/09_speed_vs_error/coverage_peer_libraries.hpp"
+#include "chapters/09_speed_vs_error/library_peers.hpp"
 
 namespace tri::ch09 {
 namespace {
@@ -17,8 +17,7 @@ namespace {
 class AggImage {
  public:
   AggImage(int width, int height)
-      : height_(height),
-        pixels_(static_cast<std::size_t>(width) * static_cast<std::size_t>(height), 0),
+      : pixels_(static_cast<std::size_t>(width) * static_cast<std::size_t>(height), 0),
         buffer_(pixels_.data(), static_cast<unsigned>(width), static_cast<unsigned>(height), width),
         format_(buffer_),
         renderer_(format_) {
@@ -29,13 +28,11 @@ class AggImage {
 
   void clear() noexcept { std::fill(pixels_.begin(), pixels_.end(), std::uint8_t{0}); }
   // [listing agg_draw]
-  void draw(const SceneTriangle& t) {
+  void draw(const YDownTriangle& v) {
     rasterizer_.reset();
-    const glm::dvec2 a = to_y_down(t.vertices[0], height_), b = to_y_down(t.vertices[1], height_),
-                     c = to_y_down(t.vertices[2], height_);
-    rasterizer_.move_to_d(a.x, a.y);
-    rasterizer_.line_to_d(b.x, b.y);
-    rasterizer_.line_to_d(c.x, c.y);
+    rasterizer_.move_to_d(v[0].x, v[0].y);
+    rasterizer_.line_to_d(v[1].x, v[1].y);
+    rasterizer_.line_to_d(v[2].x, v[2].y);
     agg::render_scanlines_aa_solid(rasterizer_, scanline_, renderer_, agg::gray8(255));
   }
   // [/listing]
@@ -45,7 +42,6 @@ class AggImage {
   }
 
  private:
-  int height_;
   std::vector<std::uint8_t> pixels_;
   agg::rendering_buffer buffer_;
   agg::pixfmt_gray8 format_;
@@ -57,11 +53,8 @@ class AggImage {
 }  // namespace
 
 CoveragePeer agg_coverage_peer() {
-  return byte_coverage_peer("agg_scanline_aa", "area to 8 bits", 0,
-                            [](int width, int height, std::span<const SceneTriangle> triangles) {
-                              require_within(triangles, height, agg_coordinate_limit, "AGG");
-                              return AggImage(width, height);
-                            });
+  return byte_coverage_peer<AggImage>("agg_scanline_aa", "area to 8 bits", 0, "AGG",
+                                      agg_coordinate_limit);
 }
 
 }  // namespace tri::ch09

@@ -1,7 +1,7 @@
 // AGG's anti-aliasing rasterizer as a peer: the exact area, to 8 bits.
 #include <catch2/catch.hpp>
 
-#include "chapters/09_speed_vs_error/coverage_peer_libraries.hpp"
+#include "chapters/09_speed_vs_error/library_peers.hpp"
 #include "chapters/09_speed_vs_error/peer_test_support.hpp"
 
 using namespace tri::ch09::test;

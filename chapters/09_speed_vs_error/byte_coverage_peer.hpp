@@ -5,7 +5,9 @@
 #pragma once
 
 #include <concepts>
+#include <cstddef>
 #include <cstdint>
+#include <numeric>
 #include <span>
 #include <string>
 #include <utility>
@@ -15,10 +17,10 @@
 
 namespace tri::ch09 {
 
-/// A library's coverage image: built for a width x height canvas (refusing a scene beyond the
-/// library's range), cleared, drawn into one triangle at a time, read as bytes.
+/// A library's coverage image: built for a width x height canvas, cleared, drawn into one
+/// triangle at a time (its vertices already in the library's y-down space), read as bytes.
 template <class Image>
-concept ByteCoverageImage = requires(Image image, const SceneTriangle& t, int x, int top_row) {
+concept ByteCoverageImage = requires(Image image, const YDownTriangle& t, int x, int top_row) {
   {image.clear()};
   {image.draw(t)};
   { image.value(x, top_row) } -> std::convertible_to<std::uint8_t>;
@@ -35,39 +37,42 @@ void add_image_coverage(Image& image, ch10::CoverageCanvas& canvas, const PixelW
   }
 }
 
-/// The peer: `make(width, height, triangles)` builds the image (after checking the scene's
-/// range). Timed: every triangle of the scene drawn into one image, one call each, image ready
-/// before the clock. Error: measure_area_error with each triangle drawn alone on a cleared image
-/// and read back in a window around it, then the whole scene.
-template <class Make>
-CoveragePeer byte_coverage_peer(std::string name, std::string rule, int samples, Make make) {
+/// The peer of `library`: an Image(width, height) of the canvas size, for scenes within
+/// [-limit, limit] once mapped with to_y_down (require_within refuses the others). Timed: every
+/// triangle of the scene drawn into one image, one call each, image ready before the clock.
+/// Touched pixels: count_each_alone's writes. Error: measure_area_error with each triangle drawn
+/// alone on a cleared image and read back in a window around it, then the whole scene.
+template <ByteCoverageImage Image>
+CoveragePeer byte_coverage_peer(std::string name, std::string rule, int samples,
+                                std::string library, double limit) {
   return {std::move(name), std::move(rule), samples,
-          [make](const PreparedScene& prepared, const AreaTruth& truth, const TimingPlan& plan) {
+          [library = std::move(library), limit](const PreparedScene& prepared,
+                                                const AreaTruth& truth, const TimingPlan& plan) {
             const int width = prepared.scene.width, height = prepared.scene.height;
+            require_within(prepared.triangles, height, limit, library);
             CoveragePeerResult result;
             {
-              auto image = make(width, height, std::span(prepared.triangles));
+              Image image(width, height);
               result.timing = time_runs(
                   [&] {
-                    for (const SceneTriangle& t : prepared.triangles) image.draw(t);
+                    for (const SceneTriangle& t : prepared.triangles) image.draw(to_y_down(t, height));
                   },
                   plan);
             }
-            auto image = make(width, height, std::span(prepared.triangles));
-            for (const SceneTriangle& t : prepared.triangles) {
-              image.clear();
-              image.draw(t);
-              const PixelWindow w = pixels_around(t, width, height);
-              for (int y = w.y_begin; y < w.y_end; ++y) {
-                for (int x = w.x_begin; x < w.x_end; ++x) {
-                  result.touched_pixels += image.value(x, height - 1 - y) != 0 ? 1 : 0;
-                }
-              }
-            }
+            Image image(width, height);
+            const WriteCounts touched = count_each_alone(
+                width, height, std::span(prepared.triangles),
+                [&](std::size_t t) {
+                  image.clear();
+                  image.draw(to_y_down(prepared.triangles[t], height));
+                },
+                [&](int x, int top_row) { return image.value(x, top_row) != 0; });
+            result.touched_pixels =
+                std::accumulate(touched.counts.begin(), touched.counts.end(), std::uint64_t{0});
             result.error = measure_area_error(
                 [&](ch10::CoverageCanvas& canvas, std::span<const SceneTriangle> triangles) {
                   image.clear();
-                  for (const SceneTriangle& t : triangles) image.draw(t);
+                  for (const SceneTriangle& t : triangles) image.draw(to_y_down(t, height));
                   const PixelWindow whole{0, width, 0, height};
                   add_image_coverage(image, canvas,
                                      triangles.size() == 1

@@ -1,22 +1,26 @@
-#include "chapters/09_speed_vs_error/cairo_peer.hpp"
+#include "chapters/09_speed_vs_error/library_peers.hpp"
 
 #include <cairo.h>
 
 #include <cstring>
 #include <memory>
-#include <numeric>
 #include <stdexcept>
 #include <string>
 
+#include "chapters/09_speed_vs_error/byte_coverage_peer.hpp"
 #include "chapters/09_speed_vs_error/y_down_peer.hpp"
 
 namespace tri::ch09 {
 namespace {
 
-// A cairo image surface and a drawing context on it, set up for aliased fills.
-class CairoCanvas {
+// A cairo image surface and a drawing context on it, filling one triangle path at a time with
+// the given anti-aliasing and operator. With CAIRO_OPERATOR_ADD each fill adds its coverage to
+// the pixel (saturating at 255), as a summed coverage canvas does, instead of compositing it over
+// what is there.
+class CairoSurface {
  public:
-  CairoCanvas(int width, int height, cairo_format_t format)
+  CairoSurface(int width, int height, cairo_format_t format, cairo_antialias_t antialias,
+               cairo_operator_t op)
       : surface_(cairo_image_surface_create(format, width, height), cairo_surface_destroy),
         context_(nullptr, cairo_destroy) {
     if (cairo_surface_status(surface_.get()) != CAIRO_STATUS_SUCCESS) {
@@ -24,8 +28,9 @@ class CairoCanvas {
                                std::to_string(height) + " image surface");
     }
     context_.reset(cairo_create(surface_.get()));
-    cairo_set_antialias(context_.get(), CAIRO_ANTIALIAS_NONE);
+    cairo_set_antialias(context_.get(), antialias);
     cairo_set_fill_rule(context_.get(), CAIRO_FILL_RULE_WINDING);
+    cairo_set_operator(context_.get(), op);
     cairo_set_source_rgba(context_.get(), 1, 1, 1, 1);
   }
 
@@ -34,7 +39,7 @@ class CairoCanvas {
   }
 
   // One path of three vertices, already in cairo's y-down space, filled.
-  void fill(const glm::dvec2 (&v)[3]) noexcept {
+  void draw(const YDownTriangle& v) noexcept {
     cairo_t* cr = context_.get();
     cairo_move_to(cr, v[0].x, v[0].y);
     cairo_line_to(cr, v[1].x, v[1].y);
@@ -51,11 +56,16 @@ class CairoCanvas {
     cairo_surface_mark_dirty(surface_.get());
   }
 
-  // The alpha of pixel (x, row) of an A8 surface, row counted from the top.
+  // The alpha of pixel (x, row) of an A8 surface, row counted from the top (after flush()).
   std::uint8_t alpha(int x, int row) noexcept {
     return cairo_image_surface_get_data(surface_.get())[row * stride() + x];
   }
   void flush() noexcept { cairo_surface_flush(surface_.get()); }
+  // The same, flushing first.
+  std::uint8_t value(int x, int row) noexcept {
+    flush();
+    return alpha(x, row);
+  }
 
  private:
   int stride() noexcept { return cairo_image_surface_get_stride(surface_.get()); }
@@ -64,8 +74,14 @@ class CairoCanvas {
   std::unique_ptr<cairo_t, void (*)(cairo_t*)> context_;
 };
 
+// The coverage peer's image: an A8 surface with cairo's default anti-aliasing, adding.
+struct CairoAlpha : CairoSurface {
+  CairoAlpha(int width, int height)
+      : CairoSurface(width, height, CAIRO_FORMAT_A8, CAIRO_ANTIALIAS_DEFAULT, CAIRO_OPERATOR_ADD) {}
+};
+
 struct CairoTriangle {
-  glm::dvec2 vertices[3];
+  YDownTriangle vertices;
   Color color;
 };
 
@@ -74,9 +90,7 @@ std::vector<CairoTriangle> to_cairo(std::span<const SceneTriangle> triangles, in
   std::vector<CairoTriangle> out;
   out.reserve(triangles.size());
   for (const SceneTriangle& t : triangles) {
-    out.push_back({{to_y_down(t.vertices[0], height), to_y_down(t.vertices[1], height),
-                    to_y_down(t.vertices[2], height)},
-                   t.color});
+    out.push_back({to_y_down(t, height), t.color});
   }
   return out;
 }
@@ -85,50 +99,43 @@ std::vector<CairoTriangle> to_cairo(std::span<const SceneTriangle> triangles, in
 
 WriteCounts cairo_write_counts(int width, int height, std::span<const SceneTriangle> triangles) {
   const std::vector<CairoTriangle> converted = to_cairo(triangles, height);
-  CairoCanvas mask(width, height, CAIRO_FORMAT_A8);
-  WriteCounts result;
-  result.counts.assign(static_cast<std::size_t>(width) * static_cast<std::size_t>(height), 0);
-  for (std::size_t t = 0; t < converted.size(); ++t) {
-    mask.clear();
-    mask.fill(converted[t].vertices);
-    mask.flush();
-    const PixelWindow window = pixels_around(triangles[t], width, height);
-    for (int y = window.y_begin; y < window.y_end; ++y) {
-      for (int x = window.x_begin; x < window.x_end; ++x) {
-        if (mask.alpha(x, height - 1 - y) != 0) {
-          ++result.counts[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
-                          static_cast<std::size_t>(x)];
-        }
-      }
-    }
-  }
-  return result;
+  CairoSurface mask(width, height, CAIRO_FORMAT_A8, CAIRO_ANTIALIAS_NONE, CAIRO_OPERATOR_OVER);
+  return count_each_alone(
+      width, height, triangles,
+      [&](std::size_t t) {
+        mask.clear();
+        mask.draw(converted[t].vertices);
+        mask.flush();
+      },
+      [&](int x, int top_row) { return mask.alpha(x, top_row) != 0; });
 }
 
 ExternalPeer cairo_peer() {
   return {"cairo_no_antialias", "external", "approximate", false,
           [](const PreparedScene& prepared, const TimingPlan& plan) {
             const int width = prepared.scene.width, height = prepared.scene.height;
-            PeerResult result;
+            Timing timing;
             {
               const std::vector<CairoTriangle> triangles = to_cairo(prepared.triangles, height);
-              CairoCanvas canvas(width, height, CAIRO_FORMAT_ARGB32);
-              result.timing = time_runs(
+              CairoSurface canvas(width, height, CAIRO_FORMAT_ARGB32, CAIRO_ANTIALIAS_NONE,
+                                  CAIRO_OPERATOR_OVER);
+              timing = time_runs(
                   [&] {
                     for (const CairoTriangle& t : triangles) {
                       canvas.set_color(t.color);
-                      canvas.fill(t.vertices);
+                      canvas.draw(t.vertices);
                     }
                     canvas.flush();
                   },
                   plan);
             }
-            const WriteCounts drawn = cairo_write_counts(width, height, prepared.triangles);
-            result.written_pixels =
-                std::accumulate(drawn.counts.begin(), drawn.counts.end(), std::uint64_t{0});
-            result.error = measure_error(cairo_write_counts, prepared.error_scene);
-            return result;
+            return peer_result(timing, cairo_write_counts, prepared);
           }};
+}
+
+CoveragePeer cairo_coverage_peer() {
+  return byte_coverage_peer<CairoAlpha>("cairo_antialias", "area in x over 15 rows", 0, "cairo",
+                                        cairo_coordinate_limit);
 }
 
 }  // namespace tri::ch09

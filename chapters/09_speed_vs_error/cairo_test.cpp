@@ -4,8 +4,7 @@
 #include <algorithm>
 #include <numeric>
 
-#include "chapters/09_speed_vs_error/cairo_peer.hpp"
-#include "chapters/09_speed_vs_error/coverage_peer_libraries.hpp"
+#include "chapters/09_speed_vs_error/library_peers.hpp"
 #include "chapters/09_speed_vs_error/peer_test_support.hpp"
 
 using namespace tri::ch09::test;
@@ -38,9 +37,7 @@ TEST_CASE("cairo follows no exact tie rule: an integer-grid mesh gets centres tw
 
 TEST_CASE("cairo refuses a scene beyond its 24.8 fixed-point range, naming the limit",
           "[09_speed_vs_error][step7][cairo]") {
-  const std::vector<tri::SceneTriangle> far{{{{{0, 0}, {1e7, 0}, {0, 5}}}, tri::colors::white}};
-  CHECK_THROWS_WITH(tri::ch09::cairo_write_counts(8, 8, far),
-                    Catch::Contains("cairo cannot draw this scene") && Catch::Contains("8000000"));
+  check_refuses_far_vertex(tri::ch09::cairo_write_counts, 1e7, "cairo", "8000000");
 }
 
 TEST_CASE("cairo's row in the report: timed, with its error measured",

@@ -1,6 +1,6 @@
 #include "chapters/09_speed_vs_error/coverage_peers.hpp"
 
-#include "chapters/09_speed_vs_error/coverage_peer_libraries.hpp"
+#include "chapters/09_speed_vs_error/library_peers.hpp"
 #include "chapters/09_speed_vs_error/peer_builds.hpp"
 
 namespace tri::ch09 {
@@ -19,23 +19,10 @@ std::vector<CoveragePeer> coverage_peers() {
   return peers;
 }
 
-namespace {
-
-std::string status(const std::string& peer, const char* not_built,
-                   std::span<const CoveragePeer> measured) {
-  if (not_built != nullptr) return peer + ": not built (" + not_built + ")";
-  for (const CoveragePeer& p : measured) {
-    if (p.name == peer) return peer + ": measured";
-  }
-  return peer + ": built, not selected by --only";
-}
-
-}  // namespace
-
 std::string coverage_peer_status(std::span<const CoveragePeer> measured) {
-  return status("agg_scanline_aa", agg_not_built, measured) + "; " +
-         status("cairo_antialias", cairo_not_built, measured) + "; " +
-         status("pixman_a8", pixman_not_built, measured);
+  return library_status("agg_scanline_aa", agg_not_built, "agg_scanline_aa", measured) + "; " +
+         library_status("cairo_antialias", cairo_not_built, "cairo_antialias", measured) + "; " +
+         library_status("pixman_a8", pixman_not_built, "pixman_a8", measured);
 }
 
 }  // namespace tri::ch09

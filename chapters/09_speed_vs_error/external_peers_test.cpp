@@ -29,22 +29,22 @@ TEST_CASE("The Machine line says which peers were measured, or why each was not"
   const auto says = [](const std::string& line, const std::string& what) {
     return line.find(what) != std::string::npos;
   };
-#if TUTORIAL_WITH_OSMESA
-  CHECK(says(all, "Mesa llvmpipe: measured (mesa_llvmpipe_1_thread, mesa_llvmpipe_default)"));
-  CHECK(says(none, "Mesa llvmpipe: built, not selected by --only"));
-#else
-  CHECK(says(all, "Mesa llvmpipe: not built ("));
-#endif
-#if TUTORIAL_WITH_PIXMAN
-  CHECK(says(all, "pixman: measured (pixman_a1)"));
-  CHECK(says(none, "pixman: built, not selected by --only"));
-#else
-  CHECK(says(all, "pixman: not built ("));
-#endif
-#if TUTORIAL_WITH_CAIRO
-  CHECK(says(all, "cairo: measured (cairo_no_antialias)"));
-  CHECK(says(none, "cairo: built, not selected by --only"));
-#else
-  CHECK(says(all, "cairo: not built ("));
-#endif
+  struct Library {
+    std::string name;
+    bool built;
+    std::string peers;
+  };
+  for (const Library& library :
+       {Library{"Mesa llvmpipe", TUTORIAL_WITH_OSMESA != 0,
+                "(mesa_llvmpipe_1_thread, mesa_llvmpipe_default)"},
+        Library{"pixman", TUTORIAL_WITH_PIXMAN != 0, "(pixman_a1)"},
+        Library{"cairo", TUTORIAL_WITH_CAIRO != 0, "(cairo_no_antialias)"}}) {
+    CAPTURE(library.name);
+    if (library.built) {
+      CHECK(says(all, library.name + ": measured " + library.peers));
+      CHECK(says(none, library.name + ": built, not selected by --only"));
+    } else {
+      CHECK(says(all, library.name + ": not built ("));
+    }
+  }
 }

@@ -1,7 +1,6 @@
 #include "chapters/09_speed_vs_error/llvmpipe_peer.hpp"
 
 #include <cstdlib>
-#include <numeric>
 #include <optional>
 #include <string>
 
@@ -12,25 +11,22 @@ namespace tri::ch09 {
 
 PeerResult measure_llvmpipe_here(const PreparedScene& prepared, const TimingPlan& plan) {
   const int width = prepared.scene.width, height = prepared.scene.height;
-  PeerResult result;
+  Timing timing;
   {
     // As for the book's algorithms: the buffer and the triangles are ready before the clock.
     LlvmpipeCanvas canvas(width, height, LlvmpipeCanvas::Pixels::rgba8);
     canvas.upload(prepared.triangles);
-    result.timing = time_runs([&canvas] { canvas.draw(); }, plan);
+    timing = time_runs([&canvas] { canvas.draw(); }, plan);
   }
+  // One context for the scene and all six vertex orders of the error scene: it has the scene's
+  // size, and measure_error refuses counts of any other size.
   LlvmpipeCanvas counter(width, height, LlvmpipeCanvas::Pixels::write_counts);
-  const WriteCounts drawn = counter.write_counts(prepared.triangles);
-  result.written_pixels =
-      std::accumulate(drawn.counts.begin(), drawn.counts.end(), std::uint64_t{0});
-  // One context for all six vertex orders: the error scene has the scene's size, and
-  // measure_error refuses counts of any other size.
-  result.error = measure_error(
+  return peer_result(
+      timing,
       [&counter](int, int, std::span<const SceneTriangle> triangles) {
         return counter.write_counts(triangles);
       },
-      prepared.error_scene);
-  return result;
+      prepared);
 }
 
 namespace {

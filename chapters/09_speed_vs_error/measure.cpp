@@ -115,6 +115,17 @@ Measurement measure(const TriangleAlgorithm& algorithm, const PreparedScene& pre
   return measure(algorithm, prepared, timing, ceilings);
 }
 
+PeerResult peer_result(const Timing& timing, const CountingDraw& draw,
+                       const PreparedScene& prepared) {
+  PeerResult result;
+  result.timing = timing;
+  const WriteCounts drawn = draw(prepared.scene.width, prepared.scene.height, prepared.triangles);
+  result.written_pixels =
+      std::accumulate(drawn.counts.begin(), drawn.counts.end(), std::uint64_t{0});
+  result.error = measure_error(draw, prepared.error_scene);
+  return result;
+}
+
 Measurement measure(const ExternalPeer& peer, const PreparedScene& prepared, const TimingPlan& plan,
                     const FillCeilings& ceilings) {
   Measurement m = row_for(peer.name, peer.chapter, peer.rule, peer.threaded, prepared, ceilings);

@@ -121,6 +121,11 @@ struct PeerResult {
   ErrorReport error;                 ///< against the oracle, on the error scene
 };
 
+/// An external peer's result from its timing: the pixel writes of one draw of the scene by `draw`
+/// and its error (measure_error with `draw`) on the error scene.
+PeerResult peer_result(const Timing& timing, const CountingDraw& draw,
+                       const PreparedScene& prepared);
+
 /// A rasterizer that is not one of the book's (Mesa's llvmpipe), measured beside them.
 struct ExternalPeer {
   std::string name;     ///< its row in the report, e.g. "mesa_llvmpipe_1_thread"

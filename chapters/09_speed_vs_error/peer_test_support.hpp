@@ -1,8 +1,11 @@
 // What the external peers' tests share: the oracle's counts and small seeded scenes.
 #pragma once
 
+#include <catch2/catch.hpp>
+
 #include <cstdint>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "chapters/09_speed_vs_error/coverage_measure.hpp"
@@ -46,6 +49,15 @@ inline std::size_t differing_pixels(const std::vector<std::uint32_t>& a,
 /// or on its border, each owned once by an exact rule.
 inline std::vector<SceneTriangle> split_square() {
   return {{{{{1, 1}, {6, 1}, {1, 6}}}, colors::white}, {{{{6, 1}, {6, 6}, {1, 6}}}, colors::white}};
+}
+
+/// Checks that a library's write counts refuse a triangle reaching x = far_x (beyond its range)
+/// on an 8x8 canvas, with a message that names the library and its limit.
+inline void check_refuses_far_vertex(const CountingDraw& write_counts, double far_x,
+                                     const std::string& library, const std::string& limit) {
+  const std::vector<SceneTriangle> far{{{{{0, 0}, {far_x, 0}, {0, 5}}}, colors::white}};
+  CHECK_THROWS_WITH(write_counts(8, 8, far),
+                    Catch::Contains(library + " cannot draw this scene") && Catch::Contains(limit));
 }
 
 /// An anti-aliasing peer measured on a scene (one untimed-looking sample: the tests never time):

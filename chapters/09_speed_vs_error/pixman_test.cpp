@@ -7,9 +7,9 @@
 #include <numeric>
 #include <stdexcept>
 
-#include "chapters/09_speed_vs_error/coverage_peer_libraries.hpp"
+#include "chapters/09_speed_vs_error/library_peers.hpp"
 #include "chapters/09_speed_vs_error/peer_test_support.hpp"
-#include "chapters/09_speed_vs_error/pixman_peer.hpp"
+#include "common/canvas.hpp"
 
 using namespace tri::ch09::test;
 using Kind = tri::SceneRecipe::Kind;
@@ -59,9 +59,7 @@ TEST_CASE(
 
 TEST_CASE("pixman refuses a scene beyond its 16.16 fixed-point range, naming the limit",
           "[09_speed_vs_error][step7][pixman]") {
-  const std::vector<tri::SceneTriangle> far{{{{{0, 0}, {40000, 0}, {0, 5}}}, tri::colors::white}};
-  CHECK_THROWS_WITH(tri::ch09::pixman_write_counts(8, 8, far),
-                    Catch::Contains("pixman cannot draw this scene") && Catch::Contains("32767"));
+  check_refuses_far_vertex(tri::ch09::pixman_write_counts, 40000, "pixman", "32767");
 }
 
 TEST_CASE("pixman's row in the report: timed, and exact on the tiny suite",
@@ -95,8 +93,7 @@ TEST_CASE("pixman differs from the oracle only at centres within 2^-16 pixel of 
   std::size_t differing = 0;
   for (int y = 0; y < h; ++y) {
     for (int x = 0; x < w; ++x) {
-      const auto i =
-          static_cast<std::size_t>(y) * static_cast<std::size_t>(w) + static_cast<std::size_t>(x);
+      const std::size_t i = tri::pixel_index(x, y, w);
       if (pixman[i] == oracle[i]) continue;
       ++differing;
       double nearest = std::numeric_limits<double>::infinity();

@@ -332,29 +332,6 @@ LogScale speed_scale_for(std::span<const AlgorithmSummary> summaries, const Fill
   return {decades.low, decades.high, layout.bottom, layout.top};
 }
 
-std::string escape_xml(std::string_view text) {
-  std::string escaped;
-  for (const char c : text) {
-    switch (c) {
-      case '&':
-        escaped += "&amp;";
-        break;
-      case '<':
-        escaped += "&lt;";
-        break;
-      case '>':
-        escaped += "&gt;";
-        break;
-      case '"':
-        escaped += "&quot;";
-        break;
-      default:
-        escaped += c;
-    }
-  }
-  return escaped;
-}
-
 std::string to_svg(const BenchReport& report, std::span<const AlgorithmSummary> summaries,
                    const PlotLayout& layout) {
   const bool any_threaded = std::any_of(summaries.begin(), summaries.end(),

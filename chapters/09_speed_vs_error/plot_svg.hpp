@@ -11,6 +11,7 @@
 #include "chapters/09_speed_vs_error/log_axis.hpp"
 #include "chapters/09_speed_vs_error/measure.hpp"
 #include "chapters/09_speed_vs_error/summary.hpp"
+#include "common/printable_text.hpp"
 
 namespace tri::ch09 {
 
@@ -32,9 +33,6 @@ ErrorAxis error_axis_for(std::span<const AlgorithmSummary> summaries, const Plot
 /// The y axis: the decades holding every algorithm's Mpix/s and the ceilings, growing upward.
 LogScale speed_scale_for(std::span<const AlgorithmSummary> summaries, const FillCeilings& ceilings,
                          bool any_threaded, const PlotLayout& layout);
-
-/// Text with &, <, > and " replaced by their XML entities.
-std::string escape_xml(std::string_view text);
 
 /// The whole SVG document (it starts with `<svg`); one `<circle>` per summary, nothing else uses
 /// circles.

@@ -18,16 +18,11 @@ void draw_area_cells(CoverageCanvas& canvas, std::span<const SceneTriangle> tria
   for (const SceneTriangle& t : triangles) draw_triangle_area(canvas, t.vertices, cells, blend);
 }
 
-// The pattern is built once per batch (one small allocation), then walked per triangle.
-template <int n>
-void draw_grid_samples(CoverageCanvas& canvas, std::span<const SceneTriangle> triangles) {
-  const SamplePattern pattern = regular_grid(n);
-  for (const SceneTriangle& t : triangles) draw_triangle_samples(canvas, t.vertices, pattern);
-}
-
-template <int count>
-void draw_standard_samples(CoverageCanvas& canvas, std::span<const SceneTriangle> triangles) {
-  const SamplePattern pattern = standard_pattern(count);
+// The pattern (regular_grid(n) or standard_pattern(n)) is built once per batch (one small
+// allocation), then walked per triangle.
+template <SamplePattern (*pattern_of)(int), int n>
+void draw_samples(CoverageCanvas& canvas, std::span<const SceneTriangle> triangles) {
+  const SamplePattern pattern = pattern_of(n);
   for (const SceneTriangle& t : triangles) draw_triangle_samples(canvas, t.vertices, pattern);
 }
 
@@ -45,48 +40,48 @@ constexpr std::array algorithms = {
     AreaAlgorithm{.name = "samples_grid_1x1",
                   .chapter = chapter,
                   .summary = "1 sample per pixel (the centre), top-left rule: inside or outside",
-                  .draw = draw_grid_samples<1>,
+                  .draw = draw_samples<regular_grid, 1>,
                   .samples = 1},
     AreaAlgorithm{.name = "samples_grid_2x2",
                   .chapter = chapter,
                   .summary = "2x2 regular samples per pixel, each by chapter 08's span walker",
-                  .draw = draw_grid_samples<2>,
+                  .draw = draw_samples<regular_grid, 2>,
                   .samples = 4},
     AreaAlgorithm{.name = "samples_grid_4x4",
                   .chapter = chapter,
                   .summary = "4x4 regular samples per pixel, each by chapter 08's span walker",
-                  .draw = draw_grid_samples<4>,
+                  .draw = draw_samples<regular_grid, 4>,
                   .samples = 16},
     AreaAlgorithm{.name = "samples_grid_8x8",
                   .chapter = chapter,
                   .summary = "8x8 regular samples per pixel, each by chapter 08's span walker",
-                  .draw = draw_grid_samples<8>,
+                  .draw = draw_samples<regular_grid, 8>,
                   .samples = 64},
     AreaAlgorithm{.name = "samples_grid_16x16",
                   .chapter = chapter,
                   .summary = "16x16 regular samples per pixel, each by chapter 08's span walker",
-                  .draw = draw_grid_samples<16>,
+                  .draw = draw_samples<regular_grid, 16>,
                   .samples = 256},
     AreaAlgorithm{.name = "samples_standard_2",
                   .chapter = chapter,
                   .summary = "Vulkan's standard 2-sample pattern, each by chapter 08's span walker",
-                  .draw = draw_standard_samples<2>,
+                  .draw = draw_samples<standard_pattern, 2>,
                   .samples = 2},
     AreaAlgorithm{.name = "samples_standard_4",
                   .chapter = chapter,
                   .summary = "Vulkan's standard 4-sample pattern, each by chapter 08's span walker",
-                  .draw = draw_standard_samples<4>,
+                  .draw = draw_samples<standard_pattern, 4>,
                   .samples = 4},
     AreaAlgorithm{.name = "samples_standard_8",
                   .chapter = chapter,
                   .summary = "Vulkan's standard 8-sample pattern, each by chapter 08's span walker",
-                  .draw = draw_standard_samples<8>,
+                  .draw = draw_samples<standard_pattern, 8>,
                   .samples = 8},
     AreaAlgorithm{
         .name = "samples_standard_16",
         .chapter = chapter,
         .summary = "Vulkan's standard 16-sample pattern, each by chapter 08's span walker",
-        .draw = draw_standard_samples<16>,
+        .draw = draw_samples<standard_pattern, 16>,
         .samples = 16},
 };
 

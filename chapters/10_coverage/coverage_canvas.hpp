@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "common/canvas.hpp"
+
 namespace tri::ch10 {
 
 /// A coverage as the 16-bit value the PGM output stores: c clamped to [0, 1], then
@@ -45,10 +47,7 @@ class CoverageCanvas {
   std::vector<std::uint8_t> pgm_16() const;
 
  private:
-  std::size_t index(int x, int y) const noexcept {
-    return static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) +
-           static_cast<std::size_t>(x);
-  }
+  std::size_t index(int x, int y) const noexcept { return pixel_index(x, y, width_); }
 
   int width_;
   int height_;

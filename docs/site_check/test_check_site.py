@@ -134,6 +134,11 @@ class CheckerTest(unittest.TestCase):
             result = subprocess.run(command, capture_output=True, text=True, timeout=120)
             return result.returncode, result.stdout + result.stderr
 
+    def assert_edit_fails_with(self, edit, *expected):
+        """The correct site with one text replaced, edit = (file, old, new), fails with exactly
+        the expected problems."""
+        self.assert_fails_with(replaced(correct_site(), *edit), *expected)
+
     def assert_fails_with(self, files, *expected, chapter_folders=()):
         status, output = self.run_checker(files, chapter_folders)
         self.assertEqual(status, 1, output)
@@ -150,9 +155,10 @@ class CheckerTest(unittest.TestCase):
         self.assertIn("site check: passed", output)
 
     def test_an_image_file_that_is_missing_fails(self):
-        files = replaced(correct_site(), "chapter02.html", "figure_02.png", "missing.png")
-        self.assert_fails_with(files, "chapter02.html: image does not load: http",
-                               "chapter02.html: the server answered 404 for /missing.png")
+        self.assert_edit_fails_with(
+            ("chapter02.html", "figure_02.png", "missing.png"),
+            "chapter02.html: image does not load: http",
+            "chapter02.html: the server answered 404 for /missing.png")
 
     def test_an_image_file_that_is_not_an_image_fails(self):
         files = {**correct_site(), "figure_03.png": b"this is not a PNG"}
@@ -165,66 +171,66 @@ class CheckerTest(unittest.TestCase):
                                "index.html: the server answered 404 for /09_speed_vs_error.svg")
 
     def test_a_link_to_a_missing_page_fails(self):
-        files = replaced(correct_site(), "chapter01.html", 'href="index.html#map"',
-                         'href="chapter_missing.html"')
-        self.assert_fails_with(files,
-                               'chapter01.html: broken link to chapter_missing.html ("the map")')
+        self.assert_edit_fails_with(
+            ("chapter01.html", 'href="index.html#map"', 'href="chapter_missing.html"'),
+            'chapter01.html: broken link to chapter_missing.html ("the map")')
 
     def test_a_link_to_a_missing_anchor_fails(self):
-        files = replaced(correct_site(), "chapter02.html", 'href="#step1"', 'href="#step9"')
-        self.assert_fails_with(files, "chapter02.html: broken link to chapter02.html#step9, "
-                               'no such anchor ("to step 1")')
+        self.assert_edit_fails_with(
+            ("chapter02.html", 'href="#step1"', 'href="#step9"'),
+            "chapter02.html: broken link to chapter02.html#step9, "
+            'no such anchor ("to step 1")')
 
     def test_a_chapter_missing_from_the_navigation_tree_fails(self):
-        files = replaced(correct_site(), "navtreedata.js",
-                         '["Chapter 02", "chapter02.html", null], ', "")
-        self.assert_fails_with(files, "navigation tree: chapter02.html is missing")
+        self.assert_edit_fails_with(
+            ("navtreedata.js", '["Chapter 02", "chapter02.html", null], ', ""),
+            "navigation tree: chapter02.html is missing")
 
     def test_a_navigation_tree_out_of_chapter_order_fails(self):
         first, second = ('["Chapter 01", "chapter01.html", null]',
                          '["Chapter 02", "chapter02.html", null]')
-        files = replaced(correct_site(), "navtreedata.js", f"{first}, {second}",
-                         f"{second}, {first}")
-        self.assert_fails_with(files,
-                               "navigation tree: the chapters are out of order: 02, 01, 03, 09")
+        self.assert_edit_fails_with(
+            ("navtreedata.js", f"{first}, {second}", f"{second}, {first}"),
+            "navigation tree: the chapters are out of order: 02, 01, 03, 09")
 
     def test_a_broken_link_in_the_navigation_tree_fails(self):
-        files = replaced(correct_site(), "navtreedata.js", '"hard_cases.html"', '"hard_case.html"')
-        self.assert_fails_with(files, "navigation tree: hard_cases.html is missing",
-                               'navigation tree: broken link to hard_case.html ("Hard cases")')
+        self.assert_edit_fails_with(
+            ("navtreedata.js", '"hard_cases.html"', '"hard_case.html"'),
+            "navigation tree: hard_cases.html is missing",
+            'navigation tree: broken link to hard_case.html ("Hard cases")')
 
     def test_a_navigation_tree_that_its_script_does_not_show_fails(self):
-        files = replaced(correct_site(), "navtree.js", "of NAVTREE[0][2]) {",
-                         "of NAVTREE[0][2].slice(1)) {")
-        self.assert_fails_with(files, *(f"{name}: the visible navigation tree does not show "
-                                        "chapter01.html"
-                                        for name in ("index.html", "hard_cases.html",
-                                                     "chapter01.html", "chapter02.html",
-                                                     "chapter03.html", "chapter09.html")))
+        self.assert_edit_fails_with(
+            ("navtree.js", "of NAVTREE[0][2]) {", "of NAVTREE[0][2].slice(1)) {"),
+            *(f"{name}: the visible navigation tree does not show chapter01.html"
+              for name in ("index.html", "hard_cases.html", "chapter01.html", "chapter02.html",
+                           "chapter03.html", "chapter09.html")))
 
     def test_a_missing_link_to_the_previous_chapter_fails(self):
-        files = replaced(correct_site(), "chapter03.html", "\u2190 02", "02")
-        self.assert_fails_with(files,
-                               "chapter03.html: no link to the previous chapter chapter02.html")
+        self.assert_edit_fails_with(
+            ("chapter03.html", "\u2190 02", "02"),
+            "chapter03.html: no link to the previous chapter chapter02.html")
 
     def test_a_next_link_to_the_wrong_chapter_fails(self):
-        files = replaced(correct_site(), "chapter02.html", 'href="chapter03.html"',
-                         'href="chapter09.html"')
-        self.assert_fails_with(
-            files, "chapter02.html: the next-chapter link leads to chapter09.html, expected "
+        self.assert_edit_fails_with(
+            ("chapter02.html", 'href="chapter03.html"', 'href="chapter09.html"'),
+            "chapter02.html: the next-chapter link leads to chapter09.html, expected "
             "chapter03.html", "chapter02.html: no link to the next chapter chapter03.html")
 
     def test_a_chapter_without_a_cpp_listing_fails(self):
-        files = replaced(correct_site(), "chapter02.html", CPP_FRAGMENT, "")
-        self.assert_fails_with(files, "chapter02.html: no C++ code listing")
+        self.assert_edit_fails_with(
+            ("chapter02.html", CPP_FRAGMENT, ""),
+            "chapter02.html: no C++ code listing")
 
     def test_a_chapter_whose_only_listing_is_a_shell_command_fails(self):
-        files = replaced(correct_site(), "chapter03.html", CPP_FRAGMENT, SHELL_FRAGMENT)
-        self.assert_fails_with(files, "chapter03.html: no C++ code listing")
+        self.assert_edit_fails_with(
+            ("chapter03.html", CPP_FRAGMENT, SHELL_FRAGMENT),
+            "chapter03.html: no C++ code listing")
 
     def test_a_chapter_without_an_svg_diagram_fails(self):
-        files = replaced(correct_site(), "chapter09.html", diagram(9), "")
-        self.assert_fails_with(files, "chapter09.html: no SVG diagram that loaded")
+        self.assert_edit_fails_with(
+            ("chapter09.html", diagram(9), ""),
+            "chapter09.html: no SVG diagram that loaded")
 
     def test_a_chapter_whose_svg_diagram_does_not_load_fails(self):
         files = {**correct_site(), "diagram_01.svg": "this is not an SVG"}
@@ -232,15 +238,16 @@ class CheckerTest(unittest.TestCase):
                                "chapter01.html: no SVG diagram that loaded")
 
     def test_a_chapter_map_without_a_chapter_fails(self):
-        files = replaced(correct_site(), "index.html",
-                         '<li><a href="chapter03.html">03</a></li>', "")
-        self.assert_fails_with(files, "index.html: the chapter map does not link chapter03.html")
+        self.assert_edit_fails_with(
+            ("index.html", '<li><a href="chapter03.html">03</a></li>', ""),
+            "index.html: the chapter map does not link chapter03.html")
 
     def test_a_main_page_without_the_speed_plot_fails_once_chapter_09_exists(self):
-        files = replaced(correct_site(), "index.html",
-                         '<object type="image/svg+xml" data="09_speed_vs_error.svg"></object>', "")
-        self.assert_fails_with(files, "index.html: chapter 09 exists but the main page does not "
-                               "show 09_speed_vs_error.svg")
+        self.assert_edit_fails_with(
+            ("index.html",
+             '<object type="image/svg+xml" data="09_speed_vs_error.svg"></object>', ""),
+            "index.html: chapter 09 exists but the main page does not "
+            "show 09_speed_vs_error.svg")
 
     def test_the_speed_plot_is_not_required_before_chapter_09_exists(self):
         status, output = self.run_checker(correct_site(chapters=(1, 2)))
@@ -251,15 +258,15 @@ class CheckerTest(unittest.TestCase):
                                "chapter04.html", chapter_folders=("01_a", "02_b", "03_c", "04_d"))
 
     def test_a_script_error_fails(self):
-        files = replaced(correct_site(), "hard_cases.html", "</body>",
-                         "<script>undefined_function();</script></body>")
-        self.assert_fails_with(files, "hard_cases.html: script error: ReferenceError: "
-                               "undefined_function is not defined")
+        self.assert_edit_fails_with(
+            ("hard_cases.html", "</body>", "<script>undefined_function();</script></body>"),
+            "hard_cases.html: script error: ReferenceError: "
+            "undefined_function is not defined")
 
     def test_a_missing_stylesheet_fails(self):
-        files = replaced(correct_site(), "chapter01.html", "</head>",
-                         '<link rel="stylesheet" href="missing.css"></head>')
-        self.assert_fails_with(files, "chapter01.html: the server answered 404 for /missing.css")
+        self.assert_edit_fails_with(
+            ("chapter01.html", "</head>", '<link rel="stylesheet" href="missing.css"></head>'),
+            "chapter01.html: the server answered 404 for /missing.css")
 
     def test_a_site_without_a_main_page_cannot_be_checked(self):
         files = dict(correct_site())

@@ -31,13 +31,15 @@ std::vector<std::uint8_t> read_bytes(const fs::path& path) {
   return {std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
 }
 
-// The files of one target's corpus, sorted so failures are listed in a stable order.
+// The files of one target's corpus, sorted so failures are listed in a stable order; a corpus
+// has at least 25 seeds (required).
 std::vector<fs::path> corpus_files(const std::string& target) {
   std::vector<fs::path> files;
   for (const auto& entry : fs::directory_iterator(corpus_folder / target)) {
     if (entry.is_regular_file()) files.push_back(entry.path());
   }
   std::sort(files.begin(), files.end());
+  REQUIRE(files.size() >= 25);
   return files;
 }
 
@@ -69,9 +71,7 @@ std::string as_text(const std::vector<std::uint8_t>& bytes) {
 
 TEST_CASE("Every scene seed keeps the parser's contract, and its name says whether it parses",
           "[fuzz][corpus]") {
-  const auto files = corpus_files("fuzz_scene_parser");
-  REQUIRE(files.size() >= 25);
-  for (const fs::path& file : files) {
+  for (const fs::path& file : corpus_files("fuzz_scene_parser")) {
     INFO("seed " << file.filename().string());
     const ParseOutcome outcome = require_scene_checks_hold(as_text(read_bytes(file)));
     const std::string name = file.filename().string();
@@ -97,9 +97,7 @@ TEST_CASE("The scene seeds hit every kind of parser error", "[fuzz][corpus]") {
 
 TEST_CASE("Every rasterizer seed keeps the checks with every registered algorithm",
           "[fuzz][corpus]") {
-  const auto files = corpus_files("fuzz_rasterizers");
-  REQUIRE(files.size() >= 25);
-  for (const fs::path& file : files) {
+  for (const fs::path& file : corpus_files("fuzz_rasterizers")) {
     INFO("seed " << file.filename().string());
     require_rasterizer_checks_hold(read_bytes(file));
   }
@@ -223,22 +221,32 @@ RasterizerInput triangle_on_8x8(const Triangle& t) {
   return {0, 8, 8, {SceneTriangle{t, colors::white}}};
 }
 
+// What the checks find when a broken algorithm (its rule, its draw and, when given, its batch
+// draw) draws one triangle on an 8x8 canvas.
+Findings findings_of(std::string_view name, CoverageRule rule, DrawTriangleFunction draw,
+                     const Triangle& triangle, DrawBatchFunction draw_batch = nullptr) {
+  const TriangleAlgorithm algorithm{.name = name,
+                                    .chapter = "test",
+                                    .rule = rule,
+                                    .summary = "",
+                                    .draw = draw,
+                                    .draw_batch = draw_batch};
+  return check_rasterizer(algorithm, triangle_on_8x8(triangle));
+}
+
 }  // namespace
 
 TEST_CASE("The rasterizer checks report writes outside the canvas", "[fuzz][checks]") {
-  const TriangleAlgorithm algorithm{"outside", "test", CoverageRule::approximate, "",
-                                    broken::writes_outside};
-  const Findings findings =
-      check_rasterizer(algorithm, triangle_on_8x8({{{1, 1}, {6, 1}, {1, 6}}}));
+  const Findings findings = findings_of("outside", CoverageRule::approximate,
+                                        broken::writes_outside, {{{1, 1}, {6, 1}, {1, 6}}});
   REQUIRE(findings.size() == 1);
   CHECK_THAT(findings[0], Catch::Contains("1 writes outside the canvas"));
 }
 
 TEST_CASE("The rasterizer checks report a foreign colour", "[fuzz][checks]") {
-  const TriangleAlgorithm algorithm{"colour", "test", CoverageRule::approximate, "",
-                                    broken::paints_in_another_colour};
   const Findings findings =
-      check_rasterizer(algorithm, triangle_on_8x8({{{1, 1}, {6, 1}, {1, 6}}}));
+      findings_of("colour", CoverageRule::approximate, broken::paints_in_another_colour,
+                  {{{1, 1}, {6, 1}, {1, 6}}});
   REQUIRE(findings.size() == 2);
   CHECK_THAT(findings[0], Catch::Contains("neither the background nor the triangle's 1: (0, 0)"));
   CHECK_THAT(findings[1], Catch::Contains("counted as written"));
@@ -246,47 +254,38 @@ TEST_CASE("The rasterizer checks report a foreign colour", "[fuzz][checks]") {
 
 TEST_CASE("The rasterizer checks report a top-left algorithm that differs from the oracle",
           "[fuzz][checks]") {
-  const TriangleAlgorithm algorithm{"nothing", "test", CoverageRule::top_left, "",
-                                    broken::draws_nothing};
   // (1,1) (3,1) (1,3): the oracle covers (1,2) alone; the centres on the bottom edge and on the
   // hypotenuse belong to neither a top nor a left edge.
-  const Findings findings =
-      check_rasterizer(algorithm, triangle_on_8x8({{{1, 1}, {3, 1}, {1, 3}}}));
+  const Findings findings = findings_of("nothing", CoverageRule::top_left, broken::draws_nothing,
+                                        {{{1, 1}, {3, 1}, {1, 3}}});
   REQUIRE(findings.size() == 1);
   CHECK_THAT(findings[0], Catch::Contains("missed 1: (1, 2); extra 0:"));
 }
 
 TEST_CASE("The rasterizer checks compare with the oracle only on the 1/256 grid",
           "[fuzz][checks]") {
-  const TriangleAlgorithm algorithm{"nothing", "test", CoverageRule::top_left, "",
-                                    broken::draws_nothing};
-  CHECK(check_rasterizer(algorithm, triangle_on_8x8({{{1, 1}, {3.001, 1}, {1, 3}}})).empty());
-  const TriangleAlgorithm approximate{"nothing", "test", CoverageRule::approximate, "",
-                                      broken::draws_nothing};
-  CHECK(check_rasterizer(approximate, triangle_on_8x8({{{1, 1}, {3, 1}, {1, 3}}})).empty());
+  CHECK(findings_of("nothing", CoverageRule::top_left, broken::draws_nothing,
+                    {{{1, 1}, {3.001, 1}, {1, 3}}})
+            .empty());
+  CHECK(findings_of("nothing", CoverageRule::approximate, broken::draws_nothing,
+                    {{{1, 1}, {3, 1}, {1, 3}}})
+            .empty());
 }
 
 TEST_CASE("The rasterizer checks report a batch that differs from drawing one by one",
           "[fuzz][checks]") {
-  const TriangleAlgorithm algorithm{"batch",
-                                    "test",
-                                    CoverageRule::approximate,
-                                    "",
-                                    broken::draws_one_pixel,
-                                    false,
-                                    broken::batch_draws_nothing};
-  const Findings findings =
-      check_rasterizer(algorithm, triangle_on_8x8({{{1, 1}, {6, 1}, {1, 6}}}));
+  const Findings findings = findings_of("batch", CoverageRule::approximate, broken::draws_one_pixel,
+                                        {{{1, 1}, {6, 1}, {1, 6}}}, broken::batch_draws_nothing);
   REQUIRE(findings.size() == 1);
   CHECK_THAT(findings[0], Catch::Contains("pixels differ from drawing them one by one 1: (0, 0)"));
 }
 
 TEST_CASE("A refused triangle never reaches the algorithm, so nothing is reported",
           "[fuzz][checks]") {
-  const TriangleAlgorithm algorithm{"outside", "test", CoverageRule::approximate, "",
-                                    broken::writes_outside};
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  CHECK(check_rasterizer(algorithm, triangle_on_8x8({{{nan, 1}, {6, 1}, {1, 6}}})).empty());
+  CHECK(findings_of("outside", CoverageRule::approximate, broken::writes_outside,
+                    {{{nan, 1}, {6, 1}, {1, 6}}})
+            .empty());
 }
 
 TEST_CASE("The scene contract check reports a bad canvas and coordinates beyond the limits",
