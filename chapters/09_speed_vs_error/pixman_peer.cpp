@@ -89,31 +89,41 @@ WriteCounts pixman_write_counts(int width, int height, std::span<const SceneTria
   return result;
 }
 
+namespace {
+
+// As for the book's algorithms: image and converted triangles ready before the clock; one
+// pixman call per triangle inside it.
+Timing time_pixman_draw(const PreparedScene& prepared, const TimingPlan& plan) {
+  const std::vector<pixman_triangle_t> triangles =
+      to_pixman(prepared.triangles, prepared.scene.height);
+  PixmanMask mask(prepared.scene.width, prepared.scene.height);
+  // [listing pixman_timed_draw]
+  return time_runs(
+      [&] {
+        for (const pixman_triangle_t& t : triangles) mask.add(t);
+      },
+      plan);
+  // [/listing]
+}
+
+}  // namespace
+
 ExternalPeer pixman_peer() {
-  return {"pixman_a1", "external", "top-left", false,
+  return {"pixman_a1",
+          "external",
+          "top-left",
+          false,
           [](const PreparedScene& prepared, const TimingPlan& plan) {
-            const int width = prepared.scene.width, height = prepared.scene.height;
             PeerResult result;
-            {
-              // As for the book's algorithms: image and converted triangles ready before the
-              // clock; one pixman call per triangle inside it.
-              const std::vector<pixman_triangle_t> triangles =
-                  to_pixman(prepared.triangles, height);
-              PixmanMask mask(width, height);
-              // [listing pixman_timed_draw]
-              result.timing = time_runs(
-                  [&] {
-                    for (const pixman_triangle_t& t : triangles) mask.add(t);
-                  },
-                  plan);
-              // [/listing]
-            }
-            const WriteCounts drawn = pixman_write_counts(width, height, prepared.triangles);
+            result.timing = time_pixman_draw(prepared, plan);
+            const WriteCounts drawn = pixman_write_counts(
+                prepared.scene.width, prepared.scene.height, prepared.triangles);
             result.written_pixels =
                 std::accumulate(drawn.counts.begin(), drawn.counts.end(), std::uint64_t{0});
             result.error = measure_error(pixman_write_counts, prepared.error_scene);
             return result;
-          }};
+          },
+          time_pixman_draw};
 }
 
 }  // namespace tri::ch09
