@@ -9,6 +9,7 @@
 #include "chapters/09_speed_vs_error/log_axis.hpp"
 #include "chapters/09_speed_vs_error/plot_svg.hpp"
 #include "chapters/09_speed_vs_error/report_csv.hpp"
+#include "chapters/09_speed_vs_error/report_markdown.hpp"
 #include "chapters/09_speed_vs_error/svg_elements.hpp"
 
 namespace tri::ch09 {
@@ -21,13 +22,20 @@ std::string csv_text(std::string text) {
   return text;
 }
 
-std::string mebibytes(std::uint64_t bytes) {
-  return format_number(static_cast<double>(bytes) / (1 << 20), 3) + " MiB";
+// Bytes in the largest binary unit that keeps the number at 1 or more: "812 KiB", "1.45 MiB".
+std::string human_bytes(std::uint64_t bytes) {
+  const char* units[] = {"bytes", "KiB", "MiB", "GiB"};
+  double value = static_cast<double>(bytes);
+  std::size_t unit = 0;
+  while (value >= 1024 && unit + 1 < std::size(units)) {
+    value /= 1024;
+    ++unit;
+  }
+  return format_mpix(value) + " " + units[unit];
 }
 
-std::string milliseconds(double seconds) {
-  return format_number(seconds * 1e3, 3) + " ms";
-}
+// Whole milliseconds from 100 up ("1239 ms"), else 3 significant digits ("0.0828 ms").
+std::string milliseconds(double seconds) { return format_mpix(seconds * 1e3) + " ms"; }
 
 // The names in the order they first appear.
 template <class Field>
@@ -60,7 +68,7 @@ void sweep_table(std::ostream& md, std::span<const ScalingPoint> points, std::st
     md << "| "
        << (sweep == "canvas" ? std::to_string(first.side) + "×" + std::to_string(first.side)
                              : first.scene)
-       << " | " << first.triangles << " | " << mebibytes(first.scene_bytes) << " |";
+       << " | " << first.triangles << " | " << human_bytes(first.scene_bytes) << " |";
     std::map<std::string, const ScalingPoint*> by_drawer;
     for (; i < points.size() && points[i].sweep == sweep && points[i].scene == first.scene &&
            points[i].side == first.side && points[i].triangles == first.triangles;
@@ -76,7 +84,7 @@ void sweep_table(std::ostream& md, std::span<const ScalingPoint> points, std::st
         skipped.push_back(found->second);
       } else {
         md << " " << milliseconds(found->second->timing.seconds.median) << " · +"
-           << mebibytes(found->second->peak_bytes) << " |";
+           << human_bytes(found->second->peak_bytes) << " |";
       }
     }
     md << "\n";
@@ -181,7 +189,7 @@ std::string scaling_svg(std::span<const ScalingPoint> points, std::string_view s
                  : "How cost grows with the triangles: tiny and mixed scenes");
   element(svg, "text", {{"x", left}, {"y", "48"}}, escape_xml(subtitle));
   element(svg, "text", {{"x", left}, {"y", "64"}, {"fill", "#555"}},
-          "y: median milliseconds per frame; dashed grey: time in proportion to x (slope 1)");
+          "y: median milliseconds per frame; dotted grey: time in proportion to x (slope 1)");
   open_group(svg, {{"stroke", "#ddd"}});
   for (int k = xd.low; k <= xd.high; ++k)
     line(svg, x.position(std::pow(10.0, k)), top, x.position(std::pow(10.0, k)), bottom);
@@ -254,7 +262,7 @@ std::string scaling_svg(std::span<const ScalingPoint> points, std::string_view s
             svg, "circle", {{"cx", px}, {"cy", py}, {"r", "3.5"}, {"fill", colour_of(drawer)}},
             "<title>" +
                 escape_xml(drawer + ", " + scene + ": " + milliseconds(p->timing.seconds.median) +
-                           " per frame, +" + mebibytes(p->peak_bytes)) +
+                           " per frame, +" + human_bytes(p->peak_bytes)) +
                 "</title>");
       }
       if (polyline.find(' ') != std::string::npos) {

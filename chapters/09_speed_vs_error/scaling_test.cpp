@@ -219,6 +219,9 @@ TEST_CASE("The sweeps' CSV, table and plots show every point, and why one was no
                                    point("canvas", "a", "large", 256, 16, 0.001),
                                    point("canvas", "a", "large", 512, 16, 0.004)};
   points[3].not_measured_because = "refused, with a comma";
+  points[0].peak_bytes = 3 * mib / 2;
+  points[0].scene_bytes = 56000;
+  points[2].timing.seconds = {1.2391, 1.2391, 1.2391};
   const std::string csv = scaling_csv(points);
   CHECK(occurrences(csv, "\n") == points.size() + 1);
   CHECK_THAT(csv, Catch::StartsWith("sweep,drawer,chapter,scene,side,triangles,"));
@@ -226,12 +229,14 @@ TEST_CASE("The sweeps' CSV, table and plots show every point, and why one was no
 
   const std::string md = scaling_markdown(points);
   CHECK_THAT(md, Catch::Contains("## How cost grows"));
-  CHECK_THAT(md, Catch::Contains("| tiny | 1000 |"));
+  CHECK_THAT(md, Catch::Contains("| tiny | 1000 | 54.7 KiB | 1 ms · +1.5 MiB | 2 ms · +0 bytes |"));
+  CHECK_THAT(md, Catch::Contains("| 1239 ms · +0 bytes |"));
   CHECK_THAT(md, Catch::Contains("| tiny | 10000 |"));
   CHECK_THAT(md, Catch::Contains("| 512×512 | 16 |"));
   CHECK_THAT(md, Catch::Contains(" – |"));
   CHECK_THAT(md, Catch::Contains("not measured, refused, with a comma"));
-  CHECK_THAT(md, Catch::Contains("`a` tiny k = 1"));
+  CHECK_THAT(md, Catch::Contains("`a` tiny k = 3.1"));  // 1 ms to 1239 ms for 10 times more
+  CHECK_THAT(md, Catch::Contains("`a` k = 1."));       // 4 times the pixels, 4 times the time
   CHECK(scaling_markdown({}).empty());
 
   const std::string triangles = scaling_svg(points, "triangles", "a subtitle");
