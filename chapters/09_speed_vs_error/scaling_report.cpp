@@ -35,7 +35,9 @@ std::string human_bytes(std::uint64_t bytes) {
 }
 
 // Whole milliseconds from 100 up ("1239 ms"), else 3 significant digits ("0.0828 ms").
-std::string milliseconds(double seconds) { return format_mpix(seconds * 1e3) + " ms"; }
+std::string milliseconds(double seconds) {
+  return format_mpix(seconds * 1e3) + " ms";
+}
 
 // The names in the order they first appear.
 template <class Field>
