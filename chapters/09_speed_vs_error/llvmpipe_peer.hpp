@@ -9,6 +9,9 @@
 
 namespace tri::ch09 {
 
+/// Times llvmpipe drawing the prepared scene in this process (with whatever LP_NUM_THREADS says).
+Timing time_llvmpipe_here(const PreparedScene& prepared, const TimingPlan& plan);
+
 /// Times llvmpipe on the prepared scene in this process (with whatever LP_NUM_THREADS says)
 /// and measures its write counts and its error against the oracle.
 PeerResult measure_llvmpipe_here(const PreparedScene& prepared, const TimingPlan& plan);

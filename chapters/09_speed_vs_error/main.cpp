@@ -12,6 +12,7 @@
 #include "chapters/09_speed_vs_error/external_peers.hpp"
 #include "chapters/09_speed_vs_error/measure.hpp"
 #include "chapters/09_speed_vs_error/report.hpp"
+#include "chapters/09_speed_vs_error/scaling.hpp"
 #include "chapters/09_speed_vs_error/suites.hpp"
 #include "common/cli.hpp"
 #include "common/output_files.hpp"
@@ -95,11 +96,12 @@ int main(int argc, char** argv) {
       "Chapter 09, speed against error: draws the same scene suites with every registered\n"
       "algorithm, times them (warm-up, median of repeated samples, beside the write ceiling)\n"
       "and measures their error against the exact oracle; then chapter 10's coverage algorithms\n"
-      "against the exact area. Writes 09_report.csv and 09_coverage.csv (every measurement),\n"
-      "09_report.md (one row per algorithm, both parts, the machine), 09_speed_vs_error.svg and\n"
-      "09_coverage_speed_vs_error.svg (the plots). Quick by default (under a minute on two "
-      "cores); --full for the complete "
-      "sweep.",
+      "against the exact area; then how the time of a frame grows with the triangles and the\n"
+      "canvas. Writes 09_report.csv, 09_coverage.csv and 09_scaling.csv (every measurement),\n"
+      "09_report.md (the machine, one row per algorithm, the sweeps' tables), and the plots\n"
+      "09_speed_vs_error.svg, 09_coverage_speed_vs_error.svg, 09_scaling_triangles.svg and\n"
+      "09_scaling_canvas.svg. Quick by default (about a minute on two cores); --full for the\n"
+      "complete sweep.",
       {{"out", "DIR", "folder for the report (default: out)"},
        {"full", "", "complete sweep: 512x512 canvas, 100,000-triangle mesh, longer samples"},
        {"only", "NAMES",
@@ -132,7 +134,14 @@ int main(int argc, char** argv) {
             tri::ch09::run_coverage_benchmark(selection.area_algorithms, selection.coverage_peers,
                                               settings, std::cout),
             tri::ch09::coverage_peer_status(selection.coverage_peers)};
-        tri::ch09::save_report(folder, report, coverage, std::cout);
+        // How cost grows: the sweeps follow chapter 08's fastest and the peers when selected,
+        // and skip when --scene or --grid narrowed the run to some scenes.
+        std::vector<tri::ch09::ScalingPoint> scaling;
+        if (!args.has("scene") && !args.has("grid")) {
+          const auto drawers = tri::ch09::scaling_drawers(selection.algorithms, selection.peers);
+          scaling = tri::ch09::run_scaling(drawers, tri::ch09::scaling_settings(size), std::cout);
+        }
+        tri::ch09::save_report(folder, report, coverage, scaling, std::cout);
         return 0;
       });
 }

@@ -134,6 +134,9 @@ struct ExternalPeer {
   bool threaded = false;
   /// Times it on the prepared scene (as measure does an algorithm) and measures its error.
   std::function<PeerResult(const PreparedScene&, const TimingPlan&)> measure;
+  /// Times one draw of the prepared scene and nothing else (no counts, no error), in this
+  /// process: the scaling sweeps call it in a child process of their own.
+  std::function<Timing(const PreparedScene&, const TimingPlan&)> time;
 };
 
 /// One external peer on one prepared scene, as a row like any algorithm's.

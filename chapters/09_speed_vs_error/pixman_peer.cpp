@@ -90,23 +90,34 @@ WriteCounts pixman_write_counts(int width, int height, std::span<const SceneTria
       [&](int x, int top_row) { return mask.value(x, top_row) != 0; });
 }
 
+namespace {
+
+// As for the book's algorithms: image and converted triangles ready before the clock; one
+// pixman call per triangle inside it.
+Timing time_pixman_draw(const PreparedScene& prepared, const TimingPlan& plan) {
+  const std::vector<pixman_triangle_t> triangles =
+      to_pixman(prepared.triangles, prepared.scene.height);
+  PixmanImage mask(prepared.scene.width, prepared.scene.height, PIXMAN_a1);
+  // [listing pixman_timed_draw]
+  return time_runs(
+      [&] {
+        for (const pixman_triangle_t& t : triangles) mask.add(t);
+      },
+      plan);
+  // [/listing]
+}
+
+}  // namespace
+
 ExternalPeer pixman_peer() {
-  return {"pixman_a1", "external", "top-left", false,
+  return {"pixman_a1",
+          "external",
+          "top-left",
+          false,
           [](const PreparedScene& prepared, const TimingPlan& plan) {
-            // As for the book's algorithms: image and converted triangles ready before the
-            // clock; one pixman call per triangle inside it.
-            const std::vector<pixman_triangle_t> triangles =
-                to_pixman(prepared.triangles, prepared.scene.height);
-            PixmanImage mask(prepared.scene.width, prepared.scene.height, PIXMAN_a1);
-            // [listing pixman_timed_draw]
-            const Timing timing = time_runs(
-                [&] {
-                  for (const pixman_triangle_t& t : triangles) mask.add(t);
-                },
-                plan);
-            // [/listing]
-            return peer_result(timing, pixman_write_counts, prepared);
-          }};
+            return peer_result(time_pixman_draw(prepared, plan), pixman_write_counts, prepared);
+          },
+          time_pixman_draw};
 }
 
 CoveragePeer pixman_coverage_peer() {

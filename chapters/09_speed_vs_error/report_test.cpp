@@ -70,6 +70,8 @@ struct TinyRun {
   std::vector<tri::ch09::ExternalPeer> peers = tri::ch09::external_peers();
   BenchReport report;
   tri::ch09::CoverageReport coverage;
+  std::ostringstream scaling_progress;  // the sweeps' own lines, apart from the two parts'
+  std::vector<tri::ch09::ScalingPoint> scaling;
   tri::ch09::ReportFiles files;
   TinyRun() {
     report = tri::ch09::run_benchmark(chosen_algorithms(), peers, settings,
@@ -77,7 +79,11 @@ struct TinyRun {
     coverage.rows =
         tri::ch09::run_coverage_benchmark(chosen_area_algorithms(), {}, settings, progress);
     coverage.peer_status = "none measured";
-    files = tri::ch09::render_report(report, coverage);
+    const auto all = tri::registered_algorithms();
+    scaling = tri::ch09::run_scaling(tri::ch09::scaling_drawers(all, peers),
+                                     tri::ch09::scaling_settings(tri::ch09::SuiteSize::tiny),
+                                     scaling_progress);
+    files = tri::ch09::render_report(report, coverage, scaling);
   }
 };
 
@@ -320,11 +326,11 @@ TEST_CASE("Table speeds are whole numbers from 100 Mpix/s up",
   CHECK(tri::ch09::format_mpix(0.0) == "0");
 }
 
-TEST_CASE("save_report writes the five files the run rendered", "[09_speed_vs_error][report]") {
+TEST_CASE("save_report writes the eight files the run rendered", "[09_speed_vs_error][report]") {
   const auto folder = unique_temporary_folder("tri_ch09_report_test");
   std::filesystem::remove_all(folder);
   std::ostringstream log;
-  tri::ch09::save_report(folder, tiny_run().report, tiny_run().coverage, log);
+  tri::ch09::save_report(folder, tiny_run().report, tiny_run().coverage, tiny_run().scaling, log);
   const auto read = [&](const char* name) {
     std::ifstream in(folder / name, std::ios::binary);
     return std::string(std::istreambuf_iterator<char>(in), {});
@@ -334,7 +340,11 @@ TEST_CASE("save_report writes the five files the run rendered", "[09_speed_vs_er
   CHECK(read(tri::ch09::svg_file_name) == tiny_run().files.svg);
   CHECK(read(tri::ch09::coverage_csv_file_name) == tiny_run().files.coverage_csv);
   CHECK(read(tri::ch09::coverage_svg_file_name) == tiny_run().files.coverage_svg);
-  CHECK(lines_of(log.str()).size() == 5);
+  CHECK(read(tri::ch09::scaling_csv_file_name) == tiny_run().files.scaling_csv);
+  CHECK(read(tri::ch09::scaling_triangles_svg_file_name) == tiny_run().files.scaling_triangles_svg);
+  CHECK(read(tri::ch09::scaling_canvas_svg_file_name) == tiny_run().files.scaling_canvas_svg);
+  CHECK_THAT(tiny_run().files.markdown, Catch::Contains("## How cost grows"));
+  CHECK(lines_of(log.str()).size() == 8);
   std::filesystem::remove_all(folder);
 }
 
@@ -345,7 +355,8 @@ TEST_CASE("save_report writes the set whole or not at all: a failing file keeps 
   std::filesystem::create_directories(folder / tri::ch09::svg_file_name);  // cannot be replaced
   std::ofstream(folder / tri::ch09::csv_file_name) << "earlier csv";
   std::ostringstream log;
-  CHECK_THROWS_WITH(tri::ch09::save_report(folder, tiny_run().report, tiny_run().coverage, log),
+  CHECK_THROWS_WITH(tri::ch09::save_report(folder, tiny_run().report, tiny_run().coverage,
+                                           tiny_run().scaling, log),
                     Catch::Contains("Is a directory"));
   std::ifstream csv(folder / tri::ch09::csv_file_name);
   CHECK(std::string(std::istreambuf_iterator<char>(csv), {}) == "earlier csv");

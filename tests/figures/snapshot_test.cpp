@@ -1,6 +1,6 @@
-// The speed-vs-error plot is committed as the snapshot of one timed run, so it cannot be
-// compared byte for byte; its structure can: a whole SVG document that shows every registered
-// algorithm and the ceiling the text measures against.
+// The speed-vs-error plot and the scaling plots are committed as snapshots of one timed run, so
+// they cannot be compared byte for byte; their structure can: whole SVG documents that show every
+// registered algorithm and the ceiling the text measures against, or every drawer of the sweeps.
 #include <catch2/catch.hpp>
 
 #include <fstream>
@@ -28,4 +28,24 @@ TEST_CASE(
         svg.find(label + "<") != std::string::npos || svg.find(label + " (") != std::string::npos;
     CHECK(shown);
   }
+}
+
+TEST_CASE("The committed scaling snapshots are whole SVGs of fast_hybrid, the ceiling and the peers",
+          "[figures]") {
+  for (const char* name : {"09_scaling_triangles.svg", "09_scaling_canvas.svg"}) {
+    INFO(name << ": refresh the snapshot from a --full run of 09_speed_vs_error (chapter 09, "
+                 "step 9)");
+    std::ifstream in(std::string(TUTORIAL_COMMITTED_FIGURES "/") + name, std::ios::binary);
+    REQUIRE(in);
+    const std::string svg((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    CHECK(svg.starts_with("<svg"));
+    CHECK(svg.find("</svg>") != std::string::npos);
+    CHECK(svg.find(">fast_hybrid<") != std::string::npos);
+    for (const char* peer : {">pixman_a1<", ">cairo_no_antialias<", ">mesa_llvmpipe_1_thread<"}) {
+      CHECK(svg.find(peer) != std::string::npos);
+    }
+  }
+  std::ifstream in(TUTORIAL_COMMITTED_FIGURES "/09_scaling_canvas.svg", std::ios::binary);
+  const std::string canvas((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  CHECK(canvas.find(">write_ceiling<") != std::string::npos);
 }
