@@ -83,6 +83,8 @@
       this.oracleLast = module._malloc(MAX_PIXELS);
       this.outside = module._malloc(2 * 4);
       this.message = module._malloc(512);
+      this.coverageValues = module._malloc(MAX_PIXELS * 2);
+      this.exactValues = module._malloc(MAX_PIXELS * 2);
     }
 
     withBuffer(size, use) {
@@ -114,6 +116,36 @@
         outside: Array.from(m.HEAPU32.slice(this.outside / 4, this.outside / 4 + 2)),
       };
     }
+
+    // Chapter 03's arrays for triangle 1 (playground_steps_03), or null.
+    steps03(width, height, vertices) {
+      const m = this.module;
+      m.HEAPF64.set(vertices.slice(0, 6), this.vertices / 8);
+      const length = m._playground_steps_03(width, height, this.vertices, 0, 0);
+      if (length === 0) return null;
+      return JSON.parse(this.withBuffer(length + 1, (pointer) => {
+        m._playground_steps_03(width, height, this.vertices, pointer, length + 1);
+        return m.UTF8ToString(pointer);
+      }));
+    }
+
+    // The coverage (rule area) of the triangles by `name` and by chapter 10's exact area, each
+    // pixel as raster --coverage's 16-bit value; or {error}.
+    coverage(name, width, height, vertices) {
+      const m = this.module;
+      m.stringToUTF8(name, this.name, 256);
+      m.HEAPF64.set(vertices, this.vertices / 8);
+      const code = m._playground_coverage(this.name, width, height, this.vertices,
+                                          this.coverageValues, this.exactValues, this.message,
+                                          512);
+      if (code !== 0) return {error: m.UTF8ToString(this.message)};
+      const n = width * height;
+      return {
+        area: true,
+        coverage: m.HEAPU16.slice(this.coverageValues / 2, this.coverageValues / 2 + n),
+        exact: m.HEAPU16.slice(this.exactValues / 2, this.exactValues / 2 + n),
+      };
+    }
   }
 
   // ---- the page's state ------------------------------------------------------------------
@@ -127,6 +159,8 @@
     triangles: [],
     selected: 0,
     result: null,   // the last drawing, or null when nothing is drawn
+    steps: null,    // chapter 03's arrays for triangle 1, when its algorithm is selected
+    step: 5,
     error: '',
     milliseconds: 0,
   };
@@ -203,6 +237,13 @@
     return vertices;
   }
 
+  const selectedAlgorithm = () =>
+    library.algorithms.find((entry) => entry.name === state.algorithm);
+  const isArea = () => selectedAlgorithm().rule === 'area';
+  const isChapter03 = () => selectedAlgorithm().chapter.startsWith('03');
+  // A 16-bit coverage value (0 to 65535) as the fraction of a pixel.
+  const UNIT = 65535;
+
   function update() {
     const problems = inputProblems();
     state.result = null;
@@ -211,9 +252,11 @@
       state.error = 'Nothing is drawn: ' + problems.join('; ') + '.';
     } else {
       const start = performance.now();
-      const result = library.draw(state.algorithm, state.width, state.height,
-                                  triangleVertices());
+      const result = (isArea() ? library.coverage : library.draw).call(
+          library, state.algorithm, state.width, state.height, triangleVertices());
       state.milliseconds = performance.now() - start;
+      state.steps = !result.error && isChapter03() ?
+          library.steps03(state.width, state.height, triangleVertices()) : null;
       if (result.error) {
         state.error = 'Nothing is drawn: the library refuses this input (' + result.error +
                       '), as raster refuses the scene.';
@@ -221,6 +264,7 @@
         state.result = result;
       }
     }
+    if (state.error) state.steps = null;
     const message = $('pg-message');
     message.hidden = state.error === '';
     message.textContent = state.error;
@@ -228,6 +272,96 @@
     writeCounts();
     writeRasterBox();
     refreshVertexTable();
+    writeSteps();
+  }
+
+  // ---- chapter 03's steps ---------------------------------------------------------------------
+
+  const STEPS = [
+    '1 \u00b7 sort the vertices by y (rounded to pixel centres): P0, P1, P2',
+    '2 \u00b7 x01, x12 and x02: each side\'s x at every row it spans (interpolate)',
+    '3 \u00b7 x012: x01 without its last value, then x12',
+    '4 \u00b7 x_left and x_right: x02 and x012 compared at the middle row',
+    '5 \u00b7 the span of every row, x_left to x_right rounded: the result',
+  ];
+  // The arrays each step shows, with their colours (Okabe-Ito).
+  const STEP_ARRAYS = {
+    2: [['x01', '#009E73'], ['x12', '#CC79A7'], ['x02', '#0072B2']],
+    3: [['x012', '#D55E00'], ['x02', '#0072B2']],
+    4: [['x_left', '#009E73'], ['x_right', '#D55E00']],
+  };
+  const showingSteps = () => state.steps !== null && state.step < 5;
+
+  function writeSteps() {
+    const box = $('pg-steps');
+    box.hidden = !(state.result && isChapter03());
+    const steps = state.steps;
+    if (box.hidden) return;
+    if (!steps || !steps.x02) {
+      $('pg-arrays').textContent = steps ? 'Triangle 1 has no row on the grid: no arrays.' :
+          'Triangle 1 lies on one row: the chapter draws it as one span, without the arrays.';
+      return;
+    }
+    const format = (name) => {
+      const a = steps[name];
+      if (a.values.length === 0) return `${name} = [] (no row on the grid)`;
+      const last = a.first + a.values.length - 1;
+      const values = a.values.map((v) => Number.isInteger(v) ? String(v) : v.toFixed(2));
+      return `${name} (rows ${a.first} to ${last}) = [${values.join(', ')}]`;
+    };
+    const p = steps.sorted;
+    const lines = [`P0 = (${p[0]}), P1 = (${p[1]}), P2 = (${p[2]})`];
+    for (const name of ['x01', 'x12', 'x02', 'x012', 'x_left', 'x_right']) {
+      lines.push(format(name));
+    }
+    $('pg-arrays').textContent = lines.join('\n');
+  }
+
+  function drawSteps(g) {
+    const steps = state.steps;
+    const p = steps.sorted;
+    g.font = 'bold 11px sans-serif';
+    g.textAlign = 'left';
+    g.textBaseline = 'bottom';
+    p.forEach(([x, y], i) => {
+      g.strokeStyle = '#000000';
+      g.lineWidth = 2;
+      g.beginPath();
+      g.arc(toCanvasX(x), toCanvasY(y), cell * 0.42, 0, 2 * Math.PI);
+      g.stroke();
+      g.fillStyle = '#000000';
+      g.fillText(`P${i}`, toCanvasX(x) + cell * 0.45, toCanvasY(y) - cell * 0.2);
+    });
+    for (const [name, colour] of STEP_ARRAYS[state.step] || []) {
+      const a = steps[name];
+      if (!a) continue;
+      g.strokeStyle = colour;
+      g.fillStyle = colour;
+      g.lineWidth = 1.5;
+      g.beginPath();
+      a.values.forEach((x, i) => {
+        const X = toCanvasX(x);
+        const Y = toCanvasY(a.first + i);
+        if (i === 0) g.moveTo(X, Y); else g.lineTo(X, Y);
+      });
+      g.stroke();
+      a.values.forEach((x, i) => {
+        g.beginPath();
+        g.arc(toCanvasX(x), toCanvasY(a.first + i), Math.max(2.5, cell / 6), 0, 2 * Math.PI);
+        g.fill();
+      });
+    }
+    if (state.step === 4 && steps.x02 && steps.x02.values.length > 0) {
+      // The row the chapter compares x02 and x012 at: floor(length / 2).
+      const row = steps.x02.first + Math.floor(steps.x02.values.length / 2);
+      g.strokeStyle = '#000000';
+      g.setLineDash([4, 3]);
+      g.beginPath();
+      g.moveTo(toCanvasX(-0.5), toCanvasY(row));
+      g.lineTo(toCanvasX(state.width - 0.5), toCanvasY(row));
+      g.stroke();
+      g.setLineDash([]);
+    }
   }
 
   // ---- geometry of the views ---------------------------------------------------------------
@@ -303,13 +437,22 @@
     g.fillStyle = '#ffffff';
     g.fillRect(MARGIN * cell, MARGIN * cell, state.width * cell, state.height * cell);
 
-    const r = state.result;
     const oracleView = view.kind === 'oracle';
+    // While chapter 03's steps before the last are shown, its grid shows the arrays instead.
+    const r = !oracleView && showingSteps() ? null : state.result;
     for (let j = 0; j < state.height; ++j) {
       for (let i = 0; i < state.width; ++i) {
         const left = toCanvasX(i - 0.5);
         const top = toCanvasY(j + 0.5);
-        if (r) {
+        if (r && r.area) {
+          const k = j * state.width + i;
+          const value = oracleView ? r.exact[k] : r.coverage[k];
+          if (value > 0) {
+            g.fillStyle = coverageShade(value / UNIT);
+            g.fillRect(left, top, cell, cell);
+          }
+          if (!oracleView) markCoverageDifference(g, left, top, r.coverage[k], r.exact[k]);
+        } else if (r) {
           const k = j * state.width + i;
           const a = oracleView ? r.oracleCounts[k] : r.counts[k];
           const writer = oracleView ? r.oracleLast[k] : r.last[k];
@@ -330,6 +473,7 @@
     }
     drawAxisNumbers(g);
     drawTriangles(g);
+    if (!oracleView && showingSteps()) drawSteps(g);
   }
 
   // The marks of docs/DESIGN.md section 6: a cross where the algorithm misses a covered centre,
@@ -360,6 +504,19 @@
       g.textBaseline = 'top';
       g.fillText(String(a), left + c - 2, top + 1);
     }
+  }
+
+  // White to Okabe-Ito blue (0, 114, 178) in proportion to the coverage.
+  function coverageShade(c) {
+    const mix = (full) => Math.round(255 + (full - 255) * c);
+    return `rgb(${mix(0)}, ${mix(114)}, ${mix(178)})`;
+  }
+
+  // More than one 16-bit unit from the exact area (docs/DESIGN.md section 6): a cross where the
+  // coverage is too small, a ring where it is too large.
+  function markCoverageDifference(g, left, top, a, t) {
+    if (Math.abs(a - t) <= 1) return;
+    markDifference(g, left, top, a < t ? 0 : 1, a < t ? 1 : 0);
   }
 
   function drawAxisNumbers(g) {
@@ -417,10 +574,12 @@
   function writeCounts() {
     const list = $('pg-counts');
     list.textContent = '';
-    const item = (swatch, text) => {
+    // One line of the list: strings and swatches in order.
+    const item = (...parts) => {
       const li = document.createElement('li');
-      if (swatch) li.appendChild(swatch);
-      li.appendChild(document.createTextNode(text));
+      for (const part of parts) {
+        li.appendChild(typeof part === 'string' ? document.createTextNode(part) : part);
+      }
       list.appendChild(li);
     };
     const swatch = (fill, border, mark) => {
@@ -434,8 +593,11 @@
     };
     const r = state.result;
     if (!r) {
-      item(null, 'No pixels: nothing is drawn until every field holds a number the library ' +
-                 'accepts.');
+      item('No pixels: nothing is drawn until every field holds a number the library accepts.');
+      return;
+    }
+    if (r.area) {
+      writeCoverageCounts(r, item, swatch);
       return;
     }
     let covered = 0;
@@ -457,18 +619,51 @@
       twice += a > 1 ? 1 : 0;
     }
     const pixels = (n) => `${n} pixel${n === 1 ? '' : 's'}`;
-    item(swatch(FILL[0], '#777', ''), `The oracle covers ${pixels(covered)}: ` +
-         `${perTriangle[0]} of triangle 1 (orange), ${perTriangle[1]} of triangle 2 (blue).`);
-    item(swatch(FILL[1], '#777', ''), `${state.algorithm} writes ${pixels(written)} ` +
-         `(${writes} writes).`);
-    item(swatch('#ffffff', MISSED, '\u00d7'), `Missed: ${missed} (covered by the oracle, ` +
-         'not written).');
-    item(swatch('#ffffff', EXTRA, '\u25cb'), `Extra: ${extra} (written beyond the oracle's ` +
-         'count).');
-    item(swatch('#ffffff', TWICE, '2'), `Drawn twice or more: ${pixels(twice)}.`);
+    item(`The oracle covers ${pixels(covered)}: `, swatch(FILL[0], '#777', ''),
+         `${perTriangle[0]} of triangle 1, `, swatch(FILL[1], '#777', ''),
+         `${perTriangle[1]} of triangle 2.`);
+    item(`${state.algorithm} writes ${pixels(written)} (${writes} writes).`);
+    item(swatch('#ffffff', MISSED, '\u00d7'),
+         `Missed: ${missed} (a cross: a centre the oracle covers, not written).`);
+    item(swatch('#ffffff', EXTRA, '\u25cb'),
+         `Extra: ${extra} writes beyond the oracle's count (a ring: a pixel the oracle leaves ` +
+         'empty).');
+    item(swatch('#ffffff', TWICE, '2'),
+         `Drawn twice or more: ${pixels(twice)} (the number of writes in the corner).`);
     const exact = missed === 0 && extra === 0;
-    item(null, (exact ? 'Exactly the oracle\'s pixels.' : 'Not the oracle\'s pixels.') +
+    item((exact ? 'Exactly the oracle\'s pixels.' : 'Not the oracle\'s pixels.') +
          ` Writes off the grid: ${r.outside[0]} (oracle: ${r.outside[1]}). Both drawn in ` +
+         `${state.milliseconds.toFixed(1)} ms` +
+         (state.milliseconds > SLOW_MS ? ' \u2014 slow: a smaller grid redraws faster.' : '.'));
+  }
+
+  function writeCoverageCounts(r, item, swatch) {
+    let exactSum = 0;
+    let sum = 0;
+    let touched = 0;
+    let tooSmall = 0;
+    let tooLarge = 0;
+    let largest = 0;
+    for (let k = 0; k < r.coverage.length; ++k) {
+      const a = r.coverage[k];
+      const t = r.exact[k];
+      exactSum += t;
+      sum += a;
+      touched += a > 0 ? 1 : 0;
+      if (a + 1 < t) ++tooSmall;
+      if (a > t + 1) ++tooLarge;
+      largest = Math.max(largest, Math.abs(a - t));
+    }
+    const area = (units) => (units / UNIT).toFixed(3);
+    item(swatch(coverageShade(0.5), '#777', ''), `The exact area covers ${area(exactSum)} ` +
+         'pixels\' worth on the grid (each pixel shaded by its coverage, summed over the two ' +
+         'triangles and clamped to 1).');
+    item(`${state.algorithm} covers ${area(sum)} pixels' worth, touching ${touched} pixels.`);
+    item(swatch('#ffffff', MISSED, '\u00d7'),
+         `Too little: ${tooSmall} pixels more than one 16-bit unit (1/65535) below the exact area.`);
+    item(swatch('#ffffff', EXTRA, '\u25cb'),
+         `Too much: ${tooLarge} pixels more than one unit above it.`);
+    item(`Largest difference: ${largest} units (${area(largest)} of a pixel). Both drawn in ` +
          `${state.milliseconds.toFixed(1)} ms` +
          (state.milliseconds > SLOW_MS ? ' \u2014 slow: a smaller grid redraws faster.' : '.'));
   }
@@ -489,7 +684,7 @@
     $('pg-scene').textContent = scene;
     $('pg-command').textContent =
         `./build/release/tools/raster --algo ${state.algorithm} --scene playground.scene ` +
-        '--counts playground.pgm';
+        (isArea() ? '--coverage playground.pgm' : '--counts playground.pgm');
     if (downloadUrl) URL.revokeObjectURL(downloadUrl);
     downloadUrl = URL.createObjectURL(new Blob([scene], {type: 'text/plain'}));
     $('pg-download').href = downloadUrl;
@@ -622,10 +817,15 @@
     const x = fromCanvasX(position.x).toFixed(2);
     const y = fromCanvasY(position.y).toFixed(2);
     let text = `pixel (${i}, ${j}), pointer at (${x}, ${y})`;
-    if (state.result) {
-      const k = j * state.width + i;
-      text += `: ${state.algorithm} writes it ${state.result.counts[k]}\u00d7, the oracle ` +
-              `${state.result.oracleCounts[k]}\u00d7`;
+    const r = state.result;
+    const k = j * state.width + i;
+    if (r && r.area) {
+      text += `: ${state.algorithm} covers ${(r.coverage[k] / UNIT).toFixed(4)} ` +
+              `(${r.coverage[k]}/65535), the exact area ${(r.exact[k] / UNIT).toFixed(4)} ` +
+              `(${r.exact[k]}/65535)`;
+    } else if (r) {
+      text += `: ${state.algorithm} writes it ${r.counts[k]}\u00d7, the oracle ` +
+              `${r.oracleCounts[k]}\u00d7`;
     }
     return text;
   }
@@ -675,9 +875,7 @@
       option.value = a.name;
       const chapter = a.chapter.slice(0, 2);
       option.textContent = `${a.name} \u2014 chapter ${chapter}, rule ${a.rule}` +
-          (a.threaded ? ' (threaded: one thread here)' : '') +
-          (a.rule === 'area' ? ' (not shown: coverage fractions)' : '');
-      option.disabled = a.rule === 'area';
+          (a.threaded ? ' (threaded: one thread here)' : '');
       select.appendChild(option);
     }
     const presetSelect = $('pg-preset');
@@ -688,12 +886,14 @@
       presetSelect.appendChild(option);
     });
     const describeAlgorithm = () => {
-      const a = library.algorithms.find((entry) => entry.name === state.algorithm);
+      const a = selectedAlgorithm();
       $('pg-summary').textContent = `${a.name} (chapters/${a.chapter}, rule ${a.rule}): ` +
           a.summary + (a.threaded ? '. In the browser it draws on one thread: a page without ' +
           'cross-origin isolation cannot start threads, and the library then draws every ' +
           'band itself.' : '.');
       $('pg-caption-algorithm').textContent = a.name;
+      $('pg-caption-oracle').textContent = a.rule === 'area' ?
+          'chapter 10\'s exact area (the truth)' : 'chapter 07\'s oracle (the exact pixels)';
     };
     state.algorithm = library.algorithms[0].name;
     select.value = state.algorithm;
@@ -703,15 +903,28 @@
       update();
     });
     presetSelect.addEventListener('change', () => loadPreset(Number(presetSelect.value)));
+    const stepSelect = $('pg-step');
+    STEPS.forEach((title, index) => {
+      const option = document.createElement('option');
+      option.value = String(index + 1);
+      option.textContent = title;
+      stepSelect.appendChild(option);
+    });
+    stepSelect.value = '5';
+    stepSelect.addEventListener('change', () => {
+      state.step = Number(stepSelect.value);
+      render();
+    });
     for (const id of ['pg-width', 'pg-height']) $(id).addEventListener('input', update);
     window.addEventListener('resize', render);
     for (const id of ['pg-algorithm', 'pg-preset', 'pg-width', 'pg-height']) {
       $(id).disabled = false;
     }
     describeAlgorithm();
-    status.textContent = `${library.algorithms.filter((a) => a.rule !== 'area').length} ` +
-        'triangle algorithms of the registry, compiled to WebAssembly from the chapters\' ' +
-        'C++, beside chapter 07\'s oracle.';
+    const area = library.algorithms.filter((a) => a.rule === 'area').length;
+    status.textContent = `The registry's ${library.algorithms.length - area} triangle ` +
+        `algorithms and ${area} coverage algorithms, compiled to WebAssembly from the ` +
+        'chapters\' C++, beside chapter 07\'s oracle and chapter 10\'s exact area.';
     loadPreset(0);
   }
 
@@ -734,8 +947,12 @@
       triangles: state.triangles,
       error: state.error,
       drawn: state.result !== null,
-      counts: state.result ? Array.from(state.result.counts) : null,
-      oracleCounts: state.result ? Array.from(state.result.oracleCounts) : null,
+      counts: state.result && !state.result.area ? Array.from(state.result.counts) : null,
+      oracleCounts: state.result && !state.result.area ?
+          Array.from(state.result.oracleCounts) : null,
+      coverage: state.result && state.result.area ? Array.from(state.result.coverage) : null,
+      exact: state.result && state.result.area ? Array.from(state.result.exact) : null,
+      steps: state.steps,
       scene: $('pg-scene').textContent,
       command: $('pg-command').textContent,
     }),

@@ -1,21 +1,29 @@
 /// @file
-/// The playground's C++ side, compiled to WebAssembly by em++ only (docs/playground/CMakeLists.txt):
-/// the registry's list of algorithms, and two triangles drawn with a registered algorithm and with
-/// chapter 07's oracle, as per-pixel write counts. Every pixel decision is the chapters' code; the
-/// page's JavaScript only draws the results and handles input. The functions keep no state: the
-/// page owns every buffer and passes it in.
+/// The playground's C++ side, compiled to WebAssembly by em++ only
+/// (docs/playground/CMakeLists.txt): the registry's list of algorithms; two triangles drawn with a
+/// registered triangle algorithm and with chapter 07's oracle, as per-pixel write counts; and two
+/// triangles' coverage by a coverage algorithm (rule area) and by chapter 10's exact area, as
+/// raster --coverage writes it. Every pixel value is the chapters' code; the page's JavaScript only
+/// draws the results and handles input. The functions keep no state: the page owns every buffer and
+/// passes it in.
 #include <emscripten/emscripten.h>
 
 #include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <cstdio>
+#include <cstdlib>
 #include <span>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "chapters/03_interpolate_fill/fill_steps.hpp"
 #include "chapters/07_exact_coverage/coverage_oracle.hpp"
+#include "chapters/10_coverage/area_oracle.hpp"
+#include "chapters/10_coverage/coverage_canvas.hpp"
 #include "common/canvas.hpp"
 #include "common/scene.hpp"
 #include "common/triangle_algorithm.hpp"
@@ -59,8 +67,63 @@ void draw_counted(const tri::TriangleAlgorithm& algorithm, int width, int height
       last_writer[i] = c == triangle_colors[0] ? 1 : c == triangle_colors[1] ? 2 : 0;
     }
   }
-  *outside_writes = static_cast<std::uint32_t>(
-      std::min<std::uint64_t>(canvas.outside_writes(), UINT32_MAX));
+  *outside_writes =
+      static_cast<std::uint32_t>(std::min<std::uint64_t>(canvas.outside_writes(), UINT32_MAX));
+}
+
+// The grid check both drawing functions make first.
+bool grid_fits(int width, int height, char* message, std::size_t capacity) {
+  if (width >= 1 && width <= max_width && height >= 1 && height <= max_height) return true;
+  copy_text("the grid must be 1 to 64 pixels wide and 1 to 48 high", message, capacity);
+  return false;
+}
+
+// The two triangles of `vertices` (x0 y0 x1 y1 x2 y2 of each), in the colours above.
+std::array<tri::SceneTriangle, 2> two_triangles(const double* vertices) {
+  std::array<tri::SceneTriangle, 2> triangles;
+  for (std::size_t t = 0; t < triangles.size(); ++t) {
+    for (std::size_t v = 0; v < 3; ++v) {
+      triangles[t].vertices[v] = {vertices[6 * t + 2 * v], vertices[6 * t + 2 * v + 1]};
+    }
+    triangles[t].color = triangle_colors[t];
+  }
+  return triangles;
+}
+
+// raster writes no file when a triangle is refused; the page likewise draws nothing. True when
+// the library accepts both triangles; otherwise the message says which and why.
+bool library_accepts(const std::array<tri::SceneTriangle, 2>& triangles, char* message,
+                     std::size_t capacity) {
+  for (std::size_t t = 0; t < triangles.size(); ++t) {
+    const tri::DrawResult result = tri::validate_triangle(triangles[t].vertices);
+    if (result != tri::DrawResult::drawn) {
+      copy_text(std::string(t == 0 ? "triangle 1: " : "triangle 2: ") +
+                    std::string(tri::describe(result)),
+                message, capacity);
+      return false;
+    }
+  }
+  return true;
+}
+
+// A double as JSON: the shortest "%.17g" that reads back as the same value.
+std::string json_number(double value) {
+  std::array<char, 32> text{};
+  for (int digits = 1; digits <= 17; ++digits) {
+    std::snprintf(text.data(), text.size(), "%.*g", digits, value);
+    if (std::strtod(text.data(), nullptr) == value) break;
+  }
+  return text.data();
+}
+
+// {"first": row, "values": [...]}: one array of chapter 03 with the row of its first value.
+std::string json_rows(int first_row, const std::vector<double>& values) {
+  std::string text = "{\"first\":" + std::to_string(first_row) + ",\"values\":[";
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    if (i > 0) text += ",";
+    text += json_number(values[i]);
+  }
+  return text + "]}";
 }
 
 }  // namespace
@@ -99,11 +162,7 @@ EMSCRIPTEN_KEEPALIVE int playground_draw(const char* name, int width, int height
                                          std::uint8_t* oracle_last_writer,
                                          std::uint32_t* outside_writes, char* message,
                                          std::size_t message_capacity) {
-  if (width < 1 || width > max_width || height < 1 || height > max_height) {
-    copy_text("the grid must be 1 to 64 pixels wide and 1 to 48 high", message,
-              message_capacity);
-    return 3;
-  }
+  if (!grid_fits(width, height, message, message_capacity)) return 3;
   const auto algorithms = tri::registered_algorithms();
   const tri::TriangleAlgorithm* algorithm = tri::find_algorithm(algorithms, name);
   if (algorithm == nullptr) {
@@ -111,23 +170,8 @@ EMSCRIPTEN_KEEPALIVE int playground_draw(const char* name, int width, int height
               message_capacity);
     return 2;
   }
-  std::array<tri::SceneTriangle, 2> triangles;
-  for (std::size_t t = 0; t < triangles.size(); ++t) {
-    for (std::size_t v = 0; v < 3; ++v) {
-      triangles[t].vertices[v] = {vertices[6 * t + 2 * v], vertices[6 * t + 2 * v + 1]};
-    }
-    triangles[t].color = triangle_colors[t];
-  }
-  // raster writes no file when a triangle is refused; the page likewise draws nothing.
-  for (std::size_t t = 0; t < triangles.size(); ++t) {
-    const tri::DrawResult result = tri::validate_triangle(triangles[t].vertices);
-    if (result != tri::DrawResult::drawn) {
-      copy_text(std::string(t == 0 ? "triangle 1: " : "triangle 2: ") +
-                    std::string(tri::describe(result)),
-                message, message_capacity);
-      return 1;
-    }
-  }
+  const auto triangles = two_triangles(vertices);
+  if (!library_accepts(triangles, message, message_capacity)) return 1;
   const tri::TriangleAlgorithm oracle{.name = "oracle",
                                       .chapter = "07_exact_coverage",
                                       .rule = tri::CoverageRule::top_left,
@@ -138,6 +182,105 @@ EMSCRIPTEN_KEEPALIVE int playground_draw(const char* name, int width, int height
                &outside_writes[1]);
   copy_text("", message, message_capacity);
   return 0;
+}
+
+/// The coverage of the same two triangles (as playground_draw takes them) by the registered
+/// coverage algorithm `name` (rule area), summed, and their exact coverage by chapter 10's oracle,
+/// summed: each pixel as the 16-bit value raster --coverage writes, round(65535 x c) with c
+/// clamped to [0, 1] (bottom row first). Returns 0 when drawn. Otherwise draws nothing, writes
+/// why into `message` and returns 1 for a triangle the library refuses or that is off the exact
+/// area's grid (1/256 pixel, within ±2^15: the library's message), 2 for an unknown algorithm, 3
+/// for a grid out of bounds.
+EMSCRIPTEN_KEEPALIVE int playground_coverage(const char* name, int width, int height,
+                                             const double* vertices, std::uint16_t* coverage,
+                                             std::uint16_t* exact, char* message,
+                                             std::size_t message_capacity) {
+  if (!grid_fits(width, height, message, message_capacity)) return 3;
+  const auto algorithms = tri::registered_area_algorithms();
+  const tri::ch10::AreaAlgorithm* algorithm = tri::find_area_algorithm(algorithms, name);
+  if (algorithm == nullptr) {
+    copy_text(std::string("no coverage algorithm is registered as '") + name + "'", message,
+              message_capacity);
+    return 2;
+  }
+  const auto triangles = two_triangles(vertices);
+  if (!library_accepts(triangles, message, message_capacity)) return 1;
+  for (std::size_t t = 0; t < triangles.size(); ++t) {
+    try {
+      tri::ch10::require_on_oracle_grid(triangles[t].vertices);
+    } catch (const std::invalid_argument& error) {
+      copy_text(std::string(t == 0 ? "triangle 1: " : "triangle 2: ") + error.what(), message,
+                message_capacity);
+      return 1;
+    }
+  }
+  try {
+    tri::ch10::CoverageCanvas canvas(width, height);
+    tri::ch10::draw_coverage(*algorithm, canvas, triangles);
+    // The truth pixel by pixel over the grid only, so a triangle far larger than the grid costs
+    // no more than the grid (measure/area_error.cpp sums the same way, in doubles).
+    for (int y = 0; y < height; ++y) {
+      for (int x = 0; x < width; ++x) {
+        double sum = 0;
+        for (const auto& triangle : triangles) {
+          sum += tri::ch10::exact_coverage(triangle.vertices, {x, y}).to_double();
+        }
+        const auto i = static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
+                       static_cast<std::size_t>(x);
+        coverage[i] = tri::ch10::coverage_16(canvas.at(x, y));
+        exact[i] = tri::ch10::coverage_16(sum);
+      }
+    }
+  } catch (const std::exception& error) {  // the exact fractions overflowed 128 bits
+    copy_text(std::string("the exact area could not be computed: ") + error.what(), message,
+              message_capacity);
+    return 1;
+  }
+  copy_text("", message, message_capacity);
+  return 0;
+}
+
+/// Chapter 03's steps for the first of the two triangles (vertices as playground_draw takes
+/// them, only the first six numbers read), as gambetta_interpolate_fill runs them on a
+/// width x height canvas: each vertex rounded to its nearest pixel centre, then step 1's sorted
+/// vertices, step 2's x01, x12 and x02, step 3's x012 and step 4's x_left and x_right, each with
+/// the row of its first value, as JSON. Returns the text's length (written only when it fits
+/// in `capacity` with its final zero), or 0 for input the library refuses, an out-of-bounds
+/// grid, or a triangle on one row (drawn without the arrays).
+EMSCRIPTEN_KEEPALIVE std::size_t playground_steps_03(int width, int height, const double* vertices,
+                                                     char* out, std::size_t capacity) {
+  namespace ch03 = tri::ch03;
+  if (width < 1 || width > max_width || height < 1 || height > max_height) return 0;
+  const tri::Triangle triangle{glm::dvec2{vertices[0], vertices[1]},
+                               glm::dvec2{vertices[2], vertices[3]},
+                               glm::dvec2{vertices[4], vertices[5]}};
+  if (tri::validate_triangle(triangle) != tri::DrawResult::drawn) return 0;
+  // The same calls as ch03::draw_filled_triangle, keeping what each step returns.
+  const ch03::SortedTriangle t =
+      ch03::sort_by_y(tri::nearest_pixel(triangle[0]), tri::nearest_pixel(triangle[1]),
+                      tri::nearest_pixel(triangle[2]));
+  if (t.p0.y == t.p2.y) return 0;
+  const ch03::RowRange rows = ch03::visible_rows(t, height);
+  std::string text = "{\"sorted\":[";
+  const std::array<glm::ivec2, 3> sorted{t.p0, t.p1, t.p2};
+  for (std::size_t i = 0; i < sorted.size(); ++i) {
+    text += "[" + std::to_string(sorted[i].x) + "," + std::to_string(sorted[i].y) + "]";
+    text += i + 1 < sorted.size() ? "," : "]";
+  }
+  if (!rows.empty()) {
+    ch03::EdgeXs edges = ch03::interpolate_edges(t, rows);
+    text += ",\"x01\":" + json_rows(std::max(rows.first, t.p0.y), edges.x01);
+    text += ",\"x12\":" + json_rows(std::max(rows.first, t.p1.y), edges.x12);
+    text += ",\"x02\":" + json_rows(rows.first, edges.x02);
+    std::vector<double> x012 = ch03::concatenate_short_sides(std::move(edges.x01), edges.x12);
+    text += ",\"x012\":" + json_rows(rows.first, x012);
+    const ch03::LeftRightXs spans = ch03::choose_left_right(edges.x02, std::move(x012));
+    text += ",\"x_left\":" + json_rows(rows.first, spans.x_left);
+    text += ",\"x_right\":" + json_rows(rows.first, spans.x_right);
+  }
+  text += "}";
+  if (text.size() < capacity) copy_text(text, out, capacity);
+  return text.size();
 }
 
 }  // extern "C"

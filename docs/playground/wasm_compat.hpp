@@ -15,9 +15,8 @@
 #if !defined(__cpp_lib_bit_cast)
 namespace std {
 template <class To, class From>
-  requires(sizeof(To) == sizeof(From) && is_trivially_copyable_v<To> &&
-           is_trivially_copyable_v<From>)
-constexpr To bit_cast(const From& from) noexcept {
+requires(sizeof(To) == sizeof(From) && is_trivially_copyable_v<To> &&
+         is_trivially_copyable_v<From>) constexpr To bit_cast(const From& from) noexcept {
   return __builtin_bit_cast(To, from);
 }
 }  // namespace std
@@ -30,8 +29,7 @@ class jthread {
  public:
   jthread() noexcept = default;
   template <class F, class... Args>
-    requires(!is_same_v<remove_cvref_t<F>, jthread>)
-  explicit jthread(F&& f, Args&&... args)
+  requires(!is_same_v<remove_cvref_t<F>, jthread>) explicit jthread(F&& f, Args&&... args)
       : thread_(std::forward<F>(f), std::forward<Args>(args)...) {}
   jthread(jthread&&) noexcept = default;
   jthread& operator=(jthread&& other) noexcept {
