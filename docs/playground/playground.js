@@ -85,6 +85,7 @@
       this.message = module._malloc(512);
       this.coverageValues = module._malloc(MAX_PIXELS * 2);
       this.exactValues = module._malloc(MAX_PIXELS * 2);
+      this.rgba = module._malloc(MAX_PIXELS * 4);
     }
 
     withBuffer(size, use) {
@@ -129,6 +130,15 @@
       }));
     }
 
+    // Chapter 04's step `step` (1 to 6) drawn by the chapter's own function on triangle 1: the
+    // canvas's RGBA bytes, bottom row first, or null.
+    steps04(step, width, height, vertices) {
+      const m = this.module;
+      m.HEAPF64.set(vertices.slice(0, 6), this.vertices / 8);
+      const code = m._playground_steps_04(step, width, height, this.vertices, this.rgba);
+      return code === 0 ? m.HEAPU8.slice(this.rgba, this.rgba + width * height * 4) : null;
+    }
+
     // The coverage (rule area) of the triangles by `name` and by chapter 10's exact area, each
     // pixel as raster --coverage's 16-bit value; or {error}.
     coverage(name, width, height, vertices) {
@@ -160,7 +170,8 @@
     selected: 0,
     result: null,   // the last drawing, or null when nothing is drawn
     steps: null,    // chapter 03's arrays for triangle 1, when its algorithm is selected
-    step: 5,
+    stepPixels: null,  // chapter 04's step on triangle 1 (RGBA), when one of its is selected
+    step: 0,        // 0: the registered algorithm's result; else the chapter's step shown
     error: '',
     milliseconds: 0,
   };
@@ -241,6 +252,7 @@
     library.algorithms.find((entry) => entry.name === state.algorithm);
   const isArea = () => selectedAlgorithm().rule === 'area';
   const isChapter03 = () => selectedAlgorithm().chapter.startsWith('03');
+  const isChapter04 = () => selectedAlgorithm().chapter.startsWith('04');
   // A 16-bit coverage value (0 to 65535) as the fraction of a pixel.
   const UNIT = 65535;
 
@@ -257,6 +269,8 @@
       state.milliseconds = performance.now() - start;
       state.steps = !result.error && isChapter03() ?
           library.steps03(state.width, state.height, triangleVertices()) : null;
+      state.stepPixels = !result.error && isChapter04() && state.step > 0 ?
+          library.steps04(state.step, state.width, state.height, triangleVertices()) : null;
       if (result.error) {
         state.error = 'Nothing is drawn: the library refuses this input (' + result.error +
                       '), as raster refuses the scene.';
@@ -264,7 +278,10 @@
         state.result = result;
       }
     }
-    if (state.error) state.steps = null;
+    if (state.error) {
+      state.steps = null;
+      state.stepPixels = null;
+    }
     const message = $('pg-message');
     message.hidden = state.error === '';
     message.textContent = state.error;
@@ -277,26 +294,61 @@
 
   // ---- chapter 03's steps ---------------------------------------------------------------------
 
-  const STEPS = [
-    '1 \u00b7 sort the vertices by y (rounded to pixel centres): P0, P1, P2',
-    '2 \u00b7 x01, x12 and x02: each side\'s x at every row it spans (interpolate)',
-    '3 \u00b7 x012: x01 without its last value, then x12',
-    '4 \u00b7 x_left and x_right: x02 and x012 compared at the middle row',
-    '5 \u00b7 the span of every row, x_left to x_right rounded: the result',
-  ];
+  // The step lists: [value, title]; 0 is the registered algorithm's result on both triangles.
+  const STEPS = {
+    '03': [
+      [1, '1 \u00b7 sort the vertices by y (rounded to pixel centres): P0, P1, P2'],
+      [2, '2 \u00b7 x01, x12 and x02: each side\'s x at every row it spans (interpolate)'],
+      [3, '3 \u00b7 x012: x01 without its last value, then x12'],
+      [4, '4 \u00b7 x_left and x_right: x02 and x012 compared at the middle row'],
+      [0, '5 \u00b7 the span of every row, x_left to x_right rounded: the result'],
+    ],
+    '04': [
+      [1, '1 \u00b7 the outline: three Bresenham lines'],
+      [2, '2 \u00b7 sorted by y: boundary A (t0 to t2, red) and boundary B (green)'],
+      [3, '3 \u00b7 the lower half: one point on A and one on B per row'],
+      [4, '4 \u00b7 the lower half filled between them'],
+      [5, '5 \u00b7 two loops: the lower half, then the upper half'],
+      [6, '6 \u00b7 one loop that switches boundary B at t1'],
+      [0, 'the registered algorithm\'s result, both triangles'],
+    ],
+  };
   // The arrays each step shows, with their colours (Okabe-Ito).
   const STEP_ARRAYS = {
     2: [['x01', '#009E73'], ['x12', '#CC79A7'], ['x02', '#0072B2']],
     3: [['x012', '#D55E00'], ['x02', '#0072B2']],
     4: [['x_left', '#009E73'], ['x_right', '#D55E00']],
   };
-  const showingSteps = () => state.steps !== null && state.step < 5;
+  const showingSteps = () => state.steps !== null && state.step > 0;
+  const showingStepPixels = () => state.stepPixels !== null && state.step > 0;
+  const stepsChapter = () => (isChapter03() ? '03' : isChapter04() ? '04' : null);
+
+  // Fills the step list for the selected algorithm's chapter (hidden for the others).
+  function chooseStepList() {
+    const chapter = stepsChapter();
+    const select = $('pg-step');
+    select.textContent = '';
+    state.step = 0;
+    $('pg-steps-title').textContent = chapter ? `Chapter ${chapter}'s steps, on triangle 1:` : '';
+    for (const [value, title] of STEPS[chapter] || []) {
+      const option = document.createElement('option');
+      option.value = String(value);
+      option.textContent = title;
+      select.appendChild(option);
+    }
+    select.value = '0';
+  }
 
   function writeSteps() {
     const box = $('pg-steps');
-    box.hidden = !(state.result && isChapter03());
+    box.hidden = !(state.result && stepsChapter());
     const steps = state.steps;
     if (box.hidden) return;
+    if (isChapter04()) {
+      $('pg-arrays').hidden = true;
+      return;
+    }
+    $('pg-arrays').hidden = false;
     if (!steps || !steps.x02) {
       $('pg-arrays').textContent = steps ? 'Triangle 1 has no row on the grid: no arrays.' :
           'Triangle 1 lies on one row: the chapter draws it as one span, without the arrays.';
@@ -315,6 +367,19 @@
       lines.push(format(name));
     }
     $('pg-arrays').textContent = lines.join('\n');
+  }
+
+  // Chapter 04's step: every pixel its function painted, in the colour it painted.
+  function drawStepPixels(g) {
+    const rgba = state.stepPixels;
+    for (let j = 0; j < state.height; ++j) {
+      for (let i = 0; i < state.width; ++i) {
+        const k = 4 * (j * state.width + i);
+        if (rgba[k] === 0 && rgba[k + 1] === 0 && rgba[k + 2] === 0) continue;
+        g.fillStyle = `rgb(${rgba[k]}, ${rgba[k + 1]}, ${rgba[k + 2]})`;
+        g.fillRect(toCanvasX(i - 0.5), toCanvasY(j + 0.5), cell, cell);
+      }
+    }
   }
 
   function drawSteps(g) {
@@ -438,8 +503,9 @@
     g.fillRect(MARGIN * cell, MARGIN * cell, state.width * cell, state.height * cell);
 
     const oracleView = view.kind === 'oracle';
-    // While chapter 03's steps before the last are shown, its grid shows the arrays instead.
-    const r = !oracleView && showingSteps() ? null : state.result;
+    // While a chapter's step is shown, the algorithm's grid shows the step instead.
+    const r = !oracleView && (showingSteps() || showingStepPixels()) ? null : state.result;
+    if (!oracleView && showingStepPixels()) drawStepPixels(g);
     for (let j = 0; j < state.height; ++j) {
       for (let i = 0; i < state.width; ++i) {
         const left = toCanvasX(i - 0.5);
@@ -899,27 +965,22 @@
     select.value = state.algorithm;
     select.addEventListener('change', () => {
       state.algorithm = select.value;
+      chooseStepList();
       describeAlgorithm();
       update();
     });
     presetSelect.addEventListener('change', () => loadPreset(Number(presetSelect.value)));
     const stepSelect = $('pg-step');
-    STEPS.forEach((title, index) => {
-      const option = document.createElement('option');
-      option.value = String(index + 1);
-      option.textContent = title;
-      stepSelect.appendChild(option);
-    });
-    stepSelect.value = '5';
     stepSelect.addEventListener('change', () => {
       state.step = Number(stepSelect.value);
-      render();
+      update();
     });
     for (const id of ['pg-width', 'pg-height']) $(id).addEventListener('input', update);
     window.addEventListener('resize', render);
     for (const id of ['pg-algorithm', 'pg-preset', 'pg-width', 'pg-height']) {
       $(id).disabled = false;
     }
+    chooseStepList();
     describeAlgorithm();
     const area = library.algorithms.filter((a) => a.rule === 'area').length;
     status.textContent = `The registry's ${library.algorithms.length - area} triangle ` +
@@ -953,6 +1014,8 @@
       coverage: state.result && state.result.area ? Array.from(state.result.coverage) : null,
       exact: state.result && state.result.area ? Array.from(state.result.exact) : null,
       steps: state.steps,
+      step: state.step,
+      stepPixels: state.stepPixels ? Array.from(state.stepPixels) : null,
       scene: $('pg-scene').textContent,
       command: $('pg-command').textContent,
     }),

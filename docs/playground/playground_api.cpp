@@ -21,6 +21,9 @@
 #include <vector>
 
 #include "chapters/03_interpolate_fill/fill_steps.hpp"
+#include "chapters/04_scanline/lower_half.hpp"
+#include "chapters/04_scanline/outline_steps.hpp"
+#include "chapters/04_scanline/scanline_fills.hpp"
 #include "chapters/07_exact_coverage/coverage_oracle.hpp"
 #include "chapters/10_coverage/area_oracle.hpp"
 #include "chapters/10_coverage/coverage_canvas.hpp"
@@ -281,6 +284,55 @@ EMSCRIPTEN_KEEPALIVE std::size_t playground_steps_03(int width, int height, cons
   text += "}";
   if (text.size() < capacity) copy_text(text, out, capacity);
   return text.size();
+}
+
+/// Chapter 04's six steps for the first of the two triangles (its vertices rounded to their
+/// nearest pixel centres, as the registry's scanline fills receive them), each drawn by the
+/// chapter's own step function on a black width x height canvas: 1 the outline, 2 the sorted
+/// boundaries (A red, B green), 3 the lower half's boundary points, 4 the lower half filled,
+/// 5 the two loops, 6 the single loop. Writes the canvas's RGBA bytes (bottom row first) and
+/// returns 0; returns 1 for input the library refuses, a grid out of bounds or no such step.
+EMSCRIPTEN_KEEPALIVE int playground_steps_04(int step, int width, int height,
+                                             const double* vertices, std::uint8_t* rgba) {
+  namespace ch04 = tri::ch04;
+  if (width < 1 || width > max_width || height < 1 || height > max_height) return 1;
+  const tri::Triangle triangle{glm::dvec2{vertices[0], vertices[1]},
+                               glm::dvec2{vertices[2], vertices[3]},
+                               glm::dvec2{vertices[4], vertices[5]}};
+  if (tri::validate_triangle(triangle) != tri::DrawResult::drawn) return 1;
+  const glm::ivec2 a = tri::nearest_pixel(triangle[0]);
+  const glm::ivec2 b = tri::nearest_pixel(triangle[1]);
+  const glm::ivec2 c = tri::nearest_pixel(triangle[2]);
+  tri::Canvas canvas(width, height);
+  switch (step) {
+    case 1:
+      ch04::draw_outline(canvas, a, b, c, triangle_colors[0]);
+      break;
+    case 2:
+      ch04::draw_sorted_boundaries(canvas, a, b, c);
+      break;
+    case 3:
+      ch04::draw_lower_half_boundary_points(canvas, a, b, c);
+      break;
+    case 4:
+      ch04::fill_lower_half(canvas, a, b, c, triangle_colors[0]);
+      break;
+    case 5:
+      ch04::fill_two_loops(canvas, a, b, c, triangle_colors[0]);
+      break;
+    case 6:
+      ch04::fill_single_loop(canvas, a, b, c, triangle_colors[0]);
+      break;
+    default:
+      return 1;
+  }
+  for (const tri::Color& pixel : canvas.pixels()) {
+    *rgba++ = pixel.r;
+    *rgba++ = pixel.g;
+    *rgba++ = pixel.b;
+    *rgba++ = pixel.a;
+  }
+  return 0;
 }
 
 }  // extern "C"

@@ -234,7 +234,24 @@ def run_checks(page, raster, work):
           f"chapter 03's x02 does not run from P0 to P2: {steps['x02']}")
     print(f"  chapter 03's steps: x02, x012, x_left and x_right have {rows} values, rows "
           f"{y0} to {y2}")
-    page.select("pg-step", "5")
+    page.select("pg-step", "0")
+
+    # Chapter 04's steps 5 and 6 are its two registered fills: on triangle 1 alone they paint
+    # exactly the pixels raster draws for a scene of triangle 1 alone.
+    for step, name in ((5, "scanline_two_loops"), (6, "scanline_single_loop")):
+        page.select("pg-algorithm", name)
+        page.select("pg-step", str(step))
+        state = page.state()
+        check(state["step"] == step and state["stepPixels"] is not None,
+              f"chapter 04's step {step} is not shown for {name}")
+        painted = [int(any(state["stepPixels"][4 * k:4 * k + 3]))
+                   for k in range(state["width"] * state["height"])]
+        canvas_line, first_triangle = state["scene"].splitlines()[1:3]
+        _, _, counts = raster_counts(raster, name, f"{canvas_line}\n{first_triangle}\n", work)
+        check(painted == [int(c > 0) for c in counts],
+              f"chapter 04's step {step} does not paint the pixels of raster --algo {name}")
+        print(f"  chapter 04's step {step}: the {sum(painted)} pixels of {name} on triangle 1")
+    page.select("pg-step", "0")
 
     # Bad input: a message, and not one pixel drawn.
     page.select("pg-preset", "0")
