@@ -121,7 +121,7 @@
     // Chapter 03's arrays for triangle 1 (playground_steps_03), or null.
     steps03(width, height, vertices) {
       const m = this.module;
-      m.HEAPF64.set(vertices.slice(0, 6), this.vertices / 8);
+      m.HEAPF64.set(vertices, this.vertices / 8);
       const length = m._playground_steps_03(width, height, this.vertices, 0, 0);
       if (length === 0) return null;
       return JSON.parse(this.withBuffer(length + 1, (pointer) => {
@@ -134,7 +134,7 @@
     // canvas's RGBA bytes, bottom row first, or null.
     steps04(step, width, height, vertices) {
       const m = this.module;
-      m.HEAPF64.set(vertices.slice(0, 6), this.vertices / 8);
+      m.HEAPF64.set(vertices, this.vertices / 8);
       const code = m._playground_steps_04(step, width, height, this.vertices, this.rgba);
       return code === 0 ? m.HEAPU8.slice(this.rgba, this.rgba + width * height * 4) : null;
     }
@@ -290,6 +290,7 @@
     writeRasterBox();
     refreshVertexTable();
     writeSteps();
+    if (hovered) $('pg-hover').textContent = describePixel(hovered);
   }
 
   // ---- chapter 03's steps ---------------------------------------------------------------------
@@ -704,32 +705,28 @@
   }
 
   function writeCoverageCounts(r, item, swatch) {
-    let exactSum = 0;
-    let sum = 0;
-    let touched = 0;
-    let tooSmall = 0;
-    let tooLarge = 0;
-    let largest = 0;
-    for (let k = 0; k < r.coverage.length; ++k) {
-      const a = r.coverage[k];
+    // Sums in 16-bit units; "off" means more than one unit from the exact area.
+    const n = {exact: 0, drawn: 0, touched: 0, tooSmall: 0, tooLarge: 0, largest: 0};
+    r.coverage.forEach((a, k) => {
       const t = r.exact[k];
-      exactSum += t;
-      sum += a;
-      touched += a > 0 ? 1 : 0;
-      if (a + 1 < t) ++tooSmall;
-      if (a > t + 1) ++tooLarge;
-      largest = Math.max(largest, Math.abs(a - t));
-    }
+      n.exact += t;
+      n.drawn += a;
+      n.touched += a > 0 ? 1 : 0;
+      n.tooSmall += a + 1 < t ? 1 : 0;
+      n.tooLarge += a > t + 1 ? 1 : 0;
+      n.largest = Math.max(n.largest, Math.abs(a - t));
+    });
     const area = (units) => (units / UNIT).toFixed(3);
-    item(swatch(coverageShade(0.5), '#777', ''), `The exact area covers ${area(exactSum)} ` +
+    item(swatch(coverageShade(0.5), '#777', ''), `The exact area covers ${area(n.exact)} ` +
          'pixels\' worth on the grid (each pixel shaded by its coverage, summed over the two ' +
          'triangles and clamped to 1).');
-    item(`${state.algorithm} covers ${area(sum)} pixels' worth, touching ${touched} pixels.`);
-    item(swatch('#ffffff', MISSED, '\u00d7'),
-         `Too little: ${tooSmall} pixels more than one 16-bit unit (1/65535) below the exact area.`);
+    item(`${state.algorithm} covers ${area(n.drawn)} pixels' worth, touching ${n.touched} ` +
+         'pixels.');
+    item(swatch('#ffffff', MISSED, '\u00d7'), `Too little: ${n.tooSmall} pixels more than one ` +
+         '16-bit unit (1/65535) below the exact area.');
     item(swatch('#ffffff', EXTRA, '\u25cb'),
-         `Too much: ${tooLarge} pixels more than one unit above it.`);
-    item(`Largest difference: ${largest} units (${area(largest)} of a pixel). Both drawn in ` +
+         `Too much: ${n.tooLarge} pixels more than one unit above it.`);
+    item(`Largest difference: ${n.largest} units (${area(n.largest)} of a pixel). Both drawn in ` +
          `${state.milliseconds.toFixed(1)} ms` +
          (state.milliseconds > SLOW_MS ? ' \u2014 slow: a smaller grid redraws faster.' : '.'));
   }
@@ -847,6 +844,7 @@
   // ---- mouse and keyboard on the grids ---------------------------------------------------------
 
   let dragging = null;
+  let hovered = null;  // the pointer's last place on a grid, so its line follows every redraw
 
   function pointerPosition(canvas, event) {
     const box = canvas.getBoundingClientRect();
@@ -911,6 +909,7 @@
     });
     canvas.addEventListener('pointermove', (event) => {
       const position = pointerPosition(canvas, event);
+      hovered = position;
       $('pg-hover').textContent = describePixel(position);
       if (dragging !== null) dragTo(position, event.shiftKey);
     });

@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <optional>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -129,6 +130,31 @@ std::string json_rows(int first_row, const std::vector<double>& values) {
   return text + "]}";
 }
 
+// The grid check, then the two triangles when the library accepts both: what every drawing
+// function starts with. Otherwise the message says why and nothing is returned.
+std::optional<std::array<tri::SceneTriangle, 2>> accepted_triangles(int width, int height,
+                                                                    const double* vertices,
+                                                                    char* message,
+                                                                    std::size_t capacity) {
+  if (!grid_fits(width, height, message, capacity)) return std::nullopt;
+  const auto triangles = two_triangles(vertices);
+  if (!library_accepts(triangles, message, capacity)) return std::nullopt;
+  return triangles;
+}
+
+// The first triangle's vertices rounded to their nearest pixel centres, as the registry hands
+// them to the articles' fills (draw_at_nearest_pixels), when the grid fits and the library
+// accepts both triangles.
+std::optional<std::array<glm::ivec2, 3>> first_triangle_pixels(int width, int height,
+                                                               const double* vertices) {
+  std::array<char, 8> unused{};
+  const auto triangles = accepted_triangles(width, height, vertices, unused.data(), unused.size());
+  if (!triangles) return std::nullopt;
+  const auto& v = (*triangles)[0].vertices;
+  return std::array<glm::ivec2, 3>{tri::nearest_pixel(v[0]), tri::nearest_pixel(v[1]),
+                                   tri::nearest_pixel(v[2])};
+}
+
 }  // namespace
 
 extern "C" {
@@ -165,23 +191,21 @@ EMSCRIPTEN_KEEPALIVE int playground_draw(const char* name, int width, int height
                                          std::uint8_t* oracle_last_writer,
                                          std::uint32_t* outside_writes, char* message,
                                          std::size_t message_capacity) {
-  if (!grid_fits(width, height, message, message_capacity)) return 3;
   const auto algorithms = tri::registered_algorithms();
   const tri::TriangleAlgorithm* algorithm = tri::find_algorithm(algorithms, name);
   if (algorithm == nullptr) {
-    copy_text(std::string("no triangle algorithm is registered as '") + name + "'", message,
-              message_capacity);
+    copy_text(std::string("no triangle algorithm '") + name + "'", message, message_capacity);
     return 2;
   }
-  const auto triangles = two_triangles(vertices);
-  if (!library_accepts(triangles, message, message_capacity)) return 1;
+  const auto triangles = accepted_triangles(width, height, vertices, message, message_capacity);
+  if (!triangles) return 1;
   const tri::TriangleAlgorithm oracle{.name = "oracle",
                                       .chapter = "07_exact_coverage",
                                       .rule = tri::CoverageRule::top_left,
                                       .summary = "chapter 07's oracle",
                                       .draw = tri::ch07::draw_triangle_oracle};
-  draw_counted(*algorithm, width, height, triangles, counts, last_writer, &outside_writes[0]);
-  draw_counted(oracle, width, height, triangles, oracle_counts, oracle_last_writer,
+  draw_counted(*algorithm, width, height, *triangles, counts, last_writer, &outside_writes[0]);
+  draw_counted(oracle, width, height, *triangles, oracle_counts, oracle_last_writer,
                &outside_writes[1]);
   copy_text("", message, message_capacity);
   return 0;
@@ -198,16 +222,15 @@ EMSCRIPTEN_KEEPALIVE int playground_coverage(const char* name, int width, int he
                                              const double* vertices, std::uint16_t* coverage,
                                              std::uint16_t* exact, char* message,
                                              std::size_t message_capacity) {
-  if (!grid_fits(width, height, message, message_capacity)) return 3;
-  const auto algorithms = tri::registered_area_algorithms();
-  const tri::ch10::AreaAlgorithm* algorithm = tri::find_area_algorithm(algorithms, name);
+  const auto areas = tri::registered_area_algorithms();
+  const tri::ch10::AreaAlgorithm* algorithm = tri::find_area_algorithm(areas, name);
   if (algorithm == nullptr) {
-    copy_text(std::string("no coverage algorithm is registered as '") + name + "'", message,
-              message_capacity);
+    copy_text(std::string("no coverage algorithm '") + name + "'", message, message_capacity);
     return 2;
   }
-  const auto triangles = two_triangles(vertices);
-  if (!library_accepts(triangles, message, message_capacity)) return 1;
+  const auto accepted = accepted_triangles(width, height, vertices, message, message_capacity);
+  if (!accepted) return 1;
+  const auto& triangles = *accepted;
   for (std::size_t t = 0; t < triangles.size(); ++t) {
     try {
       tri::ch10::require_on_oracle_grid(triangles[t].vertices);
@@ -243,25 +266,20 @@ EMSCRIPTEN_KEEPALIVE int playground_coverage(const char* name, int width, int he
   return 0;
 }
 
-/// Chapter 03's steps for the first of the two triangles (vertices as playground_draw takes
-/// them, only the first six numbers read), as gambetta_interpolate_fill runs them on a
-/// width x height canvas: each vertex rounded to its nearest pixel centre, then step 1's sorted
-/// vertices, step 2's x01, x12 and x02, step 3's x012 and step 4's x_left and x_right, each with
-/// the row of its first value, as JSON. Returns the text's length (written only when it fits
-/// in `capacity` with its final zero), or 0 for input the library refuses, an out-of-bounds
-/// grid, or a triangle on one row (drawn without the arrays).
+/// Chapter 03's steps for the first of the two triangles (`vertices` as playground_draw takes
+/// them; both must be accepted), as gambetta_interpolate_fill runs them on a width x height
+/// canvas: each vertex rounded to its nearest pixel centre, then step 1's sorted vertices, step
+/// 2's x01, x12 and x02, step 3's x012 and step 4's x_left and x_right, each with the row of its
+/// first value, as JSON. Returns the text's length (written only when it fits in `capacity` with
+/// its final zero), or 0 for input the library refuses, a grid out of bounds, or a triangle on
+/// one row (which the chapter draws without the arrays).
 EMSCRIPTEN_KEEPALIVE std::size_t playground_steps_03(int width, int height, const double* vertices,
                                                      char* out, std::size_t capacity) {
   namespace ch03 = tri::ch03;
-  if (width < 1 || width > max_width || height < 1 || height > max_height) return 0;
-  const tri::Triangle triangle{glm::dvec2{vertices[0], vertices[1]},
-                               glm::dvec2{vertices[2], vertices[3]},
-                               glm::dvec2{vertices[4], vertices[5]}};
-  if (tri::validate_triangle(triangle) != tri::DrawResult::drawn) return 0;
+  const auto p = first_triangle_pixels(width, height, vertices);
+  if (!p) return 0;
   // The same calls as ch03::draw_filled_triangle, keeping what each step returns.
-  const ch03::SortedTriangle t =
-      ch03::sort_by_y(tri::nearest_pixel(triangle[0]), tri::nearest_pixel(triangle[1]),
-                      tri::nearest_pixel(triangle[2]));
+  const ch03::SortedTriangle t = ch03::sort_by_y((*p)[0], (*p)[1], (*p)[2]);
   if (t.p0.y == t.p2.y) return 0;
   const ch03::RowRange rows = ch03::visible_rows(t, height);
   std::string text = "{\"sorted\":[";
@@ -286,23 +304,19 @@ EMSCRIPTEN_KEEPALIVE std::size_t playground_steps_03(int width, int height, cons
   return text.size();
 }
 
-/// Chapter 04's six steps for the first of the two triangles (its vertices rounded to their
-/// nearest pixel centres, as the registry's scanline fills receive them), each drawn by the
-/// chapter's own step function on a black width x height canvas: 1 the outline, 2 the sorted
-/// boundaries (A red, B green), 3 the lower half's boundary points, 4 the lower half filled,
-/// 5 the two loops, 6 the single loop. Writes the canvas's RGBA bytes (bottom row first) and
-/// returns 0; returns 1 for input the library refuses, a grid out of bounds or no such step.
+/// Chapter 04's six steps for the first of the two triangles (`vertices` as playground_draw
+/// takes them; both must be accepted), its vertices rounded to their nearest pixel centres as the
+/// registry's scanline fills receive them, each step drawn by the chapter's own step function on
+/// a black width x height canvas: 1 the outline, 2 the sorted boundaries (A red, B green), 3 the
+/// lower half's boundary points, 4 the lower half filled, 5 the two loops, 6 the single loop.
+/// Writes the canvas's RGBA bytes (bottom row first) and returns 0; returns 1 for input the
+/// library refuses, a grid out of bounds or no such step.
 EMSCRIPTEN_KEEPALIVE int playground_steps_04(int step, int width, int height,
                                              const double* vertices, std::uint8_t* rgba) {
   namespace ch04 = tri::ch04;
-  if (width < 1 || width > max_width || height < 1 || height > max_height) return 1;
-  const tri::Triangle triangle{glm::dvec2{vertices[0], vertices[1]},
-                               glm::dvec2{vertices[2], vertices[3]},
-                               glm::dvec2{vertices[4], vertices[5]}};
-  if (tri::validate_triangle(triangle) != tri::DrawResult::drawn) return 1;
-  const glm::ivec2 a = tri::nearest_pixel(triangle[0]);
-  const glm::ivec2 b = tri::nearest_pixel(triangle[1]);
-  const glm::ivec2 c = tri::nearest_pixel(triangle[2]);
+  const auto p = first_triangle_pixels(width, height, vertices);
+  if (!p) return 1;
+  const auto [a, b, c] = *p;
   tri::Canvas canvas(width, height);
   switch (step) {
     case 1:
