@@ -53,9 +53,9 @@
     status.classList.add('pg-unavailable');
     status.textContent = 'The playground was not built: ' +
         (window.playgroundUnavailable || 'its WebAssembly module did not load') +
-        '. It needs Emscripten: install Debian\'s package (sudo apt-get install emscripten), ' +
-        'then build the site again (./tutorial.sh run). CMake builds the playground whenever ' +
-        'it finds em++, unless TUTORIAL_PLAYGROUND is OFF.';
+        '. To build it, install Emscripten (sudo apt-get install emscripten) and build the ' +
+        'site again (./tutorial.sh run), with the CMake cache variable TUTORIAL_PLAYGROUND ' +
+        'at AUTO, its default, or ON (cmake --preset release -DTUTORIAL_PLAYGROUND=AUTO).';
     window.playground = {ready: Promise.resolve(false)};
     return;
   }
