@@ -8,6 +8,9 @@ cd "$(dirname "${BASH_SOURCE[0]}")"
 
 # The Debian packages the tutorial needs: compiler and build tools, then the four libraries.
 PACKAGES=(g++ make cmake libglm-dev libstb-dev catch2 doxygen)
+# The run command also builds the docs site's playground: the chapters' C++ compiled to
+# WebAssembly (docs/playground/README.md).
+DOCS_PACKAGES=(emscripten)
 # The fuzzing run builds with clang and libFuzzer instead, and without the docs.
 FUZZ_PACKAGES=(clang libclang-rt-14-dev make cmake libglm-dev libstb-dev catch2)
 
@@ -99,7 +102,7 @@ fuzz() {
 
 case "${1:-}" in
   run)
-    install_missing_packages "${PACKAGES[@]}"
+    install_missing_packages "${PACKAGES[@]}" "${DOCS_PACKAGES[@]}"
     configure_and_build
     cmake --build --preset release --target docs  # renders every chapter's figures first
     echo
