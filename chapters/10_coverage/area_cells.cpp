@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <utility>
 
 namespace tri::ch10 {
@@ -164,8 +165,12 @@ namespace {
 struct RisingEdge {
   glm::dvec2 low, high;
   double dx_dy, dy_dx;  // dy_dx infinite for a vertical edge
-  RisingEdge(glm::dvec2 a, glm::dvec2 b)
-      : low(a), high(b), dx_dy((b.x - a.x) / (b.y - a.y)), dy_dx((b.y - a.y) / (b.x - a.x)) {}
+  RisingEdge(glm::dvec2 a, glm::dvec2 b) : low(a), high(b) {
+    // Both slopes from one division (a horizontal edge's are never used).
+    const double dx = b.x - a.x, dy = b.y - a.y, inverse = 1 / (dx * dy);
+    dx_dy = dx == 0 ? 0 : dx * dx * inverse;
+    dy_dx = dx == 0 ? std::numeric_limits<double>::infinity() : dy * dy * inverse;
+  }
   // Exactly the vertex's x at its top, so that two sides meet exactly there.
   double x_at(double y) const { return y == high.y ? high.x : low.x + (y - low.y) * dx_dy; }
 };
@@ -215,15 +220,14 @@ class RowWalker {
   template <class Visit>
   void next_row(int row, Visit&& visit) {
     const double y1 = std::min(row + 0.5, high_.y);
-    if (!(y_ < y1)) return;
-    if (!turned_ && middle_.y < y1) {  // the short side turns at the middle vertex in this row
-      const bool split = y_ < middle_.y;
-      if (split) visit(band_to(middle_.y), true);
-      short_side().edge = upper_;
-      turned_ = true;
-      return visit(band_to(y1), split);
+    const bool split = !turned_ && y_ < middle_.y && middle_.y < y1;
+    while (y_ < y1) {
+      if (!turned_ && y_ >= middle_.y) {  // the short side turns at the middle vertex
+        short_side().edge = upper_;
+        turned_ = true;
+      }
+      visit(band_to(turned_ ? y1 : std::min(y1, middle_.y)), split);
     }
-    visit(band_to(y1), false);
   }
 
  private:
@@ -317,15 +321,16 @@ bool add_band_directly(float* row, int width, const Band& b, Put put) {
                   });
     inside = -cover;
   }
-  const int between_end = walk_right ? b.right_first : width;
-  for (int x = walk_left ? b.left_last + 1 : 0; x < between_end; ++x) {
-    put(row[x], static_cast<float>(inside));
+  const float between = static_cast<float>(inside);
+  float* const end = row + (walk_right ? b.right_first : width);
+  for (float* pixel = row + (walk_left ? b.left_last + 1 : 0); pixel < end; ++pixel) {
+    put(*pixel, between);
   }
   if (walk_right) {
     double cover = 0;  // the right piece runs up: what lies right of it is outside
     for_each_cell(b.right0, b.y0, b.right1, b.y1, b.right_dy_dx, b.right_first, b.right_last,
                   [&](int column, double area, double height) {
-                    const double left_side = column > b.left_last ? inside : 0.0;
+                    const double left_side = inside * (column > b.left_last);
                     put(row[column], static_cast<float>(left_side - (cover + area)));
                     cover += height;
                   });
@@ -338,6 +343,7 @@ template <Blend blend, class Put>
 void add_rows(CoverageCanvas& canvas, RowWalker& walker, RowCells& cells, int first_row,
               int last_row, Put put) {
   constexpr bool summed = blend == Blend::sum;
+  bool cells_started = false;
   for (int row = first_row; row <= last_row; ++row) {
     bool in_cells = false;
     walker.next_row(row, [&](const Band& band, bool split) {
@@ -346,8 +352,9 @@ void add_rows(CoverageCanvas& canvas, RowWalker& walker, RowCells& cells, int fi
           add_band_directly<summed>(canvas.row(row), canvas.width(), band, put)) {
         return;
       }
+      if (!cells_started) cells.start_row(canvas.width());  // once per triangle, if at all
+      cells_started = in_cells = true;
       add_band(cells, band);
-      in_cells = true;
     });
     if (in_cells) cells.add_to_canvas(canvas, row, blend);
   }
@@ -377,7 +384,6 @@ void draw_triangle_area(CoverageCanvas& canvas, const Triangle& triangle, RowCel
   const int first_row = std::max(0, column_of(walker.low_y()));
   const int last_row = std::min(canvas.height() - 1, column_of(walker.high_y()));
   if (first_row > last_row) return;
-  cells.start_row(canvas.width());
   walker.start(first_row);
   // One loop per blend, so the rows do not decide the blend at every pixel.
   if (blend == Blend::sum) {
