@@ -13,10 +13,10 @@ namespace tri::ch10 {
 namespace {
 
 // The largest |canvas - exact| over every pixel of the canvas, for one triangle drawn alone.
-double largest_difference(const Triangle& t, int width, int height) {
+double largest_difference(const Triangle& t, int width, int height, Blend blend = Blend::sum) {
   CoverageCanvas canvas(width, height);
   RowCells cells;
-  draw_triangle_area(canvas, t, cells);
+  draw_triangle_area(canvas, t, cells, blend);
   double largest = 0;
   for (int y = 0; y < height; ++y) {
     for (int x = 0; x < width; ++x) {
@@ -64,6 +64,46 @@ TEST_CASE("Edges on pixel sides, vertical and horizontal edges, and vertices on 
     CHECK(largest_difference(t, 8, 8) < 1e-6);
     // Either winding gives the same picture.
     CHECK(largest_difference({{t[0], t[2], t[1]}}, 8, 8) < 1e-6);
+  }
+}
+
+TEST_CASE("Triangles reaching past every edge of the canvas get the exact area on it",
+          "[10_coverage][step4]") {
+  // Vertices up to 20 pixels off a 12 x 12 canvas: rows where a side lies wholly left or right of
+  // the canvas, or crosses its left or right edge, and rows above and below it.
+  Random random(43);
+  for (int trial = 0; trial < 300; ++trial) {
+    const Triangle t = random_triangle(random, -20 * 256, 32 * 256);
+    INFO("trial " << trial << ": (" << t[0].x << ", " << t[0].y << ") (" << t[1].x << ", " << t[1].y
+                  << ") (" << t[2].x << ", " << t[2].y << ")");
+    CHECK(largest_difference(t, 12, 12) < 1e-6);
+  }
+}
+
+TEST_CASE("Slivers whose two sides share the same cells get the exact area",
+          "[10_coverage][step4]") {
+  // Needles 1/256 of a pixel thick at many angles: in every row both sides cross the same cells.
+  Random random(44);
+  for (int trial = 0; trial < 200; ++trial) {
+    const glm::dvec2 a{random.integer(0, 12 * 256) / 256.0, random.integer(0, 12 * 256) / 256.0};
+    const glm::dvec2 b{random.integer(0, 12 * 256) / 256.0, random.integer(0, 12 * 256) / 256.0};
+    const Triangle t = {{a, b, b + glm::dvec2{1 / 256.0, 0}}};
+    INFO("trial " << trial << ": (" << t[0].x << ", " << t[0].y << ") (" << t[1].x << ", " << t[1].y
+                  << ") (" << t[2].x << ", " << t[2].y << ")");
+    CHECK(largest_difference(t, 12, 12) < 1e-6);
+  }
+}
+
+TEST_CASE("Composited over an empty canvas, a triangle gives each pixel its exact area",
+          "[10_coverage][step5]") {
+  // Over an empty pixel, v + c (1 - v) is c: the composited drawing, which takes the cells
+  // wherever the sides share a cell or a row holds the middle vertex, must equal the exact area.
+  Random random(45);
+  for (int trial = 0; trial < 300; ++trial) {
+    const Triangle t = random_triangle(random, -2 * 256, 14 * 256);
+    INFO("trial " << trial << ": (" << t[0].x << ", " << t[0].y << ") (" << t[1].x << ", " << t[1].y
+                  << ") (" << t[2].x << ", " << t[2].y << ")");
+    CHECK(largest_difference(t, 12, 12, Blend::over) < 1e-6);
   }
 }
 
