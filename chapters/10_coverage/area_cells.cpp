@@ -114,6 +114,7 @@ void RowCells::add_segment_walk(Touched& touched, double x0, double y0, double x
   add_piece(touched, column, xs, ys, x1, y1);
 }
 
+// [listing add_to_canvas]
 // The cells first..last (within the canvas) summed from the left onto the row: the running cover
 // plus each cell's own area. Empties the cells it reads; returns the cover after them.
 template <class Put>
@@ -128,7 +129,6 @@ double RowCells::sum_cells(float* row, int first, int last, double cover, Put pu
   return cover;
 }
 
-// [listing add_to_canvas]
 template <class Put>
 void RowCells::sum_along_row(float* row, Put put) {
   Touched a = touched_[0], b = touched_[1];
@@ -195,7 +195,6 @@ ByHeight sorted_by_height(const Triangle& t) {
   return v;
 }
 
-// [listing row_walker]
 // A triangle prepared for its rows, bottom to top: the vertices sorted by height, the long edge
 // from the lowest to the highest on one side, the two short edges through the middle one on the
 // other. The x where a side leaves a row is where it enters the next, so every edge is
@@ -215,6 +214,7 @@ class RowWalker {
     for (Side* side : {&left_, &right_}) side->move_to(y_);
   }
 
+  // [listing next_row]
   // Calls visit(band, split) for each band of pixel row `row`, the current one (none, one, or
   // two around the middle vertex, then `split`), then moves up to the next row.
   template <class Visit>
@@ -229,6 +229,7 @@ class RowWalker {
       visit(band_to(turned_ ? y1 : std::min(y1, middle_.y)), split);
     }
   }
+  // [/listing]
 
  private:
   struct Side {  // a side of the triangle: the edge it is on, where it crosses the current height
@@ -279,7 +280,6 @@ class RowWalker {
   bool short_on_left_ = false, turned_ = false;
   double y_ = 0;  // the current height
 };
-// [/listing]
 
 // A band's two pieces into the cells, as the counter-clockwise outline walks them: up the right
 // side, down the left side.
@@ -339,6 +339,7 @@ bool add_band_directly(float* row, int width, const Band& b, Put put) {
 }
 // [/listing]
 
+// [listing add_rows]
 template <Blend blend, class Put>
 void add_rows(CoverageCanvas& canvas, RowWalker& walker, RowCells& cells, int first_row,
               int last_row, Put put) {
@@ -359,6 +360,7 @@ void add_rows(CoverageCanvas& canvas, RowWalker& walker, RowCells& cells, int fi
     if (in_cells) cells.add_to_canvas(canvas, row, blend);
   }
 }
+// [/listing]
 
 // Twice the signed area: zero for a degenerate triangle, not finite for a non-finite one.
 double doubled_area(const Triangle& t) {
