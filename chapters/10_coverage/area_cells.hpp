@@ -1,7 +1,7 @@
 /// @file
-/// Step 4 · exact area, fast: the per-edge areas of step 1, deposited into one pixel row of
-/// cells at a time and summed along the row, in doubles (the method of FreeType's and AGG's
-/// anti-aliased scanline rasterizers).
+/// Step 4 · exact area, fast: the per-edge areas of step 1, in doubles, one pixel row at a time:
+/// the cells of area and cover of FreeType's and AGG's anti-aliased scanline rasterizers, and
+/// the rows that need no cells, written as the edges are stepped from row to row.
 #pragma once
 
 #include <algorithm>
@@ -71,10 +71,12 @@ class RowCells {
 /// row - 1/2 <= y <= row + 1/2) to the row's cells, walked counter-clockwise.
 void add_edges_in_row(RowCells& cells, const Triangle& triangle, int row);
 
-/// Step 4 · adds the triangle's coverage of every canvas pixel it reaches: its edges are walked
-/// from the bottom row to the top, each row's parts go into the row's cells, then one sum along
-/// the row. Agrees with step 1's exact area to about 1e-12; a zero-area or non-finite triangle
-/// adds nothing.
+/// Step 4 · adds the triangle's coverage of every canvas pixel it reaches: its two sides are
+/// walked from the bottom row to the top, and each row's coverage is written along the row as the
+/// running cover becomes known; the row's cells serve only where a piece crosses the canvas's
+/// left or right edge or, composited, where a pixel must receive its whole coverage at once.
+/// Agrees with step 1's exact area to about 1e-12 before the canvas's float rounding; a zero-area
+/// or non-finite triangle adds nothing.
 void draw_triangle_area(CoverageCanvas& canvas, const Triangle& triangle, RowCells& cells,
                         Blend blend = Blend::sum);
 
