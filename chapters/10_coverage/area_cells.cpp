@@ -3,7 +3,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <span>
+#include <limits>
+#include <utility>
 
 namespace tri::ch10 {
 namespace {
@@ -16,24 +17,40 @@ int column_of(double x) {
   return truncated > shifted ? truncated - 1 : truncated;
 }
 
-// x on the line through a at height y, for an edge whose x changes by dx_dy per unit of y.
-double x_at(glm::dvec2 a, double dx_dy, double y) {
-  return a.x + (y - a.y) * dx_dy;
+// Calls visit(column, area, height) for every cell from first to last (the columns of the
+// segment's left and right ends, both on the canvas), left to right: the height of the segment's
+// part in the cell and the area between that part and the cell's right side. Across several
+// cells the height is shared in proportion to the width crossed, k per unit of x: the first and
+// last cells get a part, every cell between the whole k, and its area is k / 2.
+template <class Visit>
+void for_each_cell(double x0, double y0, double x1, double y1, double dy_dx, int first, int last,
+                   Visit&& visit) {
+  const double height = y1 - y0;
+  if (first == last) return visit(first, height * ((first + 0.5) - (x0 + x1) / 2), height);
+  const double k = std::copysign(std::abs(dy_dx), height);
+  const double w0 = (first + 0.5) - std::min(x0, x1);  // the width crossed in the first cell
+  const double h0 = k * w0;
+  visit(first, h0 * (w0 / 2), h0);
+  double rest = height - h0;
+  for (int column = first + 1; column < last; ++column) {
+    visit(column, k / 2, k);
+    rest -= k;
+  }
+  const double w1 = std::max(x0, x1) - (last - 0.5);  // the width crossed in the last cell
+  visit(last, rest * (1 - w1 / 2), rest);
 }
 
 }  // namespace
 
 void RowCells::start_row(int width) {
-  if (area_.size() < static_cast<std::size_t>(width) + 1) {
-    area_.assign(static_cast<std::size_t>(width) + 1, 0.0);
-    cover_.assign(static_cast<std::size_t>(width) + 1, 0.0);
+  if (cells_.size() < static_cast<std::size_t>(width) + 1) {
+    cells_.assign(static_cast<std::size_t>(width) + 1, Cell{});
   }
-  for (int k = 0; k < ranges_; ++k) {  // cells read but not added to a canvas (figures, tests)
-    std::fill(area_.begin() + first_[k], area_.begin() + last_[k] + 1, 0.0);
-    std::fill(cover_.begin() + first_[k], cover_.begin() + last_[k] + 1, 0.0);
+  for (const Touched& t : touched_) {  // cells read but not added to a canvas (figures, tests)
+    if (t.first <= t.last) std::fill(cells_.begin() + t.first, cells_.begin() + t.last + 1, Cell{});
   }
   width_ = width;
-  ranges_ = 0;
+  touched_ = {};
 }
 
 // [listing add_piece]
@@ -41,38 +58,43 @@ void RowCells::start_row(int width) {
 // cell, and its height to the covers of the cells to its right. Left of the canvas only the cover
 // matters (it reaches column 0); right of the canvas nothing does, but the row must then be summed
 // up to the canvas's last column. The touched columns bound the row's sum.
-inline void RowCells::add_piece(int column, double xa, double ya, double xb, double yb) {
+inline void RowCells::add_piece(Touched& touched, int column, double xa, double ya, double xb,
+                                double yb) {
   const double height = yb - ya;
   if (column < 0) {
-    cover_[0] += height;
-    touch(0, 0);
+    cells_[0].cover += height;
+    touched.first = std::min(touched.first, 0);
+    touched.last = std::max(touched.last, 0);
   } else if (column < width_) {
-    area_[column] += height * ((column + 0.5) - (xa + xb) / 2);
-    cover_[column + 1] += height;
-    touch(column, column + 1);
+    cells_[column].area += height * ((column + 0.5) - (xa + xb) / 2);
+    cells_[column + 1].cover += height;
+    touched.first = std::min(touched.first, column);
+    touched.last = std::max(touched.last, column + 1);
   } else {
-    touch(width_, width_);  // nothing to add, but the row is summed to the canvas's end
+    touched.last = std::max(touched.last, width_);  // the row is summed to the canvas's end
   }
 }
 // [/listing]
 
-void RowCells::add_segment(double x0, double y0, double x1, double y1) {
-  add_segment(x0, y0, x1, y1, (y1 - y0) / (x1 - x0));
+void RowCells::add_segment(Side side, double x0, double y0, double x1, double y1, double dy_dx) {
+  Touched& touched = touched_[static_cast<std::size_t>(side)];
+  const int first = column_of(std::min(x0, x1)), last = column_of(std::max(x0, x1));
+  if (first < 0 || last >= width_) return add_segment_walk(touched, x0, y0, x1, y1, dy_dx);
+  touched.first = std::min(touched.first, first);
+  touched.last = std::max(touched.last, last + 1);
+  for_each_cell(x0, y0, x1, y1, dy_dx, first, last, [&](int column, double area, double height) {
+    cells_[column].area += area;
+    cells_[column + 1].cover += height;
+  });
 }
 
-void RowCells::add_segment(double x0, double y0, double x1, double y1, double dy_dx) {
-  first_[ranges_] = width_;  // the columns this segment touches, widened by add_piece
-  last_[ranges_] = 0;
-  add_segment_pieces(x0, y0, x1, y1, dy_dx);
-  ++ranges_;
-}
-
-void RowCells::add_segment_pieces(double x0, double y0, double x1, double y1, double dy_dx) {
+void RowCells::add_segment_walk(Touched& touched, double x0, double y0, double x1, double y1,
+                                double dy_dx) {
   // Clip the walk to the columns that matter: everything left of the canvas is one cover.
   const double left = -0.5, right = width_ - 0.5;
-  if (x0 < left && x1 < left) return add_piece(-1, x0, y0, x1, y1);
-  if (x0 >= right && x1 >= right) return add_piece(width_, x0, y0, x1, y1);
-  if (x0 == x1) return add_piece(std::clamp(column_of(x0), -1, width_), x0, y0, x1, y1);
+  if (x0 < left && x1 < left) return add_piece(touched, -1, x0, y0, x1, y1);
+  if (x0 >= right && x1 >= right) return add_piece(touched, width_, x0, y0, x1, y1);
+  if (x0 == x1) return add_piece(touched, std::clamp(column_of(x0), -1, width_), x0, y0, x1, y1);
   const int step = x1 > x0 ? 1 : -1;
   int column = column_of(x0);
   if (step < 0 && x0 == column - 0.5) --column;  // leaving leftwards from a cell's left side
@@ -84,115 +106,294 @@ void RowCells::add_segment_pieces(double x0, double y0, double x1, double y1, do
   while (column != last) {
     const double side = step > 0 ? column + 0.5 : column - 0.5;  // the side it leaves through
     const double y_side = y0 + (side - x0) * dy_dx;
-    add_piece(column, xs, ys, side, y_side);
+    add_piece(touched, column, xs, ys, side, y_side);
     xs = side;
     ys = y_side;
     column += step;
   }
-  add_piece(column, xs, ys, x1, y1);
+  add_piece(touched, column, xs, ys, x1, y1);
 }
 
 // [listing add_to_canvas]
-void RowCells::add_to_canvas(CoverageCanvas& canvas, int y, Blend blend) {
-  // The segments' columns from left to right (at most three segments in a triangle's row).
-  std::array<int, max_segments> order{};
-  for (int k = 0; k < ranges_; ++k) {  // insertion sort by first column
-    int j = k;
-    for (; j > 0 && first_[order[j - 1]] > first_[k]; --j) order[j] = order[j - 1];
-    order[j] = k;
+// The cells first..last (within the canvas) summed from the left onto the row: the running cover
+// plus each cell's own area. Empties the cells it reads; returns the cover after them.
+template <class Put>
+double RowCells::sum_cells(float* row, int first, int last, double cover, Put put) {
+  for (int x = first; x <= last; ++x) {
+    Cell& cell = cells_[static_cast<std::size_t>(x)];
+    cover += cell.cover;
+    const double coverage = -(cover + cell.area);  // a counter-clockwise outline sums to -area
+    cell = {};                                     // ready for the next row
+    if (coverage != 0) put(row[x], static_cast<float>(coverage));
   }
+  return cover;
+}
+
+template <class Put>
+void RowCells::sum_along_row(float* row, Put put) {
+  Touched a = touched_[0], b = touched_[1];
+  if (b.first < a.first) std::swap(a, b);  // a starts first (an empty side starts at INT_MAX)
+  if (a.first > a.last) return;            // no side touched a cell
+  const int end = width_ - 1;              // the canvas's last column
+  if (b.first > b.last || b.first <= a.last + 1) {  // one side, or the sides' cells meet
+    sum_cells(row, a.first, std::min(std::max(a.last, b.last), end), 0.0, put);
+  } else {
+    // Between the sides no cell holds anything: the cover alone, the same for every pixel.
+    const double cover = sum_cells(row, a.first, std::min(a.last, end), 0.0, put);
+    const auto between = static_cast<float>(-cover);
+    for (int x = a.last + 1; x < std::min(b.first, width_); ++x) put(row[x], between);
+    sum_cells(row, b.first, std::min(b.last, end), cover, put);
+  }
+}
+
+void RowCells::add_to_canvas(CoverageCanvas& canvas, int y, Blend blend) {
   float* row = canvas.row(y);
-  const auto sum_along_row = [&](auto&& put) {
-    double cover = 0;  // the heights of the edge pieces left of the column
-    int x = ranges_ > 0 ? first_[order[0]] : 0;
-    for (int k = 0; k < ranges_; ++k) {
-      // Between segments no cell holds anything: the cover alone, the same for every pixel.
-      const auto between = static_cast<float>(-cover);
-      for (; x < first_[order[k]]; ++x) put(row[x], between);
-      for (; x <= std::min(last_[order[k]], width_ - 1); ++x) {
-        cover += cover_[x];
-        const double coverage = -(cover + area_[x]);  // a counter-clockwise outline sums to -area
-        area_[x] = cover_[x] = 0;                     // ready for the next row
-        if (coverage != 0) put(row[x], static_cast<float>(coverage));
-      }
-    }
-  };
   // One pass per blend, so the loop does not decide the blend at every pixel.
   if (blend == Blend::sum) {
-    sum_along_row([](float& v, float c) { v += c; });
+    sum_along_row(row, [](float& v, float c) { v += c; });
   } else {
-    sum_along_row([](float& v, float c) {
-      if (c != 0) v += c * (1.0f - v);
-    });
+    sum_along_row(row, [](float& v, float c) { v += c * (1.0f - v); });
   }
-  area_[width_] = cover_[width_] = 0;  // a segment right of the canvas touched only this
-  ranges_ = 0;
+  cells_[static_cast<std::size_t>(width_)] = {};  // a piece right of the canvas touched only this
+  touched_ = {};
 }
 // [/listing]
 
 namespace {
 
-// One edge of a counter-clockwise triangle, prepared once for all its rows: no division per row.
-struct RowEdge {
-  glm::dvec2 a;
-  double low, high;     // its lowest and highest y
-  double dx_dy, dy_dx;  // its slopes (dy_dx infinite for a vertical edge)
-  bool upward;          // walked from low to high
+// One edge walked upwards: its x at a height, and its slope for the cells of a row.
+struct RisingEdge {
+  glm::dvec2 low, high;
+  double dx_dy, dy_dx;  // dy_dx infinite for a vertical edge
+  RisingEdge(glm::dvec2 a, glm::dvec2 b) : low(a), high(b) {
+    // Both slopes from one division (a horizontal edge's are never used).
+    const double dx = b.x - a.x, dy = b.y - a.y, inverse = 1 / (dx * dy);
+    dx_dy = dx == 0 ? 0 : dx * dx * inverse;
+    dy_dx = dx == 0 ? std::numeric_limits<double>::infinity() : dy * dy * inverse;
+  }
+  // Exactly the vertex's x at its top, so that two sides meet exactly there.
+  double x_at(double y) const { return y == high.y ? high.x : low.x + (y - low.y) * dx_dy; }
 };
 
-// The triangle's edges that are not horizontal (a horizontal edge adds no height).
-int row_edges(const Triangle& t, std::array<RowEdge, 3>& edges) {
-  int count = 0;
-  for (int k = 0; k < 3; ++k) {
-    const glm::dvec2 a = t[k], b = t[(k + 1) % 3];
-    if (a.y == b.y) continue;
-    edges[count++] = {a,
-                      std::min(a.y, b.y),
-                      std::max(a.y, b.y),
-                      (b.x - a.x) / (b.y - a.y),
-                      (b.y - a.y) / (b.x - a.x),
-                      a.y < b.y};
-  }
-  return count;
+// The part of a triangle inside one pixel row between heights y0 < y1 where each side is one
+// straight piece: the left side rises from x = left0 at y0 to left1 at y1, the right side from
+// right0 to right1.
+struct Band {
+  double y0, y1, left0, left1, right0, right1, left_dy_dx, right_dy_dx;
+  int left_first, left_last, right_first, right_last;  // the columns each side crosses
+};
+
+struct ByHeight {
+  glm::dvec2 low, middle, high;
+};
+
+ByHeight sorted_by_height(const Triangle& t) {
+  ByHeight v{t[0], t[1], t[2]};
+  if (v.middle.y < v.low.y) std::swap(v.low, v.middle);
+  if (v.high.y < v.middle.y) std::swap(v.middle, v.high);
+  if (v.middle.y < v.low.y) std::swap(v.low, v.middle);
+  return v;
 }
 
-// [listing add_edges_in_row]
-void add_edges_in_row(RowCells& cells, std::span<const RowEdge> edges, int row) {
-  for (const RowEdge& e : edges) {
-    const double low = std::max(e.low, row - 0.5), high = std::min(e.high, row + 0.5);
-    if (low >= high) continue;
-    // The edge's part in this row, walked in the edge's own direction.
-    const double y0 = e.upward ? low : high, y1 = e.upward ? high : low;
-    cells.add_segment(x_at(e.a, e.dx_dy, y0), y0, x_at(e.a, e.dx_dy, y1), y1, e.dy_dx);
+// A triangle prepared for its rows, bottom to top: the vertices sorted by height, the long edge
+// from the lowest to the highest on one side, the two short edges through the middle one on the
+// other. The x where a side leaves a row is where it enters the next, so every edge is
+// evaluated once per row boundary and never clipped. The row that holds the middle vertex is two
+// bands, below and above it, so that in every band each side is one straight piece.
+class RowWalker {
+ public:
+  explicit RowWalker(const Triangle& t) : RowWalker(sorted_by_height(t)) {}
+  double low_y() const { return low_.y; }
+  double high_y() const { return high_.y; }
+
+  // Starts at the bottom of pixel row `row` (or of the triangle, if higher).
+  void start(int row) {
+    y_ = std::max(row - 0.5, low_.y);
+    turned_ = y_ >= middle_.y;  // past the middle vertex, the short side is on its upper edge
+    short_side().edge = turned_ ? upper_ : lower_;
+    for (Side* side : {&left_, &right_}) side->move_to(y_);
+  }
+
+  // [listing next_row]
+  // Calls visit(band, split) for each band of pixel row `row`, the current one (none, one, or
+  // two around the middle vertex, then `split`), then moves up to the next row.
+  template <class Visit>
+  void next_row(int row, Visit&& visit) {
+    const double y1 = std::min(row + 0.5, high_.y);
+    const bool split = !turned_ && y_ < middle_.y && middle_.y < y1;
+    while (y_ < y1) {
+      if (!turned_ && y_ >= middle_.y) {  // the short side turns at the middle vertex
+        short_side().edge = upper_;
+        turned_ = true;
+      }
+      visit(band_to(turned_ ? y1 : std::min(y1, middle_.y)), split);
+    }
+  }
+  // [/listing]
+
+ private:
+  struct Side {  // a side of the triangle: the edge it is on, where it crosses the current height
+    RisingEdge edge;
+    double x = 0;
+    int column = 0;
+    void move_to(double y) {
+      x = edge.x_at(y);
+      column = column_of(x);
+    }
+  };
+  explicit RowWalker(const ByHeight& v)
+      : low_(v.low),
+        middle_(v.middle),
+        high_(v.high),
+        lower_(low_, middle_),
+        upper_(middle_, high_),
+        left_{RisingEdge(low_, high_)},
+        right_{lower_} {
+    const glm::dvec2 along = high_ - low_, to_middle = middle_ - low_;
+    short_on_left_ = along.x * to_middle.y - along.y * to_middle.x > 0;
+    if (short_on_left_) std::swap(left_, right_);
+  }
+  Side& short_side() { return short_on_left_ ? left_ : right_; }
+  // The band from the current height up to y1; moves there.
+  Band band_to(double y1) {
+    const Side l0 = left_, r0 = right_;
+    left_.move_to(y1);
+    right_.move_to(y1);
+    const double y0 = std::exchange(y_, y1);
+    return {y0,
+            y1,
+            l0.x,
+            left_.x,
+            r0.x,
+            right_.x,
+            l0.edge.dy_dx,
+            r0.edge.dy_dx,
+            std::min(l0.column, left_.column),
+            std::max(l0.column, left_.column),
+            std::min(r0.column, right_.column),
+            std::max(r0.column, right_.column)};
+  }
+
+  glm::dvec2 low_, middle_, high_;
+  RisingEdge lower_, upper_;  // the short side's edges, below and above the middle vertex
+  Side left_, right_;
+  bool short_on_left_ = false, turned_ = false;
+  double y_ = 0;  // the current height
+};
+
+// A band's two pieces into the cells, as the counter-clockwise outline walks them: up the right
+// side, down the left side.
+void add_band(RowCells& cells, const Band& b) {
+  cells.add_segment(RowCells::Side::left, b.left1, b.y1, b.left0, b.y0, b.left_dy_dx);
+  cells.add_segment(RowCells::Side::right, b.right0, b.y0, b.right1, b.y1, b.right_dy_dx);
+}
+
+// [listing add_band_directly]
+// Most bands need no cells at all. Walking the left piece's cells, then the pixels between the
+// sides, then the right piece's cells, from left to right, the running cover is known at every
+// pixel, so each pixel's coverage is written as soon as it is known. When the sides share cells
+// (a thin triangle, a tip), each side adds its own part there: coverage that is summed adds up
+// (`shared`). A side wholly off the canvas is not walked: left of it, its cover reaches column 0;
+// right of it, the pixels between reach the last column. False, having written nothing, when a
+// piece crosses the canvas's left or right edge, or when the sides share cells and each pixel
+// must receive its whole coverage at once (composited over).
+template <bool shared, class Put>
+bool add_band_directly(float* row, int width, const Band& b, Put put) {
+  bool walk_left = true, walk_right = true;
+  if (b.left_first < 0 || b.right_last >= width) [[unlikely]] {  // the band reaches off the canvas
+    if (b.right_last < 0 || b.left_first >= width) return true;  // wholly: nothing to add
+    walk_left = b.left_first >= 0;      // else the left side must be on the canvas or wholly left,
+    walk_right = b.right_last < width;  // and the right side on it or wholly right of it
+    if (walk_left ? b.left_last >= width : b.left_last >= 0) return false;
+    if (walk_right ? b.right_first < 0 : b.right_first < width) return false;
+  }
+  if (b.left_first > b.right_first || b.left_last > b.right_last ||
+      (!shared && b.left_last >= b.right_first)) {
+    return false;
+  }
+  double inside = b.y1 - b.y0;  // right of the left side, the band's whole height is inside
+  if (walk_left) {
+    double cover = 0;  // the left piece runs down: negative heights, coverage -(cover + area)
+    for_each_cell(b.left1, b.y1, b.left0, b.y0, b.left_dy_dx, b.left_first, b.left_last,
+                  [&](int column, double area, double height) {
+                    put(row[column], static_cast<float>(-(cover + area)));
+                    cover += height;
+                  });
+    inside = -cover;
+  }
+  const float between = static_cast<float>(inside);
+  float* const end = row + (walk_right ? b.right_first : width);
+  for (float* pixel = row + (walk_left ? b.left_last + 1 : 0); pixel < end; ++pixel) {
+    put(*pixel, between);
+  }
+  if (walk_right) {
+    double cover = 0;  // the right piece runs up: what lies right of it is outside
+    for_each_cell(b.right0, b.y0, b.right1, b.y1, b.right_dy_dx, b.right_first, b.right_last,
+                  [&](int column, double area, double height) {
+                    const double left_side = inside * (column > b.left_last);
+                    put(row[column], static_cast<float>(left_side - (cover + area)));
+                    cover += height;
+                  });
+  }
+  return true;
+}
+// [/listing]
+
+// [listing add_rows]
+template <Blend blend, class Put>
+void add_rows(CoverageCanvas& canvas, RowWalker& walker, RowCells& cells, int first_row,
+              int last_row, Put put) {
+  constexpr bool summed = blend == Blend::sum;
+  bool cells_started = false;
+  for (int row = first_row; row <= last_row; ++row) {
+    bool in_cells = false;
+    walker.next_row(row, [&](const Band& band, bool split) {
+      // Summed, a row's bands add up; composited, a pixel takes its coverage once.
+      if ((summed || !split) &&
+          add_band_directly<summed>(canvas.row(row), canvas.width(), band, put)) {
+        return;
+      }
+      if (!cells_started) cells.start_row(canvas.width());  // once per triangle, if at all
+      cells_started = in_cells = true;
+      add_band(cells, band);
+    });
+    if (in_cells) cells.add_to_canvas(canvas, row, blend);
   }
 }
 // [/listing]
 
+// Twice the signed area: zero for a degenerate triangle, not finite for a non-finite one.
+double doubled_area(const Triangle& t) {
+  return (t[1].x - t[0].x) * (t[2].y - t[0].y) - (t[2].x - t[0].x) * (t[1].y - t[0].y);
+}
+
 }  // namespace
 
-void add_edges_in_row(RowCells& cells, const Triangle& counter_clockwise, int row) {
-  std::array<RowEdge, 3> edges;
-  const int count = row_edges(counter_clockwise, edges);
-  add_edges_in_row(cells, std::span(edges).first(static_cast<std::size_t>(count)), row);
+void add_edges_in_row(RowCells& cells, const Triangle& triangle, int row) {
+  const double doubled = doubled_area(triangle);
+  if (!std::isfinite(doubled) || doubled == 0) return;
+  RowWalker walker(triangle);
+  walker.start(row);
+  walker.next_row(row, [&](const Band& band, bool) { add_band(cells, band); });
 }
 
 // [listing draw_triangle_area]
 void draw_triangle_area(CoverageCanvas& canvas, const Triangle& triangle, RowCells& cells,
                         Blend blend) {
-  Triangle t = triangle;
-  const double doubled =
-      (t[1].x - t[0].x) * (t[2].y - t[0].y) - (t[2].x - t[0].x) * (t[1].y - t[0].y);
+  const double doubled = doubled_area(triangle);
   if (!std::isfinite(doubled) || doubled == 0) return;
-  if (doubled < 0) std::swap(t[1], t[2]);  // counter-clockwise, so every area has one sign
-  std::array<RowEdge, 3> edges;
-  const auto prepared = std::span(edges).first(static_cast<std::size_t>(row_edges(t, edges)));
-  const auto [low_y, high_y] = std::minmax({t[0].y, t[1].y, t[2].y});
-  const int first_row = std::max(0, column_of(low_y));
-  const int last_row = std::min(canvas.height() - 1, column_of(high_y));
-  for (int row = first_row; row <= last_row; ++row) {
-    cells.start_row(canvas.width());
-    add_edges_in_row(cells, prepared, row);
-    cells.add_to_canvas(canvas, row, blend);
+  RowWalker walker(triangle);
+  const int first_row = std::max(0, column_of(walker.low_y()));
+  const int last_row = std::min(canvas.height() - 1, column_of(walker.high_y()));
+  if (first_row > last_row) return;
+  walker.start(first_row);
+  // One loop per blend, so the rows do not decide the blend at every pixel.
+  if (blend == Blend::sum) {
+    add_rows<Blend::sum>(canvas, walker, cells, first_row, last_row,
+                         [](float& v, float c) { v += c; });
+  } else {
+    add_rows<Blend::over>(canvas, walker, cells, first_row, last_row,
+                          [](float& v, float c) { v += c * (1.0f - v); });
   }
 }
 // [/listing]

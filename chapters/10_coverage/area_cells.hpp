@@ -1,11 +1,12 @@
 /// @file
-/// Step 4 · exact area, fast: the per-edge areas of step 1, deposited into one pixel row of
-/// cells at a time and summed along the row, in doubles (the method of FreeType's and AGG's
-/// anti-aliased scanline rasterizers).
+/// Step 4 · exact area, fast: the per-edge areas of step 1, in doubles, one pixel row at a time:
+/// the cells of area and cover of FreeType's and AGG's anti-aliased scanline rasterizers, and
+/// the rows that need no cells, written as the edges are stepped from row to row.
 #pragma once
 
 #include <algorithm>
 #include <array>
+#include <climits>
 #include <vector>
 
 #include "chapters/10_coverage/coverage_canvas.hpp"
@@ -20,50 +21,62 @@ enum class Blend {
 };
 
 /// One pixel row's cells: for each column, the area its edges leave on their right inside it,
-/// and the height of the edges left of it ("cover"), which counts for its whole width. Kept
-/// between triangles so drawing allocates nothing once the widest row has been seen; only the
-/// columns the edges touched are summed and cleared, as AGG and FreeType do.
+/// and the height of the edges left of it ("cover"), which counts for its whole width. A
+/// triangle's row holds two chains of edges, its left side and its right side; the cells each
+/// touched are remembered, so the sum along the row reads only those and writes the pixels
+/// between them at once. Kept between triangles so drawing allocates nothing once the widest row
+/// has been seen; only the touched cells are summed and cleared, as AGG and FreeType do.
 class RowCells {
  public:
+  /// The two chains of a triangle's row: its left side and its right side.
+  enum class Side { left, right };
+
   /// Starts an empty row of a canvas `width` wide.
   void start_row(int width);
-  /// Adds the segment (x0, y0) -> (x1, y1), which lies within this row, to the cells it crosses.
-  /// A row holds at most four segments (a triangle's has at most three).
-  void add_segment(double x0, double y0, double x1, double y1);
-  /// The same with the segment's slope dy/dx given (its edge's, computed once per triangle).
-  void add_segment(double x0, double y0, double x1, double y1, double dy_dx);
+  /// Adds the segment (x0, y0) -> (x1, y1) of the row's `side`, which lies within this row, to
+  /// the cells it crosses; dy_dx is its edge's slope (infinite for a vertical edge).
+  void add_segment(Side side, double x0, double y0, double x1, double y1, double dy_dx);
   /// Adds the coverage of the row's touched columns to row y of the canvas: the running sum of
   /// covers from the left plus each cell's own area, negated for a counter-clockwise outline.
-  /// Beyond the last touched column the covers have cancelled. Leaves the cells empty.
+  /// Between the two sides' cells no cell holds anything, so those pixels all get the cover;
+  /// beyond the last touched column the covers have cancelled. Leaves the cells empty.
   void add_to_canvas(CoverageCanvas& canvas, int y, Blend blend = Blend::sum);
 
   /// What the row's edges left in a column since start_row (for figures and tests).
-  double area(int column) const { return area_[static_cast<std::size_t>(column)]; }
-  double cover(int column) const { return cover_[static_cast<std::size_t>(column)]; }
+  double area(int column) const { return cells_[static_cast<std::size_t>(column)].area; }
+  double cover(int column) const { return cells_[static_cast<std::size_t>(column)].cover; }
 
  private:
-  void add_segment_pieces(double x0, double y0, double x1, double y1, double dy_dx);
-  void add_piece(int column, double xa, double ya, double xb, double yb);
-  void touch(int first, int last) noexcept {
-    first_[ranges_] = std::min(first_[ranges_], first);
-    last_[ranges_] = std::max(last_[ranges_], last);
-  }
+  struct Cell {
+    double area = 0, cover = 0;
+  };
+  // The columns one side's segments touched since start_row (first > last: none).
+  struct Touched {
+    int first = INT_MAX, last = INT_MIN;
+  };
 
-  static constexpr int max_segments = 4;  // a triangle's row holds at most three
+  void add_segment_walk(Touched& touched, double x0, double y0, double x1, double y1, double dy_dx);
+  void add_piece(Touched& touched, int column, double xa, double ya, double xb, double yb);
+  template <class Put>
+  void sum_along_row(float* row, Put put);
+  template <class Put>
+  double sum_cells(float* row, int first, int last, double cover, Put put);
+
   int width_ = 0;
-  int ranges_ = 0;  // segments added since start_row, each with the columns it touched
-  std::array<int, max_segments> first_{}, last_{};
-  std::vector<double> area_;
-  std::vector<double> cover_;
+  std::array<Touched, 2> touched_{};
+  std::vector<Cell> cells_;  // width_ + 1: a piece in the last column leaves its cover beyond
 };
 
-/// Adds the parts of a counter-clockwise triangle's three edges that lie in pixel row `row` (the
-/// band row - 1/2 <= y <= row + 1/2) to the row's cells.
-void add_edges_in_row(RowCells& cells, const Triangle& counter_clockwise, int row);
+/// Adds the parts of a triangle's three edges that lie in pixel row `row` (the band
+/// row - 1/2 <= y <= row + 1/2) to the row's cells, walked counter-clockwise.
+void add_edges_in_row(RowCells& cells, const Triangle& triangle, int row);
 
-/// Step 4 · adds the triangle's coverage of every canvas pixel it reaches: for each pixel row,
-/// the three edges' parts go into the row's cells, then one sum along the row. Agrees with step
-/// 1's exact area to about 1e-12; a zero-area or non-finite triangle adds nothing.
+/// Step 4 · adds the triangle's coverage of every canvas pixel it reaches: its two sides are
+/// walked from the bottom row to the top, and each row's coverage is written along the row as the
+/// running cover becomes known; the row's cells serve only where a piece crosses the canvas's
+/// left or right edge or, composited, where a pixel must receive its whole coverage at once.
+/// Agrees with step 1's exact area to about 1e-12 before the canvas's float rounding; a zero-area
+/// or non-finite triangle adds nothing.
 void draw_triangle_area(CoverageCanvas& canvas, const Triangle& triangle, RowCells& cells,
                         Blend blend = Blend::sum);
 

@@ -3,20 +3,22 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <sstream>
+#include <string>
 #include <vector>
 
 #include "chapters/10_coverage/area_oracle.hpp"
-#include "common/random.hpp"
+#include "chapters/10_coverage/test_triangles.hpp"
 
 namespace tri::ch10 {
 
 namespace {
 
 // The largest |canvas - exact| over every pixel of the canvas, for one triangle drawn alone.
-double largest_difference(const Triangle& t, int width, int height) {
+double largest_difference(const Triangle& t, int width, int height, Blend blend = Blend::sum) {
   CoverageCanvas canvas(width, height);
   RowCells cells;
-  draw_triangle_area(canvas, t, cells);
+  draw_triangle_area(canvas, t, cells, blend);
   double largest = 0;
   for (int y = 0; y < height; ++y) {
     for (int x = 0; x < width; ++x) {
@@ -27,24 +29,28 @@ double largest_difference(const Triangle& t, int width, int height) {
   return largest;
 }
 
-Triangle random_triangle(Random& random, int low, int high) {
-  Triangle t;
-  for (auto& v : t) v = {random.integer(low, high) / 256.0, random.integer(low, high) / 256.0};
-  return t;
+// The triangle's vertices, for the message of a failed check.
+std::string describe(const Triangle& t) {
+  std::ostringstream text;
+  text << "(" << t[0].x << ", " << t[0].y << ") (" << t[1].x << ", " << t[1].y << ") (" << t[2].x
+       << ", " << t[2].y << ")";
+  return text.str();
+}
+
+// Each triangle drawn alone on a 12 x 12 canvas: every pixel within 1e-6 of the exact area, well
+// within one unit of the 16-bit output, 1/65535.
+void check_against_oracle(const std::vector<Triangle>& triangles, Blend blend = Blend::sum) {
+  for (std::size_t trial = 0; trial < triangles.size(); ++trial) {
+    INFO("trial " << trial << ": " << describe(triangles[trial]));
+    CHECK(largest_difference(triangles[trial], 12, 12, blend) < 1e-6);
+  }
 }
 
 }  // namespace
 
 TEST_CASE("The row cells give each pixel the exact area, within a float's rounding",
           "[10_coverage][step4]") {
-  Random random(42);
-  for (int trial = 0; trial < 300; ++trial) {
-    const Triangle t = random_triangle(random, -2 * 256, 14 * 256);
-    INFO("trial " << trial << ": (" << t[0].x << ", " << t[0].y << ") (" << t[1].x << ", " << t[1].y
-                  << ") (" << t[2].x << ", " << t[2].y << ")");
-    // Well within one unit of the 16-bit output, 1/65535.
-    CHECK(largest_difference(t, 12, 12) < 1e-6);
-  }
+  check_against_oracle(test::random_triangles(300, 42, {-2, -2}, {14, 14}));
 }
 
 TEST_CASE("Edges on pixel sides, vertical and horizontal edges, and vertices on corners",
@@ -59,12 +65,35 @@ TEST_CASE("Edges on pixel sides, vertical and horizontal edges, and vertices on 
       {{{0, 0}, {7.99609375, 0.00390625}, {0, 0.0078125}}},  // a sliver along a row
   };
   for (const auto& t : cases) {
-    INFO("(" << t[0].x << ", " << t[0].y << ") (" << t[1].x << ", " << t[1].y << ") (" << t[2].x
-             << ", " << t[2].y << ")");
+    INFO(describe(t));
     CHECK(largest_difference(t, 8, 8) < 1e-6);
     // Either winding gives the same picture.
     CHECK(largest_difference({{t[0], t[2], t[1]}}, 8, 8) < 1e-6);
   }
+}
+
+TEST_CASE("Triangles reaching past every edge of the canvas get the exact area on it",
+          "[10_coverage][step4]") {
+  // Vertices up to 20 pixels off a 12 x 12 canvas: rows where a side lies wholly left or right of
+  // the canvas, or crosses its left or right edge, and rows above and below it.
+  check_against_oracle(test::random_triangles(300, 43, {-20, -20}, {32, 32}));
+}
+
+TEST_CASE("Slivers whose two sides share the same cells get the exact area",
+          "[10_coverage][step4]") {
+  // Needles 1/256 of a pixel thick at many angles: in every row both sides cross the same cells.
+  std::vector<Triangle> needles;
+  for (const Triangle& t : test::random_triangles(200, 44, {0, 0}, {12, 12})) {
+    needles.push_back({{t[0], t[1], t[1] + glm::dvec2{1 / 256.0, 0}}});
+  }
+  check_against_oracle(needles);
+}
+
+TEST_CASE("Composited over an empty canvas, a triangle gives each pixel its exact area",
+          "[10_coverage][step5]") {
+  // Over an empty pixel, v + c (1 - v) is c: the composited drawing, which takes the cells
+  // wherever the sides share a cell or a row holds the middle vertex, must equal the exact area.
+  check_against_oracle(test::random_triangles(300, 45, {-2, -2}, {14, 14}), Blend::over);
 }
 
 TEST_CASE("A zero-area or non-finite triangle adds nothing", "[10_coverage][step4]") {
