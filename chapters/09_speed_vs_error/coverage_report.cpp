@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "chapters/09_speed_vs_error/log_axis.hpp"
+#include "chapters/09_speed_vs_error/plot_frame.hpp"
 #include "chapters/09_speed_vs_error/plot_svg.hpp"
 #include "chapters/09_speed_vs_error/report_csv.hpp"
 #include "chapters/09_speed_vs_error/report_markdown.hpp"
@@ -189,59 +190,25 @@ std::string coverage_svg(std::span<const CoverageSummary> summaries, const std::
   const ErrorAxis x{{xd.low, xd.high, left + floor_gap, right}, left + floor_gap / 2};
   const auto x_of = [&](double error) { return x.position(error >= exact_below ? error : 0); };
   const LogScale y{yd.low, yd.high, bottom, top};
+  const PlotBox box{left, right, top, bottom};
   std::ostringstream svg;
-  open_tag(svg, "svg",
-           {{"xmlns", "http://www.w3.org/2000/svg"},
-            {"width", width},
-            {"height", height},
-            {"viewBox", "0 0 " + svg_number(width) + ' ' + svg_number(height)},
-            {"font-family", "sans-serif"},
-            {"font-size", "11"}});
-  svg << ">\n";
-  element(svg, "rect",
-          {{"x", "0"}, {"y", "0"}, {"width", width}, {"height", height}, {"fill", "white"}});
-  element(svg, "text", {{"x", left}, {"y", "28"}, {"font-size", "16"}, {"font-weight", "bold"}},
-          "Anti-aliasing: speed against error, every coverage algorithm");
-  element(svg, "text", {{"x", left}, {"y", "48"}}, escape_xml(subtitle));
-  element(svg, "text", {{"x", left}, {"y", "64"}, {"fill", "#555"}},
-          "y: triangles per second, geometric mean over all scenes; x: mean |coverage − exact "
-          "area| per touched pixel");
-  open_group(svg, {{"stroke", "#ddd"}});
-  for (int k = xd.low; k <= xd.high; ++k) {
-    const double at = x.scale.position(std::pow(10.0, k));
-    line(svg, at, top, at, bottom);
-  }
-  for (int k = yd.low; k <= yd.high; ++k) {
-    line(svg, left, y.position(std::pow(10.0, k)), right, y.position(std::pow(10.0, k)));
-  }
-  close_group(svg);
+  open_plot(svg, width, height, left,
+            "Anti-aliasing: speed against error, every coverage algorithm", subtitle,
+            "y: triangles per second, geometric mean over all scenes; x: mean |coverage − exact "
+            "area| per touched pixel");
+  log_grid_and_axes(svg, x.scale, y, box);
   line(svg, x.zero_position, top, x.zero_position, bottom,
        {{"stroke", "#999"}, {"stroke-dasharray", "2 3"}});
-  line(svg, left, bottom, right, bottom, {{"stroke", "black"}});
-  line(svg, left, top, left, bottom, {{"stroke", "black"}});
-  open_group(svg, {{"text-anchor", "middle"}});
-  element(svg, "text", {{"x", x.zero_position}, {"y", bottom + 16}, {"font-weight", "bold"}},
-          "exact");
-  for (int k = xd.low; k <= xd.high; ++k) {
-    element(svg, "text", {{"x", x.scale.position(std::pow(10.0, k))}, {"y", bottom + 16}},
-            power_of_ten_label(k));
-  }
-  element(svg, "text", {{"x", (left + right) / 2}, {"y", bottom + 38}, {"font-size", "13"}},
-          "mean error per touched pixel (log; below 10⁻⁶, a float's rounding, drawn at "
-          "\"exact\")");
-  close_group(svg);
-  open_group(svg, {{"text-anchor", "end"}});
-  for (int k = yd.low; k <= yd.high; ++k) {
-    element(svg, "text", {{"x", left - 6}, {"y", y.position(std::pow(10.0, k)) + 4}},
-            power_of_ten_label(k));
-  }
-  close_group(svg);
   element(svg, "text",
-          {{"transform", "translate(" + svg_number(left - 58) + ' ' +
-                             svg_number((top + bottom) / 2) + ") rotate(-90)"},
-           {"text-anchor", "middle"},
-           {"font-size", "13"}},
-          "triangles per second (log)");
+          {{"x", x.zero_position},
+           {"y", bottom + 16},
+           {"font-weight", "bold"},
+           {"text-anchor", "middle"}},
+          "exact");
+  x_decade_labels(svg, x.scale, box,
+                  "mean error per touched pixel (log; below 10⁻⁶, a float's rounding, drawn at "
+                  "\"exact\")");
+  y_decade_labels(svg, y, box, power_of_ten_label, "triangles per second (log)");
 
   // The guide: from one sample per pixel, error falling as 1/n while the cost grows as n².
   const auto one = std::find_if(summaries.begin(), summaries.end(),

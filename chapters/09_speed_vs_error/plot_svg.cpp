@@ -12,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "chapters/09_speed_vs_error/plot_frame.hpp"
 #include "chapters/09_speed_vs_error/report_csv.hpp"
 #include "chapters/09_speed_vs_error/svg_elements.hpp"
 
@@ -105,32 +106,14 @@ struct ChapterColours {
 
 // The document's opening tag, white background and the three lines of title.
 void write_header(std::ostream& svg, const BenchReport& report, const PlotLayout& layout) {
-  open_tag(svg, "svg",
-           {{"xmlns", "http://www.w3.org/2000/svg"},
-            {"width", layout.width},
-            {"height", layout.height},
-            {"viewBox", "0 0 " + svg_number(layout.width) + ' ' + svg_number(layout.height)},
-            {"font-family", "sans-serif"},
-            {"font-size", "11"}});
-  svg << ">\n";
-  element(svg, "rect",
-          {{"x", "0"},
-           {"y", "0"},
-           {"width", layout.width},
-           {"height", layout.height},
-           {"fill", "white"}});
-  element(svg, "text",
-          {{"x", layout.left}, {"y", "28"}, {"font-size", "16"}, {"font-weight", "bold"}},
-          "Speed against error, every registered algorithm");
   std::ostringstream setting;
   setting << size_name(report.size) << " setting, " << report.width << "×" << report.height
-          << " canvas, " << escape_xml(report.machine.cpu_model) << " (" << report.machine.threads
-          << " threads), " << escape_xml(report.machine.compiler) << ", "
-          << escape_xml(report.machine.build_type);
-  element(svg, "text", {{"x", layout.left}, {"y", "48"}}, setting.str());
-  element(svg, "text", {{"x", layout.left}, {"y", "64"}, {"fill", "#555"}},
-          "y: pixels written per second (Mpix/s), geometric mean over all scenes; x: (missed + "
-          "extra) per covered pixel over all scenes");
+          << " canvas, " << report.machine.cpu_model << " (" << report.machine.threads
+          << " threads), " << report.machine.compiler << ", " << report.machine.build_type;
+  open_plot(svg, layout.width, layout.height, layout.left,
+            "Speed against error, every registered algorithm", setting.str(),
+            "y: pixels written per second (Mpix/s), geometric mean over all scenes; x: (missed + "
+            "extra) per covered pixel over all scenes");
 }
 
 // Light lines at every decade of both axes, and a dashed one at "exact".

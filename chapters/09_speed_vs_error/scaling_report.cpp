@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "chapters/09_speed_vs_error/log_axis.hpp"
+#include "chapters/09_speed_vs_error/plot_frame.hpp"
 #include "chapters/09_speed_vs_error/plot_svg.hpp"
 #include "chapters/09_speed_vs_error/report_csv.hpp"
 #include "chapters/09_speed_vs_error/report_markdown.hpp"
@@ -176,52 +177,18 @@ std::string scaling_svg(std::span<const ScalingPoint> points, std::string_view s
   const DecadeRange xd = decades_covering(xs), yd = decades_covering(ys);
   const LogScale x{xd.low, xd.high, left, right}, y{yd.low, yd.high, bottom, top};
   const bool canvas = sweep == "canvas";
+  const PlotBox box{left, right, top, bottom};
   std::ostringstream svg;
-  open_tag(svg, "svg",
-           {{"xmlns", "http://www.w3.org/2000/svg"},
-            {"width", width},
-            {"height", height},
-            {"viewBox", "0 0 " + svg_number(width) + ' ' + svg_number(height)},
-            {"font-family", "sans-serif"},
-            {"font-size", "11"}});
-  svg << ">\n";
-  element(svg, "rect",
-          {{"x", "0"}, {"y", "0"}, {"width", width}, {"height", height}, {"fill", "white"}});
-  element(svg, "text", {{"x", left}, {"y", "28"}, {"font-size", "16"}, {"font-weight", "bold"}},
-          canvas ? "How cost grows with the canvas: large triangles, 256² and up"
-                 : "How cost grows with the triangles: tiny and mixed scenes");
-  element(svg, "text", {{"x", left}, {"y", "48"}}, escape_xml(subtitle));
-  element(svg, "text", {{"x", left}, {"y", "64"}, {"fill", "#555"}},
-          "y: median milliseconds per frame; dotted grey: time in proportion to x (slope 1)");
-  open_group(svg, {{"stroke", "#ddd"}});
-  for (int k = xd.low; k <= xd.high; ++k)
-    line(svg, x.position(std::pow(10.0, k)), top, x.position(std::pow(10.0, k)), bottom);
-  for (int k = yd.low; k <= yd.high; ++k)
-    line(svg, left, y.position(std::pow(10.0, k)), right, y.position(std::pow(10.0, k)));
-  close_group(svg);
-  line(svg, left, bottom, right, bottom, {{"stroke", "black"}});
-  line(svg, left, top, left, bottom, {{"stroke", "black"}});
-  open_group(svg, {{"text-anchor", "middle"}});
-  for (int k = xd.low; k <= xd.high; ++k) {
-    element(svg, "text", {{"x", x.position(std::pow(10.0, k))}, {"y", bottom + 16}},
-            power_of_ten_label(k));
-  }
-  element(svg, "text", {{"x", (left + right) / 2}, {"y", bottom + 38}, {"font-size", "13"}},
-          canvas ? "pixels of the canvas (log): 256² is 6.6·10⁴, 16384² is 2.7·10⁸"
-                 : "triangles per frame (log)");
-  close_group(svg);
-  open_group(svg, {{"text-anchor", "end"}});
-  for (int k = yd.low; k <= yd.high; ++k) {
-    element(svg, "text", {{"x", left - 6}, {"y", y.position(std::pow(10.0, k)) + 4}},
-            decade_label(k));
-  }
-  close_group(svg);
-  element(svg, "text",
-          {{"transform", "translate(" + svg_number(left - 58) + ' ' +
-                             svg_number((top + bottom) / 2) + ") rotate(-90)"},
-           {"text-anchor", "middle"},
-           {"font-size", "13"}},
-          "milliseconds per frame (log)");
+  open_plot(svg, width, height, left,
+            canvas ? "How cost grows with the canvas: large triangles, 256² and up"
+                   : "How cost grows with the triangles: tiny and mixed scenes",
+            subtitle,
+            "y: median milliseconds per frame; dotted grey: time in proportion to x (slope 1)");
+  log_grid_and_axes(svg, x, y, box);
+  x_decade_labels(svg, x, box,
+                  canvas ? "pixels of the canvas (log): 256² is 6.6·10⁴, 16384² is 2.7·10⁸"
+                         : "triangles per frame (log)");
+  y_decade_labels(svg, y, box, decade_label, "milliseconds per frame (log)");
 
   // One colour per drawer, one dash per scene; a line through each drawer's points of a scene.
   const std::vector<std::string> drawers = in_order(points, sweep, &ScalingPoint::drawer);
