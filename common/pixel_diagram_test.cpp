@@ -5,16 +5,13 @@
 
 #include <string>
 
+#include "tests/support/text.hpp"
+
 namespace {
 
 using tri::PixelDiagram;
+using tri::testing::occurrences;
 namespace dc = tri::diagram_colors;
-
-std::size_t occurrences(const std::string& text, const std::string& what) {
-  std::size_t count = 0;
-  for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++count;
-  return count;
-}
 
 }  // namespace
 

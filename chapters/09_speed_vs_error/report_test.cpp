@@ -22,9 +22,11 @@
 #include "measure/error_metrics.hpp"
 #include "measure/registry.hpp"
 #include "measure/render_scene.hpp"
+#include "tests/support/text.hpp"
 
 using tri::ch09::BenchReport;
 using tri::ch09::Measurement;
+using tri::testing::occurrences;
 
 namespace {
 
@@ -112,12 +114,6 @@ std::vector<std::string> fields_of(const std::string& line) {
   for (std::string field; std::getline(in, field, ',');) fields.push_back(field);
   if (!line.empty() && line.back() == ',') fields.emplace_back();
   return fields;
-}
-
-std::size_t count_of(const std::string& text, const std::string& part) {
-  std::size_t count = 0;
-  for (auto at = text.find(part); at != std::string::npos; at = text.find(part, at + 1)) ++count;
-  return count;
 }
 
 // Checks that every element is closed in order: "<a>" ... "</a>", or "<a/>". Returns the first
@@ -256,18 +252,18 @@ TEST_CASE("The Markdown report has the machine and a table row per algorithm",
   CHECK(run.report.reference_ceilings[0].one_thread.mpix_per_s() > 0);
   CHECK(md.find("| External peers | " + run.report.machine.external_peers + " |") !=
         std::string::npos);
-  CHECK(count_of(md, "| External peers |") == 1);  // one row each, in one table
-  CHECK(count_of(md, "| write ceiling, ") == 3);
+  CHECK(occurrences(md, "| External peers |") == 1);  // one row each, in one table
+  CHECK(occurrences(md, "| write ceiling, ") == 3);
   const auto names = measured_names();
   const auto lines = lines_of(md);
   const auto header = std::find_if(lines.begin(), lines.end(), [](const std::string& l) {
     return l.starts_with("| algorithm |");
   });
   REQUIRE(header != lines.end());
-  const std::size_t columns = count_of(*header, "|");
+  const std::size_t columns = occurrences(*header, "|");
   std::size_t rows = 0;
   for (auto it = header + 2; it != lines.end() && it->starts_with("| `"); ++it, ++rows) {
-    CHECK(count_of(*it, "|") == columns);
+    CHECK(occurrences(*it, "|") == columns);
     CHECK(it->find("`" + names[rows] + "`") != std::string::npos);
   }
   CHECK(rows == names.size());
@@ -279,15 +275,15 @@ TEST_CASE("The SVG is one balanced document with a circle per algorithm",
   const std::string& svg = tiny_run().files.svg;
   CHECK(svg.starts_with("<svg "));
   CHECK(unbalanced_tag(svg).empty());
-  CHECK(count_of(svg, "<svg") == 1);
-  CHECK(count_of(svg, "<circle ") == measured_names().size());
+  CHECK(occurrences(svg, "<svg") == 1);
+  CHECK(occurrences(svg, "<circle ") == measured_names().size());
   for (const std::string& name : measured_names()) {
     CAPTURE(name);
     CHECK((svg.find(">" + name + "</text>") != std::string::npos ||
            svg.find(">" + name + " (threads)</text>") != std::string::npos));
   }
   // fixed_point_0 and fixed_point_8 are one family: one line joins them.
-  CHECK(count_of(svg, "<polyline ") == 1);
+  CHECK(occurrences(svg, "<polyline ") == 1);
   CHECK(svg.find(">exact</text>") != std::string::npos);
   CHECK(svg.find("write ceiling (memset, vector stores), 1 thread: ") != std::string::npos);
 }
@@ -405,7 +401,7 @@ TEST_CASE("A threaded algorithm is labelled as such and gets its own ceiling lin
   summaries[0].threaded = true;
   const std::string svg = tri::ch09::to_svg(report, summaries);
   CHECK(unbalanced_tag(svg).empty());
-  CHECK(count_of(svg, "<circle ") == summaries.size());
+  CHECK(occurrences(svg, "<circle ") == summaries.size());
   CHECK(svg.find(">" + summaries[0].algorithm + " (threads)</text>") != std::string::npos);
   CHECK(svg.find("write ceiling (memset, vector stores), 1 thread: 100 Mpix/s") !=
         std::string::npos);
@@ -482,8 +478,8 @@ TEST_CASE("The coverage section and plot show every summary, the grids' slope an
   const std::string& svg = tiny_run().files.coverage_svg;
   CHECK(unbalanced_tag(svg).empty());
   // One circle per algorithm and four in the legend; the grid and standard curves and the guide.
-  CHECK(count_of(svg, "<circle ") == summaries.size() + 4);
-  CHECK(count_of(svg, "<polyline ") == 3);
+  CHECK(occurrences(svg, "<circle ") == summaries.size() + 4);
+  CHECK(occurrences(svg, "<polyline ") == 3);
   CHECK(svg.find("error ∝ 1/n, cost ∝ n² (guide)") != std::string::npos);
   CHECK(tri::ch09::coverage_markdown({}, {}, "none").empty());
 }
@@ -497,5 +493,5 @@ TEST_CASE("Every line of the coverage CSV has as many fields as its header, peer
   }
   const auto lines = lines_of(tiny_run().files.coverage_csv);
   REQUIRE(lines.size() > 1);
-  for (const std::string& line : lines) CHECK(count_of(line, ",") == count_of(lines[0], ","));
+  for (const std::string& line : lines) CHECK(occurrences(line, ",") == occurrences(lines[0], ","));
 }

@@ -11,7 +11,9 @@
 #include "chapters/09_speed_vs_error/scaling.hpp"
 #include "chapters/09_speed_vs_error/scaling_report.hpp"
 #include "measure/registry.hpp"
+#include "tests/support/text.hpp"
 
+using tri::testing::occurrences;
 using namespace tri::ch09;
 
 namespace {
@@ -42,12 +44,6 @@ ScalingPoint point(std::string sweep, std::string drawer, std::string scene, int
   p.measured = seconds > 0;
   p.timing.seconds = {seconds, seconds, seconds};
   return p;
-}
-
-std::size_t occurrences(const std::string& text, const std::string& what) {
-  std::size_t n = 0;
-  for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
-  return n;
 }
 
 }  // namespace
@@ -236,7 +232,7 @@ TEST_CASE("The sweeps' CSV, table and plots show every point, and why one was no
   CHECK_THAT(md, Catch::Contains(" – |"));
   CHECK_THAT(md, Catch::Contains("not measured, refused, with a comma"));
   CHECK_THAT(md, Catch::Contains("`a` tiny k = 3.1"));  // 1 ms to 1239 ms for 10 times more
-  CHECK_THAT(md, Catch::Contains("`a` k = 1."));       // 4 times the pixels, 4 times the time
+  CHECK_THAT(md, Catch::Contains("`a` k = 1."));        // 4 times the pixels, 4 times the time
   CHECK(scaling_markdown({}).empty());
 
   const std::string triangles = scaling_svg(points, "triangles", "a subtitle");
