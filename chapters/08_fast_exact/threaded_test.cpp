@@ -10,30 +10,8 @@
 using tri::Canvas;
 using tri::SceneTriangle;
 
-namespace {
-
-// Overlapping triangles of every shape in many colours: a later one paints over earlier ones, so
-// any change of order shows in the colours.
-std::vector<SceneTriangle> overlapping_scene(std::uint64_t seed, int count, int size) {
-  tri::testing::Random random(seed);
-  std::vector<SceneTriangle> scene;
-  for (int i = 0; i < count; ++i) {
-    scene.push_back(
-        {tri::ch08::testing::random_triangle(random, tri::ch08::testing::shape_number(i), size),
-         tri::Color{static_cast<std::uint8_t>(random.integer(0, 255)),
-                    static_cast<std::uint8_t>(random.integer(0, 255)),
-                    static_cast<std::uint8_t>(i % 256), 255}});
-  }
-  return scene;
-}
-
-bool same_canvas(const Canvas& a, const Canvas& b) {
-  return std::equal(a.pixels().begin(), a.pixels().end(), b.pixels().begin(), b.pixels().end()) &&
-         std::equal(a.write_counts().begin(), a.write_counts().end(), b.write_counts().begin(),
-                    b.write_counts().end());
-}
-
-}  // namespace
+using tri::ch08::testing::overlapping_scene;
+using tri::ch08::testing::same_canvas;
 
 TEST_CASE("bands are 16 to 64 rows, about four per thread, dealt to the threads in turn",
           "[08_fast_exact][step7]") {
