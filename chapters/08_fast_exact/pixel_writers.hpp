@@ -12,8 +12,10 @@
 #include <cstdint>
 #include <cstring>
 
+#include "chapters/08_fast_exact/triangle_setup.hpp"
 #include "common/canvas.hpp"
 #include "common/color.hpp"
+#include "common/triangle_algorithm.hpp"
 
 namespace tri::ch08 {
 
@@ -127,6 +129,15 @@ void with_writer(Canvas& canvas, Color color, Draw&& draw) {
     RowWriter writer(canvas, color);
     draw(writer);
   }
+}
+
+/// The single-triangle entry of a traversal: the setup, then fill(setup, writer) with the writer
+/// that suits the canvas. Nothing is drawn when the setup is empty.
+template <class Fill>
+void set_up_and_fill(Canvas& canvas, const Triangle& triangle, Color color, Fill&& fill) {
+  const auto setup = setup_triangle(triangle, canvas.width(), canvas.height());
+  if (!setup) return;
+  with_writer(canvas, color, [&](auto& writer) { fill(*setup, writer); });
 }
 
 }  // namespace tri::ch08

@@ -199,9 +199,8 @@ template void fill_simd(const TriangleSetup&, RowWriter&);
 template void fill_simd(const TriangleSetup&, CountingWriter&);
 
 void draw_triangle_simd(Canvas& canvas, const Triangle& triangle, Color color) {
-  const auto setup = setup_triangle(triangle, canvas.width(), canvas.height());
-  if (!setup) return;
-  with_writer(canvas, color, [&](auto& writer) { fill_simd(*setup, writer); });
+  set_up_and_fill(canvas, triangle, color,
+                  [](const TriangleSetup& setup, auto& writer) { fill_simd(setup, writer); });
 }
 
 }  // namespace tri::ch08

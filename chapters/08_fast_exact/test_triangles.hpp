@@ -119,6 +119,15 @@ inline std::vector<SceneTriangle> overlapping_scene(std::uint64_t seed, int coun
   return scene;
 }
 
+/// A fresh width x height canvas, counting writes when asked, after draw(canvas).
+template <class Draw>
+Canvas drawn_on(int width, int height, bool counting, Draw&& draw) {
+  Canvas canvas(width, height);
+  if (counting) canvas.enable_write_counts();
+  draw(canvas);
+  return canvas;
+}
+
 /// Whether two canvases hold the same colours and the same write counts.
 inline bool same_canvas(const Canvas& a, const Canvas& b) {
   return std::equal(a.pixels().begin(), a.pixels().end(), b.pixels().begin(), b.pixels().end()) &&

@@ -10,6 +10,7 @@
 using tri::Canvas;
 using tri::SceneTriangle;
 
+using tri::ch08::testing::drawn_on;
 using tri::ch08::testing::overlapping_scene;
 using tri::ch08::testing::same_canvas;
 
@@ -36,21 +37,21 @@ TEST_CASE("The threaded batch equals the serial one pixel for pixel, colours and
   for (const auto& [width, height] : {std::pair{50, 45}, std::pair{64, 64}, std::pair{13, 100}}) {
     const auto scene = overlapping_scene(static_cast<std::uint64_t>(width * height), 400, 48);
     for (const bool counting : {true, false}) {
-      Canvas serial(width, height);
-      if (counting) serial.enable_write_counts();
-      tri::ch08::draw_batch_hybrid(serial, scene);
+      const Canvas serial = drawn_on(width, height, counting, [&](Canvas& canvas) {
+        tri::ch08::draw_batch_hybrid(canvas, scene);
+      });
       for (const int threads : {1, 2, 3, 4, 7, 100}) {
         INFO(width << "x" << height << ", " << threads << " threads, counting " << counting);
-        Canvas threaded(width, height);
-        if (counting) threaded.enable_write_counts();
-        tri::ch08::draw_batch_on_threads(threaded, scene, threads);
+        const Canvas threaded = drawn_on(width, height, counting, [&](Canvas& canvas) {
+          tri::ch08::draw_batch_on_threads(canvas, scene, threads);
+        });
         CHECK(threaded.outside_writes() == 0);
         CHECK(same_canvas(threaded, serial));
       }
-      Canvas hardware(width, height);
-      if (counting) hardware.enable_write_counts();
-      tri::ch08::draw_batch_threaded(hardware, scene);
-      CHECK(same_canvas(hardware, serial));
+      CHECK(same_canvas(
+          drawn_on(width, height, counting,
+                   [&](Canvas& canvas) { tri::ch08::draw_batch_threaded(canvas, scene); }),
+          serial));
     }
   }
 }

@@ -12,6 +12,7 @@
 using tri::Canvas;
 using tri::SceneTriangle;
 using tri::ch08::TileBins;
+using tri::ch08::testing::drawn_on;
 using tri::ch08::testing::overlapping_scene;
 using tri::ch08::testing::same_canvas;
 
@@ -20,10 +21,9 @@ namespace {
 // The scene drawn one triangle after the other by chapter 07's oracle.
 Canvas oracle_canvas(int width, int height, const std::vector<SceneTriangle>& scene,
                      bool counting) {
-  Canvas canvas(width, height);
-  if (counting) canvas.enable_write_counts();
-  for (const auto& t : scene) tri::ch07::draw_triangle_oracle(canvas, t.vertices, t.color);
-  return canvas;
+  return drawn_on(width, height, counting, [&](Canvas& canvas) {
+    for (const auto& t : scene) tri::ch07::draw_triangle_oracle(canvas, t.vertices, t.color);
+  });
 }
 
 // Triangles around the tile corner (512, 64) of a 600 x 128 canvas (tiles of 512 x 16): edges
@@ -141,22 +141,22 @@ TEST_CASE("The tiled batch equals the oracle and the serial batch, colours and w
     const auto scene = overlapping_scene(static_cast<std::uint64_t>(width * height), 600, size);
     for (const bool counting : {true, false}) {
       const Canvas truth = oracle_canvas(width, height, scene, counting);
-      Canvas serial(width, height);
-      if (counting) serial.enable_write_counts();
-      tri::ch08::draw_batch_hybrid(serial, scene);
-      REQUIRE(same_canvas(serial, truth));
+      REQUIRE(same_canvas(
+          drawn_on(width, height, counting,
+                   [&](Canvas& canvas) { tri::ch08::draw_batch_hybrid(canvas, scene); }),
+          truth));
       for (const int threads : {1, 2, 3, 7}) {
         INFO(width << "x" << height << ", " << threads << " threads, counting " << counting);
-        Canvas tiled(width, height);
-        if (counting) tiled.enable_write_counts();
-        tri::ch08::draw_batch_tiled_on_threads(tiled, scene, threads, bins);
+        const Canvas tiled = drawn_on(width, height, counting, [&](Canvas& canvas) {
+          tri::ch08::draw_batch_tiled_on_threads(canvas, scene, threads, bins);
+        });
         CHECK(tiled.outside_writes() == 0);
         CHECK(same_canvas(tiled, truth));
       }
-      Canvas hardware(width, height);
-      if (counting) hardware.enable_write_counts();
-      tri::ch08::draw_batch_tiled(hardware, scene);
-      CHECK(same_canvas(hardware, truth));
+      CHECK(
+          same_canvas(drawn_on(width, height, counting,
+                               [&](Canvas& canvas) { tri::ch08::draw_batch_tiled(canvas, scene); }),
+                      truth));
     }
   }
 }
@@ -169,10 +169,12 @@ TEST_CASE("Triangles with edges and vertices on tile seams are drawn as the orac
     const Canvas truth = oracle_canvas(600, 128, scene, counting);
     for (const int threads : {1, 2, 4}) {
       INFO(threads << " threads, counting " << counting);
-      Canvas tiled(600, 128);
-      if (counting) tiled.enable_write_counts();
-      tri::ch08::draw_batch_tiled_on_threads(tiled, scene, threads, bins);
-      CHECK(same_canvas(tiled, truth));
+      CHECK(same_canvas(drawn_on(600, 128, counting,
+                                 [&](Canvas& canvas) {
+                                   tri::ch08::draw_batch_tiled_on_threads(canvas, scene, threads,
+                                                                          bins);
+                                 }),
+                        truth));
     }
   }
 }
