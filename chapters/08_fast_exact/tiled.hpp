@@ -49,8 +49,9 @@ ch05::PixelBox pixels_around(const Triangle& triangle, int width, int height) no
 /// within one tile is listed by its index and set up when the tile is drawn; a larger one is set
 /// up once while binning, listed only in the tiles its edges do not exclude, and clipped to each.
 ///
-/// Keep one TileBins across frames and its storage is reused: allocation happens in start()
-/// when a batch needs more than any before it, never per triangle or per pixel.
+/// Keep one TileBins across frames and its storage is reused: it allocates only when a batch
+/// needs more than any before it (in start(), and for a chunk's list of entries once that
+/// chunk is counted), never per triangle or per pixel.
 class TileBins {
  public:
   /// Prepares the bins for `triangles` (kept by reference until the last draw_tile) on a
@@ -61,7 +62,8 @@ class TileBins {
   int chunks() const noexcept { return chunk_count_; }
   const TileGrid& grid() const noexcept { return grid_; }
 
-  /// Bins the triangles of chunk `chunk`. Threads may bin different chunks at once.
+  /// Bins the triangles of chunk `chunk`. Threads may bin different chunks at once. Ends the
+  /// program if the chunk's entries cannot be allocated (a thread has no one to throw to).
   void bin_chunk(int chunk) noexcept;
 
   /// The triangles listed in tile `tile`, in the order draw_tile draws them.
