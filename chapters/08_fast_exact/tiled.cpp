@@ -22,24 +22,6 @@ constexpr std::uint32_t shared_bit = std::uint32_t{1} << 31;
 
 }  // namespace
 
-// [listing pixels_around]
-ch05::PixelBox pixels_around(const Triangle& t, int width, int height) noexcept {
-  // Snapping moves a vertex by at most 1/512 pixel: half a pixel of margin holds every centre
-  // the snapped triangle's candidate pixels can reach. Clamped before converting, so a vertex
-  // at ±2^30 converts safely; a box that misses the canvas comes out empty.
-  const auto low = [](double a, double b, double c) { return std::min({a, b, c}) - 0.5; };
-  const auto high = [](double a, double b, double c) { return std::max({a, b, c}) + 0.5; };
-  const double x0 = low(t[0].x, t[1].x, t[2].x), x1 = high(t[0].x, t[1].x, t[2].x);
-  const double y0 = low(t[0].y, t[1].y, t[2].y), y1 = high(t[0].y, t[1].y, t[2].y);
-  if (x1 < 0 || y1 < 0 || x0 > width - 1 || y0 > height - 1) return {{1, 0}, {0, 0}};
-  const auto clamped = [](double v, int last) {
-    return static_cast<int>(std::clamp(v, 0.0, static_cast<double>(last)));  // floor for v >= 0
-  };
-  return {{clamped(x0, width - 1), clamped(y0, height - 1)},
-          {clamped(x1, width - 1), clamped(y1, height - 1)}};
-}
-// [/listing]
-
 ch05::PixelBox TileGrid::tile(int index, int width, int height) const noexcept {
   const int x = (index % columns) << width_bits, y = (index / columns) << height_bits;
   return {{x, y}, {std::min(x + tile_width(), width) - 1, std::min(y + tile_height(), height) - 1}};

@@ -4,6 +4,7 @@
 /// tiles handed out one at a time, so the picture is the serial one pixel for pixel.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -38,10 +39,26 @@ struct TileGrid {
 /// restarts its spans and splits each row's span (the README measures narrower tiles).
 TileGrid tile_grid_for(int width, int height) noexcept;
 
+// [listing pixels_around]
 /// A box of pixels that holds every candidate pixel of the triangle once snapped (chapter 07's
 /// candidate_pixels), found in doubles without snapping: what binning needs of a small triangle.
 /// Empty when the triangle is clearly off the canvas.
-ch05::PixelBox pixels_around(const Triangle& triangle, int width, int height) noexcept;
+inline ch05::PixelBox pixels_around(const Triangle& t, int width, int height) noexcept {
+  // Snapping moves a vertex by at most 1/512 pixel: half a pixel of margin holds every centre
+  // the snapped triangle's candidate pixels can reach. Clamped before converting, so a vertex
+  // at ±2^30 converts safely; a box that misses the canvas comes out empty.
+  const auto low = [](double a, double b, double c) { return std::min(a, std::min(b, c)) - 0.5; };
+  const auto high = [](double a, double b, double c) { return std::max(a, std::max(b, c)) + 0.5; };
+  const double x0 = low(t[0].x, t[1].x, t[2].x), x1 = high(t[0].x, t[1].x, t[2].x);
+  const double y0 = low(t[0].y, t[1].y, t[2].y), y1 = high(t[0].y, t[1].y, t[2].y);
+  if (x1 < 0 || y1 < 0 || x0 > width - 1 || y0 > height - 1) return {{1, 0}, {0, 0}};
+  const auto clamped = [](double v, int last) {
+    return static_cast<int>(std::clamp(v, 0.0, static_cast<double>(last)));  // floor for v >= 0
+  };
+  return {{clamped(x0, width - 1), clamped(y0, height - 1)},
+          {clamped(x1, width - 1), clamped(y1, height - 1)}};
+}
+// [/listing]
 
 /// A batch binned into tiles. Built in chunks of triangles, which threads may bin at the same
 /// time (one chunk each); each chunk lists, per tile, the entries of its triangles that touch the
