@@ -396,20 +396,22 @@ void threaded_probe(const BenchScene& scene, Canvas& canvas, const TimingPlan& p
       << whole / std::max(first, second) << "\n";
 }
 
-// fast_tiled_threaded on a scene with two threads against one: the same code and the same bins,
-// timed against each other in rounds. Beside the wall clock, the process's CPU time per draw:
-// another process taking a core does not inflate it, so two threads together near the CPU time
-// of one means the work was split without adding any, whatever the wall clock saw.
+// fast_tiled_threaded on a scene with two threads against one: a TiledRenderer of each, kept
+// for every draw (threads and bins made once), timed against each other in rounds. Beside the wall
+// clock, the process's CPU time per draw: another process taking a core does not inflate it, so two
+// threads together near the CPU time of one means the work was split without adding any, whatever
+// the wall clock saw.
 void tiled_probe(const BenchScene& scene, const TimingPlan& plan, std::ostream& out) {
   Canvas canvas(scene.side, scene.side);
-  tri::ch08::TileBins bins;
+  std::array<tri::ch08::TiledRenderer, 2> renderers{tri::ch08::TiledRenderer(1),
+                                                    tri::ch08::TiledRenderer(2)};
   std::array<std::vector<double>, 2> cpu;
   const auto on_threads = [&](int threads) {
-    return [&canvas, &scene, &bins, &cpu, threads] {
+    return [&canvas, &scene, &renderers, &cpu, threads] {
+      const auto k = static_cast<std::size_t>(threads - 1);
       const std::clock_t start = std::clock();
-      tri::ch08::draw_batch_tiled_on_threads(canvas, scene.triangles, threads, bins);
-      cpu[static_cast<std::size_t>(threads - 1)].push_back(
-          static_cast<double>(std::clock() - start) / CLOCKS_PER_SEC);
+      renderers[k].draw(canvas, scene.triangles);
+      cpu[k].push_back(static_cast<double>(std::clock() - start) / CLOCKS_PER_SEC);
     };
   };
   const std::vector<std::function<void()>> runs{on_threads(1), on_threads(2)};

@@ -188,39 +188,68 @@ void TileBins::draw_tile(Canvas& canvas, int tile) const noexcept {
   }
 }
 
-// [listing draw_batch_tiled_on_threads]
-void draw_batch_tiled_on_threads(Canvas& canvas, std::span<const SceneTriangle> triangles,
-                                 int threads, TileBins& bins) {
-  bins.start(triangles, canvas.width(), canvas.height());
-  const int chunks = bins.chunks(), tiles = bins.grid().count();
-  std::atomic<int> next_chunk{0}, binned{0}, next_tile{0};
-  const auto work = [&] {
-    for (int c = next_chunk.fetch_add(1); c < chunks; c = next_chunk.fetch_add(1)) {
-      bins.bin_chunk(c);
-      if (binned.fetch_add(1) + 1 == chunks) binned.notify_all();
-    }
-    // A tile needs every chunk: wait for the chunks other threads are still binning.
-    for (int done = binned.load(); done < chunks; done = binned.load()) binned.wait(done);
-    for (int tile = next_tile.fetch_add(1); tile < tiles; tile = next_tile.fetch_add(1))
-      bins.draw_tile(canvas, tile);
-  };
-  threads = std::clamp(threads, 1, tiles);
-  std::vector<std::jthread> workers;
-  workers.reserve(static_cast<std::size_t>(threads - 1));
+TiledRenderer::TiledRenderer(int threads) {
+  helpers_.reserve(static_cast<std::size_t>(std::max(threads - 1, 0)));
   try {
-    while (static_cast<int>(workers.size()) < threads - 1) workers.emplace_back(work);
+    while (static_cast<int>(helpers_.size()) < threads - 1) {
+      helpers_.emplace_back([this] { help(); });
+    }
   } catch (const std::system_error&) {
     // No more threads to be had: the ones running take all the chunks and tiles.
   }
+}
+
+TiledRenderer::~TiledRenderer() {
+  stopping_ = true;
+  batches_.fetch_add(1);
+  batches_.notify_all();
+  // Each std::jthread of helpers_ joins as the member is destroyed, before the others.
+}
+
+// [listing tiled_work]
+void TiledRenderer::work() noexcept {
+  const int chunks = bins_.chunks(), tiles = bins_.grid().count();
+  for (int c = next_chunk_.fetch_add(1); c < chunks; c = next_chunk_.fetch_add(1)) {
+    bins_.bin_chunk(c);
+    if (binned_.fetch_add(1) + 1 == chunks) binned_.notify_all();
+  }
+  // A tile needs every chunk: wait for the chunks other threads are still binning.
+  for (int done = binned_.load(); done < chunks; done = binned_.load()) binned_.wait(done);
+  for (int tile = next_tile_.fetch_add(1); tile < tiles; tile = next_tile_.fetch_add(1))
+    bins_.draw_tile(*canvas_, tile);
+}
+
+void TiledRenderer::draw(Canvas& canvas, std::span<const SceneTriangle> triangles) {
+  bins_.start(triangles, canvas.width(), canvas.height());
+  canvas_ = &canvas;
+  next_chunk_ = 0;
+  binned_ = 0;
+  next_tile_ = 0;
+  inside_.fetch_and(~closed);  // open the batch to the helpers, and wake them
+  batches_.fetch_add(1);
+  batches_.notify_all();
   work();
-  // Each std::jthread joins when `workers` goes out of scope, before the atomics above.
+  // Close it, then wait for every helper that joined to leave: none reads the batch after.
+  inside_.fetch_or(closed);
+  for (int now = inside_.load(); now != closed; now = inside_.load()) inside_.wait(now);
+}
+
+void TiledRenderer::help() noexcept {
+  for (unsigned seen = 0;;) {
+    batches_.wait(seen);
+    seen = batches_.load();
+    if (stopping_) return;
+    // Joining counts this helper in; a batch already closed is left alone (a late wake-up).
+    if (!(inside_.fetch_add(1) & closed)) work();
+    inside_.fetch_sub(1);
+    inside_.notify_all();
+  }
 }
 // [/listing]
 
 void draw_batch_tiled(Canvas& canvas, std::span<const SceneTriangle> triangles) {
-  TileBins bins;
-  draw_batch_tiled_on_threads(
-      canvas, triangles, static_cast<int>(std::max(1u, std::thread::hardware_concurrency())), bins);
+  TiledRenderer renderer(static_cast<int>(std::max(1u, std::thread::hardware_concurrency())));
+  renderer.draw(canvas, triangles);
 }
 
 }  // namespace tri::ch08

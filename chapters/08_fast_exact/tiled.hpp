@@ -5,8 +5,10 @@
 #pragma once
 
 #include <algorithm>
+#include <atomic>
 #include <cstdint>
 #include <span>
+#include <thread>
 #include <vector>
 
 #include "chapters/05_edge_function/bounding_box.hpp"
@@ -126,16 +128,43 @@ class TileBins {
   std::vector<Chunk> chunk_storage_;
 };
 
-/// Draws the batch with `threads` threads (at least 1; the calling thread is one of them, the
-/// others are created here and joined before returning), reusing `bins`. The threads first take
-/// chunks to bin, then, once every chunk is binned, tiles to draw, each from a shared counter: a
-/// thread that starts late or is slowed down simply takes fewer. If a thread cannot be started,
-/// the others do its share.
-void draw_batch_tiled_on_threads(Canvas& canvas, std::span<const SceneTriangle> triangles,
-                                 int threads, TileBins& bins);
+/// Step 9 · threads over tiles that last from batch to batch: the calling thread and
+/// `threads` - 1 helpers, started by the constructor and joined by the destructor, which wait
+/// for the next batch in between, and one TileBins reused by every batch.
+///
+/// For each batch the threads first take chunks to bin, then, once every chunk is binned, tiles
+/// to draw, each from a shared counter. No chunk or tile belongs to a thread in advance, so a
+/// helper that wakes late or is slowed down simply takes fewer; draw() returns once every helper
+/// that took part has left. If a helper cannot be started, the others do its share.
+class TiledRenderer {
+ public:
+  explicit TiledRenderer(int threads);
+  ~TiledRenderer();
+  TiledRenderer(const TiledRenderer&) = delete;
+  TiledRenderer& operator=(const TiledRenderer&) = delete;
 
-/// Step 9 · the registered batch entry: std::thread::hardware_concurrency() threads, with bins
-/// made for this batch.
+  /// Draws the batch as if one triangle after the other. One batch at a time: draw() is not to
+  /// be called from two threads at once.
+  void draw(Canvas& canvas, std::span<const SceneTriangle> triangles);
+
+ private:
+  void work() noexcept;  // one thread's part of the current batch
+  void help() noexcept;  // a helper's life: wait for a batch, take part, wait again
+
+  // In `inside_` (helpers in the current batch): set while no batch is open to join.
+  static constexpr int closed = 1 << 30;
+
+  TileBins bins_;
+  Canvas* canvas_ = nullptr;
+  std::atomic<int> next_chunk_{0}, binned_{0}, next_tile_{0};
+  std::atomic<unsigned> batches_{0};  // batches begun: the helpers wait for it to change
+  std::atomic<int> inside_{closed};
+  std::atomic<bool> stopping_{false};
+  std::vector<std::jthread> helpers_;  // the last member: joined before the others go
+};
+
+/// Step 9 · the registered batch entry: a TiledRenderer of std::thread::hardware_concurrency()
+/// threads for this batch (its threads and bins made and released here).
 void draw_batch_tiled(Canvas& canvas, std::span<const SceneTriangle> triangles);
 
 }  // namespace tri::ch08

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "chapters/07_exact_coverage/coverage_oracle.hpp"
@@ -131,9 +132,11 @@ TEST_CASE("Every tile lists, in submission order, each triangle that covers one 
 TEST_CASE("The tiled batch equals the oracle and the serial batch, colours and write counts",
           "[08_fast_exact][step9]") {
   // Overlapping colours across tile borders, every shape of triangle, canvases of one pixel to
-  // three tiles a side whose sides are not multiples of 64; one to seven threads and one set of
-  // bins reused for every frame.
-  TileBins bins;
+  // three tiles wide whose sides are not multiples of the tile's; one to seven threads, each
+  // renderer (its threads and bins) reused for every frame.
+  std::vector<std::unique_ptr<tri::ch08::TiledRenderer>> renderers;
+  for (const int threads : {1, 2, 3, 7})
+    renderers.push_back(std::make_unique<tri::ch08::TiledRenderer>(threads));
   for (const auto& [width, height] :
        {std::pair{150, 140}, std::pair{1100, 70}, std::pair{530, 40}, std::pair{129, 64},
         std::pair{1, 1}, std::pair{3, 5}, std::pair{8, 8}, std::pair{65, 13}, std::pair{13, 200}}) {
@@ -145,11 +148,10 @@ TEST_CASE("The tiled batch equals the oracle and the serial batch, colours and w
           drawn_on(width, height, counting,
                    [&](Canvas& canvas) { tri::ch08::draw_batch_hybrid(canvas, scene); }),
           truth));
-      for (const int threads : {1, 2, 3, 7}) {
-        INFO(width << "x" << height << ", " << threads << " threads, counting " << counting);
-        const Canvas tiled = drawn_on(width, height, counting, [&](Canvas& canvas) {
-          tri::ch08::draw_batch_tiled_on_threads(canvas, scene, threads, bins);
-        });
+      for (std::size_t r = 0; r < renderers.size(); ++r) {
+        INFO(width << "x" << height << ", renderer " << r << ", counting " << counting);
+        const Canvas tiled = drawn_on(width, height, counting,
+                                      [&](Canvas& canvas) { renderers[r]->draw(canvas, scene); });
         CHECK(tiled.outside_writes() == 0);
         CHECK(same_canvas(tiled, truth));
       }
@@ -164,17 +166,32 @@ TEST_CASE("The tiled batch equals the oracle and the serial batch, colours and w
 TEST_CASE("Triangles with edges and vertices on tile seams are drawn as the oracle draws them",
           "[08_fast_exact][step9]") {
   const auto scene = seam_scene();
-  TileBins bins;
   for (const bool counting : {true, false}) {
     const Canvas truth = oracle_canvas(600, 128, scene, counting);
     for (const int threads : {1, 2, 4}) {
       INFO(threads << " threads, counting " << counting);
-      CHECK(same_canvas(drawn_on(600, 128, counting,
-                                 [&](Canvas& canvas) {
-                                   tri::ch08::draw_batch_tiled_on_threads(canvas, scene, threads,
-                                                                          bins);
-                                 }),
-                        truth));
+      tri::ch08::TiledRenderer renderer(threads);
+      CHECK(same_canvas(
+          drawn_on(600, 128, counting, [&](Canvas& canvas) { renderer.draw(canvas, scene); }),
+          truth));
+    }
+  }
+}
+
+TEST_CASE("A renderer's threads wait between batches and stop when it goes",
+          "[08_fast_exact][step9]") {
+  // Batches of every size in turn, empty ones included, through renderers made and dropped.
+  const auto scene = overlapping_scene(23, 300, 100);
+  const Canvas truth = oracle_canvas(100, 90, scene, true);
+  for (int round = 0; round < 20; ++round) {
+    tri::ch08::TiledRenderer renderer(1 + round % 4);
+    for (const std::size_t count : {std::size_t{0}, std::size_t{1}, scene.size()}) {
+      const std::vector<SceneTriangle> part(scene.begin(),
+                                            scene.begin() + static_cast<std::ptrdiff_t>(count));
+      const Canvas drawn =
+          drawn_on(100, 90, true, [&](Canvas& canvas) { renderer.draw(canvas, part); });
+      if (count == scene.size()) CHECK(same_canvas(drawn, truth));
+      if (count == 0) CHECK(tri::testing::written_pixels(drawn).empty());
     }
   }
 }
