@@ -219,12 +219,16 @@ void TiledRenderer::work() noexcept {
     bins_.draw_tile(*canvas_, tile);
 }
 
-void TiledRenderer::draw(Canvas& canvas, std::span<const SceneTriangle> triangles) {
+void TiledRenderer::open(Canvas& canvas, std::span<const SceneTriangle> triangles) {
   bins_.start(triangles, canvas.width(), canvas.height());
   canvas_ = &canvas;
   next_chunk_ = 0;
   binned_ = 0;
   next_tile_ = 0;
+}
+
+void TiledRenderer::draw(Canvas& canvas, std::span<const SceneTriangle> triangles) {
+  open(canvas, triangles);
   inside_.fetch_and(~closed);  // open the batch to the helpers, and wake them
   batches_.fetch_add(1);
   batches_.notify_all();
@@ -247,9 +251,26 @@ void TiledRenderer::help() noexcept {
 }
 // [/listing]
 
+void TiledRenderer::draw_once(Canvas& canvas, std::span<const SceneTriangle> triangles,
+                              int threads) {
+  TiledRenderer batch(1);  // no helpers of its own
+  batch.open(canvas, triangles);
+  std::vector<std::jthread> workers;
+  workers.reserve(static_cast<std::size_t>(std::max(threads - 1, 0)));
+  try {
+    while (static_cast<int>(workers.size()) < threads - 1) {
+      workers.emplace_back([&batch] { batch.work(); });
+    }
+  } catch (const std::system_error&) {
+    // No more threads to be had: the ones running take all the chunks and tiles.
+  }
+  batch.work();
+  // Each std::jthread joins when `workers` goes out of scope, before `batch`.
+}
+
 void draw_batch_tiled(Canvas& canvas, std::span<const SceneTriangle> triangles) {
-  TiledRenderer renderer(static_cast<int>(std::max(1u, std::thread::hardware_concurrency())));
-  renderer.draw(canvas, triangles);
+  TiledRenderer::draw_once(canvas, triangles,
+                           static_cast<int>(std::max(1u, std::thread::hardware_concurrency())));
 }
 
 }  // namespace tri::ch08

@@ -147,7 +147,12 @@ class TiledRenderer {
   /// be called from two threads at once.
   void draw(Canvas& canvas, std::span<const SceneTriangle> triangles);
 
+  /// The same for a single batch with `threads` threads started for it, which take part from
+  /// their first instruction and are joined before returning: no helper sleeps and wakes.
+  static void draw_once(Canvas& canvas, std::span<const SceneTriangle> triangles, int threads);
+
  private:
+  void open(Canvas& canvas, std::span<const SceneTriangle> triangles);  // bins and counters
   void work() noexcept;  // one thread's part of the current batch
   void help() noexcept;  // a helper's life: wait for a batch, take part, wait again
 
@@ -163,8 +168,8 @@ class TiledRenderer {
   std::vector<std::jthread> helpers_;  // the last member: joined before the others go
 };
 
-/// Step 9 · the registered batch entry: a TiledRenderer of std::thread::hardware_concurrency()
-/// threads for this batch (its threads and bins made and released here).
+/// Step 9 · the registered batch entry: TiledRenderer::draw_once with
+/// std::thread::hardware_concurrency() threads (its threads and bins made and released here).
 void draw_batch_tiled(Canvas& canvas, std::span<const SceneTriangle> triangles);
 
 }  // namespace tri::ch08

@@ -159,6 +159,14 @@ TEST_CASE("The tiled batch equals the oracle and the serial batch, colours and w
           same_canvas(drawn_on(width, height, counting,
                                [&](Canvas& canvas) { tri::ch08::draw_batch_tiled(canvas, scene); }),
                       truth));
+      for (const int threads : {1, 2, 5}) {
+        INFO(width << "x" << height << ", draw_once with " << threads << " threads");
+        CHECK(same_canvas(drawn_on(width, height, counting,
+                                   [&](Canvas& canvas) {
+                                     tri::ch08::TiledRenderer::draw_once(canvas, scene, threads);
+                                   }),
+                          truth));
+      }
     }
   }
 }
