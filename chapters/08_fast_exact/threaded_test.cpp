@@ -59,15 +59,14 @@ TEST_CASE("The threaded batch equals the serial one pixel for pixel, colours and
 TEST_CASE("Each thread writes only the rows of its own bands, and together they write all",
           "[08_fast_exact][step7]") {
   const auto scene = overlapping_scene(9, 300, 60);
-  Canvas serial(60, 70);
-  serial.enable_write_counts();
-  tri::ch08::draw_batch_hybrid(serial, scene);
+  const Canvas serial =
+      drawn_on(60, 70, true, [&](Canvas& canvas) { tri::ch08::draw_batch_hybrid(canvas, scene); });
   for (const int threads : {2, 3}) {
     std::vector<std::uint32_t> total(serial.write_counts().size(), 0);
     for (int thread = 0; thread < threads; ++thread) {
-      Canvas part(60, 70);
-      part.enable_write_counts();
-      tri::ch08::draw_bands_of_thread(part, scene, thread, threads);
+      const Canvas part = drawn_on(60, 70, true, [&](Canvas& canvas) {
+        tri::ch08::draw_bands_of_thread(canvas, scene, thread, threads);
+      });
       for (int y = 0; y < 70; ++y) {
         for (int x = 0; x < 60; ++x) {
           if (part.write_count(x, y) > 0) {

@@ -207,18 +207,16 @@ TEST_CASE("A renderer's threads wait between batches and stop when it goes",
 TEST_CASE("Each tile draws only its own pixels, and the tiles together draw the whole batch",
           "[08_fast_exact][step9]") {
   const auto scene = overlapping_scene(17, 400, 700);
-  Canvas serial(700, 130);
-  serial.enable_write_counts();
-  tri::ch08::draw_batch_hybrid(serial, scene);
+  const Canvas serial = drawn_on(
+      700, 130, true, [&](Canvas& canvas) { tri::ch08::draw_batch_hybrid(canvas, scene); });
   TileBins bins;
   bins.start(scene, 700, 130);
   for (int chunk = 0; chunk < bins.chunks(); ++chunk) bins.bin_chunk(chunk);
   Canvas together(700, 130);
   together.enable_write_counts();
   for (int tile = 0; tile < bins.grid().count(); ++tile) {
-    Canvas alone(700, 130);
-    alone.enable_write_counts();
-    bins.draw_tile(alone, tile);
+    const Canvas alone =
+        drawn_on(700, 130, true, [&](Canvas& canvas) { bins.draw_tile(canvas, tile); });
     bins.draw_tile(together, tile);
     const auto box = bins.grid().tile(tile, 700, 130);
     for (const auto& [x, y] : tri::testing::written_pixels(alone)) {
