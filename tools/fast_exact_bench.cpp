@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <ctime>
 #include <functional>
 #include <iomanip>
 #include <iostream>
@@ -22,6 +23,7 @@
 #include "chapters/08_fast_exact/narrow_canvases.hpp"
 #include "chapters/08_fast_exact/pixel_writers.hpp"
 #include "chapters/08_fast_exact/threaded.hpp"
+#include "chapters/08_fast_exact/tiled.hpp"
 #include "common/cli.hpp"
 #include "common/printable_text.hpp"
 #include "common/progress.hpp"
@@ -394,8 +396,37 @@ void threaded_probe(const BenchScene& scene, Canvas& canvas, const TimingPlan& p
       << whole / std::max(first, second) << "\n";
 }
 
-void print_probes(const BenchScene& large, Canvas& canvas, const Options& options,
+// fast_tiled_threaded on a scene with two threads against one: a TiledRenderer of each, kept
+// for every draw (threads and bins made once), timed against each other in rounds. Beside the wall
+// clock, the process's CPU time per draw: another process taking a core does not inflate it, so two
+// threads together near the CPU time of one means the work was split without adding any, whatever
+// the wall clock saw.
+void tiled_probe(const BenchScene& scene, const TimingPlan& plan, std::ostream& out) {
+  Canvas canvas(scene.side, scene.side);
+  std::array<tri::ch08::TiledRenderer, 2> renderers{tri::ch08::TiledRenderer(1),
+                                                    tri::ch08::TiledRenderer(2)};
+  std::array<std::vector<double>, 2> cpu;
+  const auto on_threads = [&](int threads) {
+    return [&canvas, &scene, &renderers, &cpu, threads] {
+      const auto k = static_cast<std::size_t>(threads - 1);
+      const std::clock_t start = std::clock();
+      renderers[k].draw(canvas, scene.triangles);
+      cpu[k].push_back(static_cast<double>(std::clock() - start) / CLOCKS_PER_SEC);
+    };
+  };
+  const std::vector<std::function<void()>> runs{on_threads(1), on_threads(2)};
+  const std::vector<Timing> t = tri::time_interleaved(runs, plan);
+  const double one = tri::spread_of(cpu[0]).median, two = tri::spread_of(cpu[1]).median;
+  out << "fast_tiled_threaded on the " << scene.name << " scene: two threads " << std::fixed
+      << std::setprecision(2) << t[0].seconds.median / t[1].seconds.median
+      << "x the speed of one; CPU time per draw " << std::setprecision(3) << 1e3 * one
+      << " ms on one thread, " << 1e3 * two << " ms on two together (" << std::setprecision(0)
+      << 100 * two / one << "%)\n";
+}
+
+void print_probes(const std::vector<BenchScene>& scenes, Canvas& canvas, const Options& options,
                   std::ostream& out) {
+  const BenchScene& large = scenes.front();
   TimingPlan plan = timing_plan(options);
   plan.repetitions = 0;  // always calibrated: the probes' work differs in length
   out << "\nTwo threads filling their own bands of the canvas with fill_pixels: " << std::fixed
@@ -404,6 +435,10 @@ void print_probes(const BenchScene& large, Canvas& canvas, const Options& option
   out << "Two threads sharing integer arithmetic: " << two_thread_arithmetic_speedup(plan)
       << "x the speed of one thread\n";
   threaded_probe(large, canvas, plan, out);
+  for (const BenchScene& scene : scenes) {
+    if (scene.name.starts_with("large") || scene.name.starts_with("jittered"))
+      tiled_probe(scene, plan, out);
+  }
 }
 
 int run(const tri::CliArguments& args, std::ostream& out) {
@@ -420,7 +455,7 @@ int run(const tri::CliArguments& args, std::ostream& out) {
   }
   if (options.scene_filter.empty() || options.probes) {
     Canvas canvas(canvas_side, canvas_side);
-    print_probes(scenes.front(), canvas, options, out);
+    print_probes(scenes, canvas, options, out);
   }
   return 0;
 }
@@ -439,7 +474,7 @@ int main(int argc, char** argv) {
        {"algos", "A,B", "only these algorithms (comma-separated names)"},
        {"scene", "TEXT", "only the scenes whose name contains TEXT (e.g. tiny, mesh)"},
        {"frames", "N", "draw each scene N times per timed sample (default: about 30 ms worth)"},
-       {"probes", "", "only the two-thread probes: filling the canvas, and integer arithmetic"},
+       {"probes", "", "only the two-thread probes: fills, arithmetic, bands and tiles"},
        {"force", "", "measure even when the estimated time exceeds 10 minutes"}});
   return tri::run_command_line(command_line, argc, argv, std::cout, std::cerr,
                                [&](const tri::CliArguments& args) { return run(args, std::cout); });

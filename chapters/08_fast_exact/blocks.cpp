@@ -22,9 +22,8 @@ void fill_blocks(const TriangleSetup& setup, Writer& writer) {
 }  // namespace
 
 void draw_triangle_blocks_8x8(Canvas& canvas, const Triangle& triangle, Color color) {
-  const auto setup = setup_triangle(triangle, canvas.width(), canvas.height());
-  if (!setup) return;
-  with_writer(canvas, color, [&](auto& writer) { fill_blocks(*setup, writer); });
+  set_up_and_fill(canvas, triangle, color,
+                  [](const TriangleSetup& setup, auto& writer) { fill_blocks(setup, writer); });
 }
 
 }  // namespace tri::ch08

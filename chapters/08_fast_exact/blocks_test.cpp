@@ -25,6 +25,13 @@ int area(const PixelBox& r) {
   return (r.max.x - r.min.x + 1) * (r.max.y - r.min.y + 1);
 }
 
+// Counts one visit of every pixel of the box.
+void count_visits(const PixelBox& box, std::map<std::pair<int, int>, int>& seen) {
+  for (int y = box.min.y; y <= box.max.y; ++y) {
+    for (int x = box.min.x; x <= box.max.x; ++x) ++seen[{x, y}];
+  }
+}
+
 }  // namespace
 
 TEST_CASE("An accepted block is covered everywhere and a rejected one nowhere",
@@ -62,9 +69,7 @@ TEST_CASE("The blocks tile the candidate pixels exactly once, 8x8 from the range
           CHECK((block.min.y - setup.range.min.y) % 8 == 0);
           CHECK(block.max.x - block.min.x < 8);
           CHECK(coverage == tri::ch08::classify_block(setup, block));
-          for (int y = block.min.y; y <= block.max.y; ++y) {
-            for (int x = block.min.x; x <= block.max.x; ++x) ++seen[{x, y}];
-          }
+          count_visits(block, seen);
         });
         REQUIRE(static_cast<int>(seen.size()) == area(setup.range));
         for (const auto& [pixel, count] : seen) REQUIRE(count == 1);
@@ -78,20 +83,15 @@ TEST_CASE("Runs of inside blocks and partial blocks hold every covered pixel exa
       random, 300, 70, 53, [&](int, const tri::ch08::TriangleSetup& setup) {
         std::map<std::pair<int, int>, int> seen;
         int covered_in_runs = 0, covered_in_partials = 0, run_pixels = 0;
-        const auto visit = [&](const PixelBox& r) {
-          for (int y = r.min.y; y <= r.max.y; ++y) {
-            for (int x = r.min.x; x <= r.max.x; ++x) ++seen[{x, y}];
-          }
-        };
         tri::ch08::for_each_block_run(
             setup,
             [&](const PixelBox& run) {
-              visit(run);
+              count_visits(run, seen);
               run_pixels += area(run);
               covered_in_runs += covered_in(setup, run);
             },
             [&](const PixelBox& block) {
-              visit(block);
+              count_visits(block, seen);
               covered_in_partials += covered_in(setup, block);
             });
         for (const auto& [pixel, count] : seen) REQUIRE(count == 1);

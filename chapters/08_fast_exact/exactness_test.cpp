@@ -43,17 +43,18 @@ bool same_colors(const Canvas& a, const Canvas& b) {
 
 }  // namespace
 
-TEST_CASE("The chapter registers seven exact variants under stable names",
+TEST_CASE("The chapter registers eight exact variants under stable names",
           "[08_fast_exact][exactness]") {
   const auto algorithms = tri::ch08::triangle_algorithms();
-  REQUIRE(algorithms.size() == 7);
-  const char* names[] = {"fast_incremental", "fast_all_edges", "fast_spans",   "fast_blocks_8x8",
-                         "fast_simd",        "fast_hybrid",    "fast_threaded"};
+  REQUIRE(algorithms.size() == 8);
+  const char* names[] = {"fast_incremental", "fast_all_edges",     "fast_spans",
+                         "fast_blocks_8x8",  "fast_simd",          "fast_hybrid",
+                         "fast_threaded",    "fast_tiled_threaded"};
   for (std::size_t i = 0; i < algorithms.size(); ++i) {
     CHECK(algorithms[i].name == names[i]);
     CHECK(algorithms[i].chapter == "08_fast_exact");
     CHECK(algorithms[i].rule == tri::CoverageRule::top_left);
-    CHECK(algorithms[i].threaded == (algorithms[i].name == "fast_threaded"));
+    CHECK(algorithms[i].threaded == algorithms[i].name.ends_with("_threaded"));
   }
 }
 
@@ -131,7 +132,8 @@ TEST_CASE("Every variant is safe on degenerate, tiny-canvas and refused input",
 
 TEST_CASE("Batches through the registry's entry point equal drawing one by one",
           "[08_fast_exact][step6]") {
-  // fast_hybrid and fast_threaded have batch entries; draw_triangles uses them.
+  // fast_hybrid, fast_threaded and fast_tiled_threaded have batch entries; draw_triangles uses
+  // them.
   tri::testing::Random random(31);
   std::vector<tri::SceneTriangle> scene;
   for (int i = 0; i < 300; ++i) {

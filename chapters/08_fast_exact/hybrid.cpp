@@ -34,9 +34,8 @@ template void fill_hybrid(const TriangleSetup&, RowWriter&);
 template void fill_hybrid(const TriangleSetup&, CountingWriter&);
 
 void draw_triangle_hybrid(Canvas& canvas, const Triangle& triangle, Color color) {
-  const auto setup = setup_triangle(triangle, canvas.width(), canvas.height());
-  if (!setup) return;
-  with_writer(canvas, color, [&](auto& writer) { fill_hybrid(*setup, writer); });
+  set_up_and_fill(canvas, triangle, color,
+                  [](const TriangleSetup& setup, auto& writer) { fill_hybrid(setup, writer); });
 }
 
 void draw_batch_hybrid(Canvas& canvas, std::span<const SceneTriangle> triangles) {

@@ -12,8 +12,10 @@
 #include <cstdint>
 #include <cstring>
 
+#include "chapters/08_fast_exact/triangle_setup.hpp"
 #include "common/canvas.hpp"
 #include "common/color.hpp"
+#include "common/triangle_algorithm.hpp"
 
 namespace tri::ch08 {
 
@@ -48,11 +50,17 @@ inline void fill_pixels(Color* first, int count, std::uint32_t word) noexcept {
 // [/listing]
 
 /// Writes into Canvas::row, with no per-pixel bounds or counter checks. Callers pass only
-/// pixels of the canvas. Safe for threads that write disjoint rows.
+/// pixels of the canvas. Safe for threads that write disjoint rows, or disjoint tiles when each
+/// writer is given its tile's right end (`row_end`): step 5's blends read and write back whole
+/// groups of pixels, and they never reach that column.
 class RowWriter {
  public:
-  RowWriter(Canvas& canvas, Color color) noexcept
-      : canvas_(canvas), color_(color), word_(std::bit_cast<std::uint32_t>(color)) {}
+  RowWriter(Canvas& canvas, Color color) noexcept : RowWriter(canvas, color, canvas.width()) {}
+  RowWriter(Canvas& canvas, Color color, int row_end) noexcept
+      : canvas_(canvas),
+        color_(color),
+        word_(std::bit_cast<std::uint32_t>(color)),
+        row_end_(row_end) {}
 
   /// Pixels x_begin <= x < x_end of row y.
   void span(int y, int x_begin, int x_end) noexcept {
@@ -60,16 +68,19 @@ class RowWriter {
   }
   void pixel(int x, int y) noexcept { canvas_.row(y)[static_cast<std::size_t>(x)] = color_; }
 
-  /// For code that writes rows itself (step 5's blends): row y's first pixel, the canvas width
-  /// and the colour as a 32-bit word.
+  /// For code that writes rows itself (step 5's blends): row y's first pixel, the pixels from
+  /// one row to the next, and the colour as a 32-bit word.
   Color* row_pixels(int y) noexcept { return canvas_.row(y).data(); }
-  int width() const noexcept { return canvas_.width(); }
+  int stride() const noexcept { return canvas_.width(); }
   std::uint32_t word() const noexcept { return word_; }
+  /// No pixel at or right of this column may be touched, not even rewritten unchanged.
+  int width() const noexcept { return row_end_; }
 
  private:
   Canvas& canvas_;
   Color color_;
   std::uint32_t word_;
+  int row_end_;
 };
 
 /// Writes through Canvas::put_pixel so that every write is counted. Slow, and only used while the
@@ -77,22 +88,27 @@ class RowWriter {
 /// only that pixel and its counter), so it is safe for threads that write disjoint rows.
 class CountingWriter {
  public:
-  CountingWriter(Canvas& canvas, Color color) noexcept : canvas_(canvas), color_(color) {}
+  CountingWriter(Canvas& canvas, Color color) noexcept
+      : CountingWriter(canvas, color, canvas.width()) {}
+  CountingWriter(Canvas& canvas, Color color, int row_end) noexcept
+      : canvas_(canvas), color_(color), row_end_(row_end) {}
 
   void span(int y, int x_begin, int x_end) noexcept {
     for (int x = x_begin; x < x_end; ++x) canvas_.put_pixel(x, y, color_);
   }
   void pixel(int x, int y) noexcept { canvas_.put_pixel(x, y, color_); }
-  int width() const noexcept { return canvas_.width(); }
+  int width() const noexcept { return row_end_; }
 
  private:
   Canvas& canvas_;
   Color color_;
+  int row_end_;
 };
 
 // [listing pixel_writer]
-/// What every traversal needs from a writer: whole spans of a row, single pixels, the canvas
-/// width. RowWriter and CountingWriter are the two; each traversal is one template over them.
+/// What every traversal needs from a writer: whole spans of a row, single pixels, and the end of
+/// the pixels of a row it may touch (the canvas width, or a tile's right end). RowWriter and
+/// CountingWriter are the two; each traversal is one template over them.
 template <class Writer>
 concept PixelWriter = requires(Writer writer, int x, int y) {
   writer.span(y, x, x + 1);  // pixels x_begin <= x < x_end of row y
@@ -113,6 +129,15 @@ void with_writer(Canvas& canvas, Color color, Draw&& draw) {
     RowWriter writer(canvas, color);
     draw(writer);
   }
+}
+
+/// The single-triangle entry of a traversal: the setup, then fill(setup, writer) with the writer
+/// that suits the canvas. Nothing is drawn when the setup is empty.
+template <class Fill>
+void set_up_and_fill(Canvas& canvas, const Triangle& triangle, Color color, Fill&& fill) {
+  const auto setup = setup_triangle(triangle, canvas.width(), canvas.height());
+  if (!setup) return;
+  with_writer(canvas, color, [&](auto& writer) { fill(*setup, writer); });
 }
 
 }  // namespace tri::ch08

@@ -91,7 +91,7 @@ void fill_partial_block(const TriangleSetup& setup, const LaneTest<Lane, N>& lan
   const auto s2 = static_cast<Lane>(setup.edges[2].step_y);
   const auto pixels_left = static_cast<Lane>(setup.range.max.x - block.min.x);
   const auto word = Vector<std::uint32_t, N>{} + writer.word();
-  const std::ptrdiff_t stride = writer.width();
+  const std::ptrdiff_t stride = writer.stride();
   Color* row = writer.row_pixels(block.min.y) + block.min.x;
   Vector<Lane, N> covered;
   for (int rows = block.max.y - block.min.y + 1; rows > 0; --rows, row += stride) {
@@ -143,15 +143,16 @@ void fill_blocks_simd(const TriangleSetup& setup, Writer& writer) {
     return;
   }
   const LaneTest<Lane, 8> lanes(setup);
-  const int canvas_width = writer.width();
+  const int row_end = writer.width();
   for_each_block_run(
       setup,
       [&](const ch05::PixelBox& run) {
         for (int y = run.min.y; y <= run.max.y; ++y) writer.span(y, run.min.x, run.max.x + 1);
       },
       [&](const ch05::PixelBox& block) {
-        // Eight lanes must stay on the canvas; a block at its right border goes pixel by pixel.
-        if (block.min.x + 8 <= canvas_width) {
+        // Eight lanes must stay within the writer's rows (the canvas, or a tile); a block at
+        // their right end goes pixel by pixel.
+        if (block.min.x + 8 <= row_end) {
           fill_partial_block(setup, lanes, block, writer);
         } else {
           fill_block_pixels(setup, block, writer);
@@ -198,9 +199,8 @@ template void fill_simd(const TriangleSetup&, RowWriter&);
 template void fill_simd(const TriangleSetup&, CountingWriter&);
 
 void draw_triangle_simd(Canvas& canvas, const Triangle& triangle, Color color) {
-  const auto setup = setup_triangle(triangle, canvas.width(), canvas.height());
-  if (!setup) return;
-  with_writer(canvas, color, [&](auto& writer) { fill_simd(*setup, writer); });
+  set_up_and_fill(canvas, triangle, color,
+                  [](const TriangleSetup& setup, auto& writer) { fill_simd(setup, writer); });
 }
 
 }  // namespace tri::ch08

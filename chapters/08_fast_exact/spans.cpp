@@ -94,9 +94,8 @@ template void fill_spans(const TriangleSetup&, IndexWriter&);
 template void fill_spans(const TriangleSetup&, MaskWriter&);
 
 void draw_triangle_spans(Canvas& canvas, const Triangle& triangle, Color color) {
-  const auto setup = setup_triangle(triangle, canvas.width(), canvas.height());
-  if (!setup) return;
-  with_writer(canvas, color, [&](auto& writer) { fill_spans(*setup, writer); });
+  set_up_and_fill(canvas, triangle, color,
+                  [](const TriangleSetup& setup, auto& writer) { fill_spans(setup, writer); });
 }
 
 }  // namespace tri::ch08

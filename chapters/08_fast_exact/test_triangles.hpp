@@ -3,9 +3,14 @@
 /// sub-pixel to canvas-covering, slivers, vertices far off the canvas, and pixel-grid ties.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <vector>
 
 #include "chapters/08_fast_exact/triangle_setup.hpp"
+#include "common/canvas.hpp"
+#include "common/scene.hpp"
 #include "common/triangle_algorithm.hpp"
 #include "tests/support/pixels.hpp"
 
@@ -98,6 +103,36 @@ void for_each_random_setup(tri::testing::Random& random, int count, int width, i
         setup_triangle(random_triangle(random, shape_number(i), width), width, height);
     if (setup) visit(i, *setup);
   }
+}
+
+/// `count` overlapping triangles of every shape near a size x size canvas, in many colours: a
+/// later one paints over earlier ones, so any change of order shows in the colours.
+inline std::vector<SceneTriangle> overlapping_scene(std::uint64_t seed, int count, int size) {
+  tri::testing::Random random(seed);
+  std::vector<SceneTriangle> scene;
+  for (int i = 0; i < count; ++i) {
+    scene.push_back({random_triangle(random, shape_number(i), size),
+                     Color{static_cast<std::uint8_t>(random.integer(0, 255)),
+                           static_cast<std::uint8_t>(random.integer(0, 255)),
+                           static_cast<std::uint8_t>(i % 256), 255}});
+  }
+  return scene;
+}
+
+/// A fresh width x height canvas, counting writes when asked, after draw(canvas).
+template <class Draw>
+Canvas drawn_on(int width, int height, bool counting, Draw&& draw) {
+  Canvas canvas(width, height);
+  if (counting) canvas.enable_write_counts();
+  draw(canvas);
+  return canvas;
+}
+
+/// Whether two canvases hold the same colours and the same write counts.
+inline bool same_canvas(const Canvas& a, const Canvas& b) {
+  return std::equal(a.pixels().begin(), a.pixels().end(), b.pixels().begin(), b.pixels().end()) &&
+         std::equal(a.write_counts().begin(), a.write_counts().end(), b.write_counts().begin(),
+                    b.write_counts().end());
 }
 
 }  // namespace tri::ch08::testing

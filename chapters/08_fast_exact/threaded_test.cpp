@@ -10,30 +10,9 @@
 using tri::Canvas;
 using tri::SceneTriangle;
 
-namespace {
-
-// Overlapping triangles of every shape in many colours: a later one paints over earlier ones, so
-// any change of order shows in the colours.
-std::vector<SceneTriangle> overlapping_scene(std::uint64_t seed, int count, int size) {
-  tri::testing::Random random(seed);
-  std::vector<SceneTriangle> scene;
-  for (int i = 0; i < count; ++i) {
-    scene.push_back(
-        {tri::ch08::testing::random_triangle(random, tri::ch08::testing::shape_number(i), size),
-         tri::Color{static_cast<std::uint8_t>(random.integer(0, 255)),
-                    static_cast<std::uint8_t>(random.integer(0, 255)),
-                    static_cast<std::uint8_t>(i % 256), 255}});
-  }
-  return scene;
-}
-
-bool same_canvas(const Canvas& a, const Canvas& b) {
-  return std::equal(a.pixels().begin(), a.pixels().end(), b.pixels().begin(), b.pixels().end()) &&
-         std::equal(a.write_counts().begin(), a.write_counts().end(), b.write_counts().begin(),
-                    b.write_counts().end());
-}
-
-}  // namespace
+using tri::ch08::testing::drawn_on;
+using tri::ch08::testing::overlapping_scene;
+using tri::ch08::testing::same_canvas;
 
 TEST_CASE("bands are 16 to 64 rows, about four per thread, dealt to the threads in turn",
           "[08_fast_exact][step7]") {
@@ -58,21 +37,21 @@ TEST_CASE("The threaded batch equals the serial one pixel for pixel, colours and
   for (const auto& [width, height] : {std::pair{50, 45}, std::pair{64, 64}, std::pair{13, 100}}) {
     const auto scene = overlapping_scene(static_cast<std::uint64_t>(width * height), 400, 48);
     for (const bool counting : {true, false}) {
-      Canvas serial(width, height);
-      if (counting) serial.enable_write_counts();
-      tri::ch08::draw_batch_hybrid(serial, scene);
+      const Canvas serial = drawn_on(width, height, counting, [&](Canvas& canvas) {
+        tri::ch08::draw_batch_hybrid(canvas, scene);
+      });
       for (const int threads : {1, 2, 3, 4, 7, 100}) {
         INFO(width << "x" << height << ", " << threads << " threads, counting " << counting);
-        Canvas threaded(width, height);
-        if (counting) threaded.enable_write_counts();
-        tri::ch08::draw_batch_on_threads(threaded, scene, threads);
+        const Canvas threaded = drawn_on(width, height, counting, [&](Canvas& canvas) {
+          tri::ch08::draw_batch_on_threads(canvas, scene, threads);
+        });
         CHECK(threaded.outside_writes() == 0);
         CHECK(same_canvas(threaded, serial));
       }
-      Canvas hardware(width, height);
-      if (counting) hardware.enable_write_counts();
-      tri::ch08::draw_batch_threaded(hardware, scene);
-      CHECK(same_canvas(hardware, serial));
+      CHECK(same_canvas(
+          drawn_on(width, height, counting,
+                   [&](Canvas& canvas) { tri::ch08::draw_batch_threaded(canvas, scene); }),
+          serial));
     }
   }
 }
@@ -80,15 +59,14 @@ TEST_CASE("The threaded batch equals the serial one pixel for pixel, colours and
 TEST_CASE("Each thread writes only the rows of its own bands, and together they write all",
           "[08_fast_exact][step7]") {
   const auto scene = overlapping_scene(9, 300, 60);
-  Canvas serial(60, 70);
-  serial.enable_write_counts();
-  tri::ch08::draw_batch_hybrid(serial, scene);
+  const Canvas serial =
+      drawn_on(60, 70, true, [&](Canvas& canvas) { tri::ch08::draw_batch_hybrid(canvas, scene); });
   for (const int threads : {2, 3}) {
     std::vector<std::uint32_t> total(serial.write_counts().size(), 0);
     for (int thread = 0; thread < threads; ++thread) {
-      Canvas part(60, 70);
-      part.enable_write_counts();
-      tri::ch08::draw_bands_of_thread(part, scene, thread, threads);
+      const Canvas part = drawn_on(60, 70, true, [&](Canvas& canvas) {
+        tri::ch08::draw_bands_of_thread(canvas, scene, thread, threads);
+      });
       for (int y = 0; y < 70; ++y) {
         for (int x = 0; x < 60; ++x) {
           if (part.write_count(x, y) > 0) {
