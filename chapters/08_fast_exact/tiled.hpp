@@ -1,5 +1,5 @@
 /// @file
-/// Step 9 · threads over tiles: the batch binned once into square tiles (every triangle listed
+/// Step 9 · threads over tiles: the batch binned once into tiles (every triangle listed
 /// in the tiles it touches, in submission order), then each tile drawn whole by one thread,
 /// tiles handed out one at a time, so the picture is the serial one pixel for pixel.
 #pragma once
