@@ -216,7 +216,7 @@ TEST_CASE("nearest_pixel is never more than half a pixel away, on random points"
   testing::Random random(7);
   for (int trial = 0; trial < 2000; ++trial) {
     const double range = trial < 1000 ? 100.0 : limit;
-    const glm::dvec2 p(random.real(-range, range), random.real(-range, range));
+    const glm::dvec2 p{random.real(-range, range), random.real(-range, range)};
     const glm::ivec2 n = nearest_pixel(p);
     INFO(std::hexfloat << p.x << ", " << p.y);
     // p - n is exact here: p and n are within half a unit and of the same sign or both small.

@@ -36,9 +36,9 @@ PixelSet line_pixels(glm::ivec2 a, glm::ivec2 b) {
 }
 
 Vertices random_vertices(Random& random) {
-  return {glm::ivec2(random.integer(0, side - 1), random.integer(0, side - 1)),
-          glm::ivec2(random.integer(0, side - 1), random.integer(0, side - 1)),
-          glm::ivec2(random.integer(0, side - 1), random.integer(0, side - 1))};
+  return {glm::ivec2{random.integer(0, side - 1), random.integer(0, side - 1)},
+          glm::ivec2{random.integer(0, side - 1), random.integer(0, side - 1)},
+          glm::ivec2{random.integer(0, side - 1), random.integer(0, side - 1)}};
 }
 
 // Flood fill from one pixel through the 8 neighbours; the set is connected if that reaches all.

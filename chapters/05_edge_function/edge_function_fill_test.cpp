@@ -134,8 +134,8 @@ TEST_CASE("Zero-area triangles draw the pixel centres lying exactly on their seg
 
   Random random(5202);
   for (int i = 0; i < 500; ++i) {
-    const glm::ivec2 p(random.integer(-10, 40), random.integer(-10, 40));
-    const glm::ivec2 d(random.integer(-6, 6), random.integer(-6, 6));
+    const glm::ivec2 p{random.integer(-10, 40), random.integer(-10, 40)};
+    const glm::ivec2 d{random.integer(-6, 6), random.integer(-6, 6)};
     std::array<int, 3> t{random.integer(-5, 5), random.integer(-5, 5), random.integer(-5, 5)};
     const PixelSet pixels = filled(p + t[0] * d, p + t[1] * d, p + t[2] * d, 32, 32);
     std::sort(t.begin(), t.end());
@@ -179,9 +179,9 @@ TEST_CASE("Vertices at 1e7 and 2^30 are clipped to the canvas with no outside wr
   for (const int far : {10'000'000, two_to_30}) {
     for (int i = 0; i < 300; ++i) {
       // Two far vertices and one near the canvas, so most triangles cross it.
-      const glm::ivec2 p(random.integer(-far, far), random.integer(-far, far));
-      const glm::ivec2 q(random.integer(-far, far), random.integer(-far, far));
-      const glm::ivec2 r(random.integer(-8, 40), random.integer(-8, 40));
+      const glm::ivec2 p{random.integer(-far, far), random.integer(-far, far)};
+      const glm::ivec2 q{random.integer(-far, far), random.integer(-far, far)};
+      const glm::ivec2 r{random.integer(-8, 40), random.integer(-8, 40)};
       if (edge_cross(p, q, r) == 0) continue;
       REQUIRE(filled(p, q, r, 32, 32) == inclusive_pixels(p, q, r, 32, 32));
     }
