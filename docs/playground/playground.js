@@ -40,6 +40,14 @@
     {title: 'Vertices on pixel centres: a rectangle split along a diagonal through centres',
      width: 24, height: 20,
      points: [[4, 4], [20, 4], [20, 16], [4, 16]], triangles: [[0, 1, 2], [0, 2, 3]]},
+    {title: 'A flat bottom and a flat top: where the published scanline loops divide by zero ' +
+         '(chapters 03, 04)',
+     width: 24, height: 20,
+     points: [[4, 4], [20, 4], [12, 16], [20, 16]], triangles: [[0, 1, 2], [1, 3, 2]]},
+    {title: 'Three vertices on one line beside a real triangle: the zero area the published ' +
+         'barycentric fill divides by (chapter 06)',
+     width: 24, height: 20,
+     points: [[4, 4], [12, 10], [20, 16], [20, 4]], triangles: [[0, 1, 2], [0, 3, 2]]},
     {title: 'Huge coordinates: two vertices at \u00b12^30 whose shared edge crosses the grid',
      width: 32, height: 24,
      points: [[-1073741824, 4], [1073741824, 12.5], [16, 28], [16, -4]],
