@@ -58,10 +58,15 @@ FillCeiling fill_ceiling_of(double pixels, const Timing& memset, const Timing& v
           mpix_per_second(pixels, vector_stores.seconds.median)};
 }
 
-FillCeiling measure_fill_ceiling(Canvas& canvas, int threads, const TimingPlan& plan) {
+std::vector<Timing> time_ceiling_fills(Canvas& canvas, int threads, const TimingPlan& plan) {
   std::vector<std::function<void()>> runs;
-  for (const CeilingFill fill : ceiling_fills) runs.push_back(ceiling_fill_run(canvas, fill, threads));
-  const std::vector<Timing> timings = time_interleaved(runs, plan);
+  for (const CeilingFill fill : ceiling_fills)
+    runs.push_back(ceiling_fill_run(canvas, fill, threads));
+  return time_interleaved(runs, plan);
+}
+
+FillCeiling measure_fill_ceiling(Canvas& canvas, int threads, const TimingPlan& plan) {
+  const std::vector<Timing> timings = time_ceiling_fills(canvas, threads, plan);
   return fill_ceiling_of(static_cast<double>(canvas.width()) * canvas.height(), timings[0],
                          timings[1]);
 }

@@ -10,6 +10,7 @@
 #include <array>
 #include <functional>
 #include <string_view>
+#include <vector>
 
 #include "common/canvas.hpp"
 #include "measure/timing.hpp"
@@ -43,7 +44,11 @@ struct FillCeiling {
 /// canvas of `pixels` pixels.
 FillCeiling fill_ceiling_of(double pixels, const Timing& memset, const Timing& vector_stores);
 
-/// Times both fills of the canvas against each other in interleaved rounds (counting must be off).
+/// Times both fills of the canvas against each other in interleaved rounds (counting must be off):
+/// one Timing per fill, in the order of ceiling_fills.
+std::vector<Timing> time_ceiling_fills(Canvas& canvas, int threads, const TimingPlan& plan);
+
+/// The ceiling from time_ceiling_fills.
 FillCeiling measure_fill_ceiling(Canvas& canvas, int threads, const TimingPlan& plan);
 
 }  // namespace tri

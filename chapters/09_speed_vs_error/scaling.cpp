@@ -31,9 +31,7 @@ struct ChildAnswer {
 // pixel once and does nothing else.
 Timing time_one_fill(const PreparedScene& prepared, const TimingPlan& plan) {
   Canvas canvas(prepared.scene.width, prepared.scene.height);
-  std::vector<std::function<void()>> fills;
-  for (const CeilingFill fill : ceiling_fills) fills.push_back(ceiling_fill_run(canvas, fill, 1));
-  const std::vector<Timing> timings = time_interleaved(fills, plan);
+  const std::vector<Timing> timings = time_ceiling_fills(canvas, 1, plan);
   return *std::min_element(timings.begin(), timings.end(), [](const Timing& a, const Timing& b) {
     return a.seconds.median < b.seconds.median;
   });
