@@ -101,9 +101,12 @@ void draw_batch_on_threads(Canvas& canvas, std::span<const SceneTriangle> triang
 }
 // [/listing]
 
+int hardware_threads() noexcept {
+  return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+}
+
 void draw_batch_threaded(Canvas& canvas, std::span<const SceneTriangle> triangles) {
-  draw_batch_on_threads(canvas, triangles,
-                        static_cast<int>(std::max(1u, std::thread::hardware_concurrency())));
+  draw_batch_on_threads(canvas, triangles, hardware_threads());
 }
 
 }  // namespace tri::ch08

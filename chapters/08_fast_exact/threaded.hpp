@@ -37,6 +37,10 @@ constexpr Bands bands_for(int height, int threads) noexcept {
 void draw_bands_of_thread(Canvas& canvas, std::span<const SceneTriangle> triangles, int thread,
                           int threads) noexcept;
 
+/// The threads a registered threaded entry starts: one per hardware thread, at least 1 (the
+/// standard allows hardware_concurrency() to answer 0).
+int hardware_threads() noexcept;
+
 /// Draws the batch with `threads` threads (at least 1, at most one per band), created here and
 /// joined before returning. If a thread cannot be started, the calling thread does its share.
 void draw_batch_on_threads(Canvas& canvas, std::span<const SceneTriangle> triangles, int threads);

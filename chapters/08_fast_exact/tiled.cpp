@@ -10,6 +10,7 @@
 #include "chapters/08_fast_exact/blocks.hpp"
 #include "chapters/08_fast_exact/hybrid.hpp"
 #include "chapters/08_fast_exact/pixel_writers.hpp"
+#include "chapters/08_fast_exact/threaded.hpp"
 
 namespace tri::ch08 {
 namespace {
@@ -269,8 +270,7 @@ void TiledRenderer::draw_once(Canvas& canvas, std::span<const SceneTriangle> tri
 }
 
 void draw_batch_tiled(Canvas& canvas, std::span<const SceneTriangle> triangles) {
-  TiledRenderer::draw_once(canvas, triangles,
-                           static_cast<int>(std::max(1u, std::thread::hardware_concurrency())));
+  TiledRenderer::draw_once(canvas, triangles, hardware_threads());
 }
 
 }  // namespace tri::ch08
