@@ -66,8 +66,7 @@ void draw_counted(const tri::TriangleAlgorithm& algorithm, int width, int height
   for (int y = 0; y < height; ++y) {
     for (int x = 0; x < width; ++x) {
       const tri::Color c = canvas.pixel(x, y);
-      const auto i = static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
-                     static_cast<std::size_t>(x);
+      const auto i = tri::pixel_index(x, y, width);
       last_writer[i] = c == triangle_colors[0] ? 1 : c == triangle_colors[1] ? 2 : 0;
     }
   }
@@ -251,8 +250,7 @@ EMSCRIPTEN_KEEPALIVE int playground_coverage(const char* name, int width, int he
         for (const auto& triangle : triangles) {
           sum += tri::ch10::exact_coverage(triangle.vertices, {x, y}).to_double();
         }
-        const auto i = static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
-                       static_cast<std::size_t>(x);
+        const auto i = tri::pixel_index(x, y, width);
         coverage[i] = tri::ch10::coverage_16(canvas.at(x, y));
         exact[i] = tri::ch10::coverage_16(sum);
       }
