@@ -3,8 +3,13 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <utility>
+
+#if defined(__SSE__)
+#include <xmmintrin.h>
+#endif
 
 namespace tri::ch10 {
 namespace {
@@ -161,26 +166,24 @@ void RowCells::add_to_canvas(CoverageCanvas& canvas, int y, Blend blend) {
 
 namespace {
 
-// One edge walked upwards: its x at a height, and its slope for the cells of a row.
-struct RisingEdge {
-  glm::dvec2 low, high;
-  double dx_dy, dy_dx;  // dy_dx infinite for a vertical edge
-  RisingEdge(glm::dvec2 a, glm::dvec2 b) : low(a), high(b) {
-    // Both slopes from one division (a horizontal edge's are never used).
-    const double dx = b.x - a.x, dy = b.y - a.y, inverse = 1 / (dx * dy);
-    dx_dy = dx == 0 ? 0 : dx * dx * inverse;
-    dy_dx = dx == 0 ? std::numeric_limits<double>::infinity() : dy * dy * inverse;
-  }
-  // Exactly the vertex's x at its top, so that two sides meet exactly there.
-  double x_at(double y) const { return y == high.y ? high.x : low.x + (y - low.y) * dx_dy; }
-};
-
 // The part of a triangle inside one pixel row between heights y0 < y1 where each side is one
 // straight piece: the left side rises from x = left0 at y0 to left1 at y1, the right side from
 // right0 to right1.
 struct Band {
   double y0, y1, left0, left1, right0, right1, left_dy_dx, right_dy_dx;
   int left_first, left_last, right_first, right_last;  // the columns each side crosses
+};
+
+// One edge walked upwards from (x0, y0): its x at a height, and both slopes from one division
+// (dy_dx infinite for a vertical edge; a horizontal edge's are never used).
+struct RisingEdge {
+  double x0, y0, dx_dy, dy_dx;
+  RisingEdge(glm::dvec2 a, glm::dvec2 b) : x0(a.x), y0(a.y) {
+    const double dx = b.x - a.x, dy = b.y - a.y, inverse = 1 / (dx * dy);
+    dx_dy = dx == 0 ? 0 : dx * dx * inverse;
+    dy_dx = dx == 0 ? std::numeric_limits<double>::infinity() : dy * dy * inverse;
+  }
+  double x_at(double y) const { return x0 + (y - y0) * dx_dy; }
 };
 
 struct ByHeight {
@@ -195,91 +198,66 @@ ByHeight sorted_by_height(const Triangle& t) {
   return v;
 }
 
-// A triangle prepared for its rows, bottom to top: the vertices sorted by height, the long edge
-// from the lowest to the highest on one side, the two short edges through the middle one on the
-// other. The x where a side leaves a row is where it enters the next, so every edge is
-// evaluated once per row boundary and never clipped. The row that holds the middle vertex is two
-// bands, below and above it, so that in every band each side is one straight piece.
-class RowWalker {
- public:
-  explicit RowWalker(const Triangle& t) : RowWalker(sorted_by_height(t)) {}
-  double low_y() const { return low_.y; }
-  double high_y() const { return high_.y; }
+// Which part of its pixel row a band is.
+enum class Part { whole_row, below_middle, above_middle };
 
-  // Starts at the bottom of pixel row `row` (or of the triangle, if higher).
-  void start(int row) {
-    y_ = std::max(row - 0.5, low_.y);
-    turned_ = y_ >= middle_.y;  // past the middle vertex, the short side is on its upper edge
-    short_side().edge = turned_ ? upper_ : lower_;
-    for (Side* side : {&left_, &right_}) side->move_to(y_);
-  }
-
-  // [listing next_row]
-  // Calls visit(band, split) for each band of pixel row `row`, the current one (none, one, or
-  // two around the middle vertex, then `split`), then moves up to the next row.
-  template <class Visit>
-  void next_row(int row, Visit&& visit) {
-    const double y1 = std::min(row + 0.5, high_.y);
-    const bool split = !turned_ && y_ < middle_.y && middle_.y < y1;
-    while (y_ < y1) {
-      if (!turned_ && y_ >= middle_.y) {  // the short side turns at the middle vertex
-        short_side().edge = upper_;
-        turned_ = true;
-      }
-      visit(band_to(turned_ ? y1 : std::min(y1, middle_.y)), split);
-    }
-  }
-  // [/listing]
-
- private:
-  struct Side {  // a side of the triangle: the edge it is on, where it crosses the current height
-    RisingEdge edge;
-    double x = 0;
-    int column = 0;
-    void move_to(double y) {
-      x = edge.x_at(y);
-      column = column_of(x);
+// [listing walk_bands]
+// Calls visit(row, band, part) for every band of rows first_row..last_row, bottom to top. The
+// vertices sorted by height, the long edge from the lowest to the highest is one side of the
+// triangle, the two short edges through the middle vertex the other. Where a side leaves a row
+// is where it enters the next, so each side's x and column are computed once per row boundary.
+// The row that holds the middle vertex is two bands, below and above it, so that in every band
+// each side is one straight piece.
+template <class Visit>
+void walk_bands(const ByHeight& v, int first_row, int last_row, Visit&& visit) {
+  const RisingEdge along(v.low, v.high), lower(v.low, v.middle), upper(v.middle, v.high);
+  const glm::dvec2 to_high = v.high - v.low, to_middle = v.middle - v.low;
+  const bool short_on_left = to_high.x * to_middle.y - to_high.y * to_middle.x > 0;
+  struct Side {  // where a side crosses the current height
+    const RisingEdge* edge;
+    double x;
+    int column;
+    void move_to(double y) { set(edge->x_at(y)); }
+    void set(double at) {
+      x = at;
+      column = column_of(at);
     }
   };
-  explicit RowWalker(const ByHeight& v)
-      : low_(v.low),
-        middle_(v.middle),
-        high_(v.high),
-        lower_(low_, middle_),
-        upper_(middle_, high_),
-        left_{RisingEdge(low_, high_)},
-        right_{lower_} {
-    const glm::dvec2 along = high_ - low_, to_middle = middle_ - low_;
-    short_on_left_ = along.x * to_middle.y - along.y * to_middle.x > 0;
-    if (short_on_left_) std::swap(left_, right_);
+  double y0 = std::max(first_row - 0.5, v.low.y);
+  bool turned = y0 >= v.middle.y;  // past the middle vertex, the short side is on its upper edge
+  const RisingEdge* short_edge = turned ? &upper : &lower;
+  Side left{short_on_left ? short_edge : &along, 0, 0};
+  Side right{short_on_left ? &along : short_edge, 0, 0};
+  left.move_to(y0);
+  right.move_to(y0);
+  Side& short_side = short_on_left ? left : right;
+  const auto band_to = [&](int row, double y1, Part part) {
+    const Side l0 = left, r0 = right;
+    left.move_to(y1);
+    right.move_to(y1);
+    visit(row,
+          Band{y0, y1, l0.x, left.x, r0.x, right.x, l0.edge->dy_dx, r0.edge->dy_dx,
+               std::min(l0.column, left.column), std::max(l0.column, left.column),
+               std::min(r0.column, right.column), std::max(r0.column, right.column)},
+          part);
+    y0 = y1;
+  };
+  for (int row = first_row; row <= last_row; ++row) {
+    const double y1 = std::min(row + 0.5, v.high.y);
+    Part part = Part::whole_row;
+    if (!turned && v.middle.y < y1) [[unlikely]] {  // the short side turns at the middle vertex
+      if (v.middle.y > y0) {
+        band_to(row, v.middle.y, Part::below_middle);
+        part = Part::above_middle;
+      }
+      short_side.edge = &upper;
+      short_side.set(v.middle.x);
+      turned = true;
+    }
+    band_to(row, y1, part);
   }
-  Side& short_side() { return short_on_left_ ? left_ : right_; }
-  // The band from the current height up to y1; moves there.
-  Band band_to(double y1) {
-    const Side l0 = left_, r0 = right_;
-    left_.move_to(y1);
-    right_.move_to(y1);
-    const double y0 = std::exchange(y_, y1);
-    return {y0,
-            y1,
-            l0.x,
-            left_.x,
-            r0.x,
-            right_.x,
-            l0.edge.dy_dx,
-            r0.edge.dy_dx,
-            std::min(l0.column, left_.column),
-            std::max(l0.column, left_.column),
-            std::min(r0.column, right_.column),
-            std::max(r0.column, right_.column)};
-  }
-
-  glm::dvec2 low_, middle_, high_;
-  RisingEdge lower_, upper_;  // the short side's edges, below and above the middle vertex
-  Side left_, right_;
-  bool short_on_left_ = false, turned_ = false;
-  double y_ = 0;  // the current height
-};
+}
+// [/listing]
 
 // A band's two pieces into the cells, as the counter-clockwise outline walks them: up the right
 // side, down the left side.
@@ -289,15 +267,14 @@ void add_band(RowCells& cells, const Band& b) {
 }
 
 // [listing add_band_directly]
-// Most bands need no cells at all. Walking the left piece's cells, then the pixels between the
-// sides, then the right piece's cells, from left to right, the running cover is known at every
-// pixel, so each pixel's coverage is written as soon as it is known. When the sides share cells
-// (a thin triangle, a tip), each side adds its own part there: coverage that is summed adds up
-// (`shared`). A side wholly off the canvas is not walked: left of it, its cover reaches column 0;
-// right of it, the pixels between reach the last column. False, having written nothing, when a
-// piece crosses the canvas's left or right edge, or when the sides share cells and each pixel
-// must receive its whole coverage at once (composited over).
-template <bool shared, class Put>
+// Composited over (step 5), most bands need no cells either. Walking the left piece's cells, then
+// the pixels between the sides, then the right piece's cells, from left to right, the running
+// cover is known at every pixel, so each pixel's coverage is written as soon as it is known. A
+// side wholly off the canvas is not walked: left of it, its cover reaches column 0; right of it,
+// the pixels between reach the last column. False, having written nothing, when a piece crosses
+// the canvas's left or right edge, or when the sides share cells, where a pixel must receive its
+// whole coverage at once.
+template <class Put>
 bool add_band_directly(float* row, int width, const Band& b, Put put) {
   bool walk_left = true, walk_right = true;
   if (b.left_first < 0 || b.right_last >= width) [[unlikely]] {  // the band reaches off the canvas
@@ -307,10 +284,7 @@ bool add_band_directly(float* row, int width, const Band& b, Put put) {
     if (walk_left ? b.left_last >= width : b.left_last >= 0) return false;
     if (walk_right ? b.right_first < 0 : b.right_first < width) return false;
   }
-  if (b.left_first > b.right_first || b.left_last > b.right_last ||
-      (!shared && b.left_last >= b.right_first)) {
-    return false;
-  }
+  if (b.left_last >= b.right_first) return false;
   double inside = b.y1 - b.y0;  // right of the left side, the band's whole height is inside
   if (walk_left) {
     double cover = 0;  // the left piece runs down: negative heights, coverage -(cover + area)
@@ -330,8 +304,7 @@ bool add_band_directly(float* row, int width, const Band& b, Put put) {
     double cover = 0;  // the right piece runs up: what lies right of it is outside
     for_each_cell(b.right0, b.y0, b.right1, b.y1, b.right_dy_dx, b.right_first, b.right_last,
                   [&](int column, double area, double height) {
-                    const double left_side = inside * (column > b.left_last);
-                    put(row[column], static_cast<float>(left_side - (cover + area)));
+                    put(row[column], static_cast<float>(inside - (cover + area)));
                     cover += height;
                   });
   }
@@ -339,26 +312,109 @@ bool add_band_directly(float* row, int width, const Band& b, Put put) {
 }
 // [/listing]
 
+// [listing add_band_lanes]
+// Four pixels at a time. In a band of height H, a pixel's coverage is H (P_left - P_right),
+// where P of a side is how much of the pixel lies right of it, averaged over the band: the mean,
+// over the piece's x range [lo, lo + d], of clamp(i + 1/2 - x, 0, 1). Along the piece,
+// g = i + 1/2 - x falls linearly from g0 = i + 1/2 - lo by d: it is at least 1 (the pixel wholly
+// right) up to the fraction ta = (g0 - 1) / d of the way, at most 0 from tb = g0 / d on, and in
+// between its mean is g0 - d (ta + tb) / 2. Both clamps make P exact for any pixel of the row:
+// 1 right of the piece, 0 left of it, with no test of which cells the piece crosses. A vertical
+// piece (d = 0) gets a huge 1/d, so ta and tb are 0 or 1 and P = clamp(g0, 0, 1).
+typedef float Lanes __attribute__((vector_size(16)));
+constexpr Lanes lane_offsets = {0.5f, 1.5f, 2.5f, 3.5f};  // the right sides of pixels 0..3
+
+inline Lanes clamp01(Lanes v) {
+#if defined(__SSE__)
+  return _mm_min_ps(_mm_max_ps(v, Lanes{}), Lanes{} + 1.0f);  // one instruction each
+#else
+  const Lanes zero = {}, one = zero + 1.0f;
+  v = v > zero ? v : zero;
+  return v < one ? v : one;
+#endif
+}
+
+struct PieceLanes {
+  double lo;              // the piece's least x
+  float inverse, half_d;  // 1 / d (huge for a vertical piece) and d / 2
+  PieceLanes(double x0, double x1)
+      : lo(std::min(x0, x1)),
+        inverse(1.0f / std::max(static_cast<float>(std::abs(x1 - x0)), 1e-30f)),
+        half_d(static_cast<float>(std::abs(x1 - x0)) / 2) {}
+  // P for pixels column .. column + 3.
+  Lanes right_of(int column) const {
+    const Lanes g0 = static_cast<float>(column - lo) + lane_offsets;
+    const Lanes ta = clamp01((g0 - 1.0f) * inverse), tb = clamp01(g0 * inverse);
+    return ta + (tb - ta) * (g0 - half_d * (ta + tb));
+  }
+};
+
+inline void add_four(float* pixels, Lanes values) {
+  Lanes v;
+  std::memcpy(&v, pixels, sizeof v);
+  v += values;
+  std::memcpy(pixels, &v, sizeof v);
+}
+
+// Adds four values to the pixels from `first` on; at the canvas's right edge, only those on it.
+inline void add_lanes(float* row, int first, int width, Lanes values) {
+  if (first + 4 <= width) [[likely]]
+    return add_four(row + first, values);
+  for (int i = 0; first + i < width; ++i) row[first + i] += values[i];
+}
+
+// A band summed onto the row four pixels at a time: groups of four from the left piece's first
+// column (or the canvas's) until past its last, whole groups of H while they end before the
+// right piece, then groups until past the right piece's last column (or the canvas's). Pixels
+// a group passes beyond the triangle get exactly 0.
+void add_band_lanes(float* row, int width, const Band& b) {
+  if (b.right_last < 0 || b.left_first >= width) return;  // wholly off the canvas
+  const PieceLanes left(b.left0, b.left1), right(b.right0, b.right1);
+  const auto height = static_cast<float>(b.y1 - b.y0);
+  int column = std::max(b.left_first, 0);
+  // Left of the right piece's first column, P_right is 0; right of the left piece, P_left is 1.
+  for (; column <= b.left_last && column + 4 <= b.right_first; column += 4) {
+    add_lanes(row, column, width, height * left.right_of(column));
+  }
+  for (; column <= b.left_last; column += 4) {
+    add_lanes(row, column, width, height * (left.right_of(column) - right.right_of(column)));
+  }
+  const Lanes inside = Lanes{} + height;
+  const int inside_end = std::min(b.right_first, width);  // the pixels wholly inside end here
+  for (; column + 8 <= inside_end; column += 8) {
+    add_four(row + column, inside);
+    add_four(row + column + 4, inside);
+  }
+  if (column + 4 <= inside_end) {
+    add_four(row + column, inside);
+    column += 4;
+  }
+  const int last = std::min(b.right_last, width - 1);
+  for (; column <= last; column += 4) {
+    add_lanes(row, column, width, height * (1.0f - right.right_of(column)));
+  }
+}
+// [/listing]
+
 // [listing add_rows]
 template <Blend blend, class Put>
-void add_rows(CoverageCanvas& canvas, RowWalker& walker, RowCells& cells, int first_row,
+void add_rows(CoverageCanvas& canvas, const ByHeight& v, RowCells& cells, int first_row,
               int last_row, Put put) {
-  constexpr bool summed = blend == Blend::sum;
   bool cells_started = false;
-  for (int row = first_row; row <= last_row; ++row) {
-    bool in_cells = false;
-    walker.next_row(row, [&](const Band& band, bool split) {
-      // Summed, a row's bands add up; composited, a pixel takes its coverage once.
-      if ((summed || !split) &&
-          add_band_directly<summed>(canvas.row(row), canvas.width(), band, put)) {
-        return;
-      }
+  walk_bands(v, first_row, last_row, [&](int row, const Band& band, Part part) {
+    float* const pixels = canvas.row(row);
+    if constexpr (blend == Blend::sum) {
+      add_band_lanes(pixels, canvas.width(), band);  // summed, the bands of a row add up
+    } else {
+      // Composited, a pixel takes its coverage at once: through the cells where the sides meet
+      // and in the row of the middle vertex.
+      if (part == Part::whole_row && add_band_directly(pixels, canvas.width(), band, put)) return;
       if (!cells_started) cells.start_row(canvas.width());  // once per triangle, if at all
-      cells_started = in_cells = true;
+      cells_started = true;
       add_band(cells, band);
-    });
-    if (in_cells) cells.add_to_canvas(canvas, row, blend);
-  }
+      if (part != Part::below_middle) cells.add_to_canvas(canvas, row, blend);
+    }
+  });
 }
 // [/listing]
 
@@ -372,9 +428,9 @@ double doubled_area(const Triangle& t) {
 void add_edges_in_row(RowCells& cells, const Triangle& triangle, int row) {
   const double doubled = doubled_area(triangle);
   if (!std::isfinite(doubled) || doubled == 0) return;
-  RowWalker walker(triangle);
-  walker.start(row);
-  walker.next_row(row, [&](const Band& band, bool) { add_band(cells, band); });
+  const ByHeight v = sorted_by_height(triangle);
+  if (row < column_of(v.low.y) || row > column_of(v.high.y)) return;
+  walk_bands(v, row, row, [&](int, const Band& band, Part) { add_band(cells, band); });
 }
 
 // [listing draw_triangle_area]
@@ -382,17 +438,16 @@ void draw_triangle_area(CoverageCanvas& canvas, const Triangle& triangle, RowCel
                         Blend blend) {
   const double doubled = doubled_area(triangle);
   if (!std::isfinite(doubled) || doubled == 0) return;
-  RowWalker walker(triangle);
-  const int first_row = std::max(0, column_of(walker.low_y()));
-  const int last_row = std::min(canvas.height() - 1, column_of(walker.high_y()));
+  const ByHeight sorted = sorted_by_height(triangle);
+  const int first_row = std::max(0, column_of(sorted.low.y));
+  const int last_row = std::min(canvas.height() - 1, column_of(sorted.high.y));
   if (first_row > last_row) return;
-  walker.start(first_row);
   // One loop per blend, so the rows do not decide the blend at every pixel.
   if (blend == Blend::sum) {
-    add_rows<Blend::sum>(canvas, walker, cells, first_row, last_row,
+    add_rows<Blend::sum>(canvas, sorted, cells, first_row, last_row,
                          [](float& v, float c) { v += c; });
   } else {
-    add_rows<Blend::over>(canvas, walker, cells, first_row, last_row,
+    add_rows<Blend::over>(canvas, sorted, cells, first_row, last_row,
                           [](float& v, float c) { v += c * (1.0f - v); });
   }
 }
