@@ -339,7 +339,7 @@ struct PieceLanes {
   float inverse, half_d;  // 1 / d (huge for a vertical piece) and d / 2
   PieceLanes(double x0, double x1)
       : lo(std::min(x0, x1)),
-        inverse(1.0f / std::max(static_cast<float>(std::abs(x1 - x0)), 1e-30f)),
+        inverse(1.0f / (static_cast<float>(std::abs(x1 - x0)) + 1e-30f)),
         half_d(static_cast<float>(std::abs(x1 - x0)) / 2) {}
   // P for pixels column .. column + 3.
   Lanes right_of(int column) const {
@@ -372,11 +372,12 @@ void add_band_lanes(float* row, int width, const Band& b) {
   const PieceLanes left(b.left0, b.left1), right(b.right0, b.right1);
   const auto height = static_cast<float>(b.y1 - b.y0);
   int column = std::max(b.left_first, 0);
+  const int left_last = std::min(b.left_last, width - 1);
   // Left of the right piece's first column, P_right is 0; right of the left piece, P_left is 1.
-  for (; column <= b.left_last && column + 4 <= b.right_first; column += 4) {
+  for (; column <= left_last && column + 4 <= b.right_first; column += 4) {
     add_lanes(row, column, width, height * left.right_of(column));
   }
-  for (; column <= b.left_last; column += 4) {
+  for (; column <= left_last; column += 4) {
     add_lanes(row, column, width, height * (left.right_of(column) - right.right_of(column)));
   }
   const Lanes inside = Lanes{} + height;
@@ -440,7 +441,9 @@ void draw_triangle_area(CoverageCanvas& canvas, const Triangle& triangle, RowCel
   if (!std::isfinite(doubled) || doubled == 0) return;
   const ByHeight sorted = sorted_by_height(triangle);
   const int first_row = std::max(0, column_of(sorted.low.y));
-  const int last_row = std::min(canvas.height() - 1, column_of(sorted.high.y));
+  int last_row = column_of(sorted.high.y);
+  if (last_row - 0.5 >= sorted.high.y) --last_row;  // a row that the top only touches
+  last_row = std::min(canvas.height() - 1, last_row);
   if (first_row > last_row) return;
   // One loop per blend, so the rows do not decide the blend at every pixel.
   if (blend == Blend::sum) {
