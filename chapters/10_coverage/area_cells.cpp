@@ -367,21 +367,26 @@ inline void add_lanes(float* row, int first, int width, Lanes values) {
 // column (or the canvas's) until past its last, whole groups of H while they end before the
 // right piece, then groups until past the right piece's last column (or the canvas's). Pixels
 // a group passes beyond the triangle get exactly 0.
-void add_band_lanes(float* row, int width, const Band& b) {
-  if (b.right_last < 0 || b.left_first >= width) return;  // wholly off the canvas
-  const PieceLanes left(b.left0, b.left1), right(b.right0, b.right1);
-  const auto height = static_cast<float>(b.y1 - b.y0);
-  int column = std::max(b.left_first, 0);
-  const int left_last = std::min(b.left_last, width - 1);
+void add_band_lanes(float* row, int width, double y0, double y1, double left0, double left1,
+                    double right0, double right1, int left_first, int left_last, int right_first,
+                    int right_last) {
+  if (right_last < 0 || left_first >= width) return;  // wholly off the canvas
+  const PieceLanes left(left0, left1), right(right0, right1);
+  const auto height = static_cast<float>(y1 - y0);
+  int column = std::max(left_first, 0);
+  if (right_last < column + 4 && column + 4 <= width) {  // the whole band in one group
+    return add_four(row + column, height * (left.right_of(column) - right.right_of(column)));
+  }
+  left_last = std::min(left_last, width - 1);
   // Left of the right piece's first column, P_right is 0; right of the left piece, P_left is 1.
-  for (; column <= left_last && column + 4 <= b.right_first; column += 4) {
+  for (; column <= left_last && column + 4 <= right_first; column += 4) {
     add_lanes(row, column, width, height * left.right_of(column));
   }
   for (; column <= left_last; column += 4) {
     add_lanes(row, column, width, height * (left.right_of(column) - right.right_of(column)));
   }
   const Lanes inside = Lanes{} + height;
-  const int inside_end = std::min(b.right_first, width);  // the pixels wholly inside end here
+  const int inside_end = std::min(right_first, width);  // the pixels wholly inside end here
   for (; column + 8 <= inside_end; column += 8) {
     add_four(row + column, inside);
     add_four(row + column + 4, inside);
@@ -390,7 +395,7 @@ void add_band_lanes(float* row, int width, const Band& b) {
     add_four(row + column, inside);
     column += 4;
   }
-  const int last = std::min(b.right_last, width - 1);
+  const int last = std::min(right_last, width - 1);
   for (; column <= last; column += 4) {
     add_lanes(row, column, width, height * (1.0f - right.right_of(column)));
   }
@@ -405,7 +410,9 @@ void add_rows(CoverageCanvas& canvas, const ByHeight& v, RowCells& cells, int fi
   walk_bands(v, first_row, last_row, [&](int row, const Band& band, Part part) {
     float* const pixels = canvas.row(row);
     if constexpr (blend == Blend::sum) {
-      add_band_lanes(pixels, canvas.width(), band);  // summed, the bands of a row add up
+      add_band_lanes(pixels, canvas.width(), band.y0, band.y1, band.left0, band.left1, band.right0,
+                     band.right1, band.left_first, band.left_last, band.right_first,
+                     band.right_last);  // summed, the bands of a row add up
     } else {
       // Composited, a pixel takes its coverage at once: through the cells where the sides meet
       // and in the row of the middle vertex.
