@@ -224,8 +224,10 @@ void walk_bands(const ByHeight& v, int first_row, int last_row, Visit&& visit) {
     }
   };
   double y0 = std::max(first_row - 0.5, v.low.y);
-  bool turned = y0 >= v.middle.y;  // past the middle vertex, the short side is on its upper edge
+  const bool turned = y0 >= v.middle.y;  // past the middle vertex: the short side's upper edge
   const RisingEdge* short_edge = turned ? &upper : &lower;
+  // The row where the short side turns (none if it has turned, or if the top is flat).
+  const int middle_row = turned || v.middle.y == v.high.y ? INT_MIN : column_of(v.middle.y);
   Side left{short_on_left ? short_edge : &along, 0, 0};
   Side right{short_on_left ? &along : short_edge, 0, 0};
   left.move_to(y0);
@@ -245,14 +247,13 @@ void walk_bands(const ByHeight& v, int first_row, int last_row, Visit&& visit) {
   for (int row = first_row; row <= last_row; ++row) {
     const double y1 = std::min(row + 0.5, v.high.y);
     Part part = Part::whole_row;
-    if (!turned && v.middle.y < y1) [[unlikely]] {  // the short side turns at the middle vertex
+    if (row == middle_row) [[unlikely]] {  // the short side turns at the middle vertex
       if (v.middle.y > y0) {
         band_to(row, v.middle.y, Part::below_middle);
         part = Part::above_middle;
       }
       short_side.edge = &upper;
       short_side.set(v.middle.x);
-      turned = true;
     }
     band_to(row, y1, part);
   }
