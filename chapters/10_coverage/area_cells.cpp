@@ -313,17 +313,19 @@ bool add_band_directly(float* row, int width, const Band& b, Put put) {
 }
 // [/listing]
 
-// [listing add_band_lanes]
-// Four pixels at a time. In a band of height H, a pixel's coverage is H (P_left - P_right),
-// where P of a side is how much of the pixel lies right of it, averaged over the band: the mean,
-// over the piece's x range [lo, lo + d], of clamp(i + 1/2 - x, 0, 1). Along the piece,
-// g = i + 1/2 - x falls linearly from g0 = i + 1/2 - lo by d: it is at least 1 (the pixel wholly
-// right) up to the fraction ta = (g0 - 1) / d of the way, at most 0 from tb = g0 / d on, and in
-// between its mean is g0 - d (ta + tb) / 2. Both clamps make P exact for any pixel of the row:
-// 1 right of the piece, 0 left of it, with no test of which cells the piece crosses. A vertical
-// piece (d = 0) gets a huge 1/d, so ta and tb are 0 or 1 and P = clamp(g0, 0, 1).
+// [listing right_of]
+// Four pixels at a time. In a band of height H, pixel i's coverage is H (P_left - P_right), where
+// P of a side's piece is the part of the pixel right of it, averaged over the band: the mean of
+// clamp(i + 1/2 - x, 0, 1) over the piece's x range [lo, lo + d] (a straight piece passes every
+// x of its range for the same share of its height). Along the piece, g = i + 1/2 - x falls
+// linearly from g0 = i + 1/2 - lo by d: it is at least 1 (the pixel wholly right of the piece)
+// for the first fraction ta = (g0 - 1) / d of the way, at most 0 from tb = g0 / d on, and in
+// between its mean is g0 - d (ta + tb) / 2. With both fractions clamped to [0, 1], P is right for
+// any pixel of the row: 1 right of the piece, 0 left of it, no test of which cells the piece
+// crosses. A vertical piece (d = 0) gets 1/d = 1e30: ta and tb are 0 or 1, P = clamp(g0, 0, 1).
+// In floats, since g0 is small where it matters: within 1e-6 of the exact area.
 typedef float Lanes __attribute__((vector_size(16)));
-constexpr Lanes lane_offsets = {0.5f, 1.5f, 2.5f, 3.5f};  // the right sides of pixels 0..3
+constexpr Lanes lane_offsets = {0.5f, 1.5f, 2.5f, 3.5f};  // i + 1/2 for four pixels from i = 0
 
 inline Lanes clamp01(Lanes v) {
 #if defined(__SSE__)
@@ -337,18 +339,19 @@ inline Lanes clamp01(Lanes v) {
 
 struct PieceLanes {
   double lo;              // the piece's least x
-  float inverse, half_d;  // 1 / d (huge for a vertical piece) and d / 2
+  float inverse, half_d;  // 1 / d and d / 2
   PieceLanes(double x0, double x1)
       : lo(std::min(x0, x1)),
         inverse(1.0f / (static_cast<float>(std::abs(x1 - x0)) + 1e-30f)),
         half_d(static_cast<float>(std::abs(x1 - x0)) / 2) {}
-  // P for pixels column .. column + 3.
-  Lanes right_of(int column) const {
-    const Lanes g0 = static_cast<float>(column - lo) + lane_offsets;
+  // P for pixels i .. i + 3.
+  Lanes right_of(int i) const {
+    const Lanes g0 = static_cast<float>(i - lo) + lane_offsets;
     const Lanes ta = clamp01((g0 - 1.0f) * inverse), tb = clamp01(g0 * inverse);
     return ta + (tb - ta) * (g0 - half_d * (ta + tb));
   }
 };
+// [/listing]
 
 inline void add_four(float* pixels, Lanes values) {
   Lanes v;
@@ -364,10 +367,12 @@ inline void add_lanes(float* row, int first, int width, Lanes values) {
   for (int i = 0; first + i < width; ++i) row[first + i] += values[i];
 }
 
-// A band summed onto the row four pixels at a time: groups of four from the left piece's first
-// column (or the canvas's) until past its last, whole groups of H while they end before the
-// right piece, then groups until past the right piece's last column (or the canvas's). Pixels
-// a group passes beyond the triangle get exactly 0.
+// [listing add_band_lanes]
+// A band summed onto the row four pixels at a time: a band within four pixels in one step;
+// otherwise groups of four from the left piece's first column (or the canvas's) until past its
+// last, whole groups of H while they end before the right piece, then groups until past the
+// right piece's last column (or the canvas's). A pixel that a group passes outside the triangle
+// gets exactly 0. The band's numbers come as arguments, so that they stay in registers.
 void add_band_lanes(float* row, int width, double y0, double y1, double left0, double left1,
                     double right0, double right1, int left_first, int left_last, int right_first,
                     int right_last) {
@@ -438,7 +443,7 @@ void add_edges_in_row(RowCells& cells, const Triangle& triangle, int row) {
   const double doubled = doubled_area(triangle);
   if (!std::isfinite(doubled) || doubled == 0) return;
   const ByHeight v = sorted_by_height(triangle);
-  if (row < column_of(v.low.y) || row > column_of(v.high.y)) return;
+  if (row < column_of(v.low.y) || row - 0.5 >= v.high.y) return;  // no band of the row inside
   walk_bands(v, row, row, [&](int, const Band& band, Part) { add_band(cells, band); });
 }
 
