@@ -7,40 +7,48 @@
 #include "chapters/08_fast_exact/hybrid.hpp"
 #include "chapters/08_fast_exact/pixel_writers.hpp"
 
+// The lane functions take and return vectors by value, and AVX2's are 32 bytes wide. GCC and
+// Clang note (-Wpsabi) that such a call passes them differently with and without AVX; these
+// functions have internal linkage and are always inlined, so no such call exists. For the whole
+// file: GCC gives the note after its end, past any pragma that would restore it.
+#pragma GCC diagnostic ignored "-Wpsabi"
+
 namespace tri::ch08 {
 namespace {
 
 // The lanes are GCC's and Clang's generic vectors, as in step 5, here exactly one register wide:
-// two doubles with SSE2 (every x86-64, the default build), four with AVX, eight with AVX-512.
-// Wider generic vectors than the target's registers were split badly: GCC 12 turned their
-// comparisons into one scalar comparison per lane. Masks are the integers comparisons give,
-// all bits set where true.
-#if defined(__AVX512F__)
-constexpr std::size_t register_bytes = 64;
-#elif defined(__AVX__)
-constexpr std::size_t register_bytes = 32;
-#else
-constexpr std::size_t register_bytes = 16;
-#endif
-typedef double Lanes __attribute__((vector_size(register_bytes)));
-typedef std::int64_t Integers __attribute__((vector_size(register_bytes)));
-constexpr std::size_t lanes_per_register = register_bytes / sizeof(double);
-static_assert(setup_lanes % lanes_per_register == 0);
+// two doubles with SSE2 (every x86-64, the default build), four with AVX2. Wider generic vectors
+// than the target's registers were split badly: GCC 12 turned their comparisons into one scalar
+// comparison per lane. Every function below is a template over the register (Lanes) and always
+// inlined, so that it is compiled for the instructions of the function that calls it.
+// Comparisons give Integers: all bits set where true.
+typedef double Sse2Lanes __attribute__((vector_size(16)));
+typedef double Avx2Lanes __attribute__((vector_size(32)));
+template <class Lanes>
+using IntegersOf = decltype(Lanes{} < Lanes{});
+template <class Lanes>
+constexpr std::size_t lanes_in = sizeof(Lanes) / sizeof(double);
 
-Lanes all(double x) noexcept {
+#define LANE_FUNCTION [[gnu::always_inline]] inline
+
+template <class Lanes>
+LANE_FUNCTION Lanes all(double x) noexcept {
   return Lanes{} + x;
 }
 
 // 1.0 where the mask is set and 0.0 elsewhere: the mask's bits over those of 1.0.
-Lanes ones_where(Integers mask) noexcept {
-  return (Lanes)(mask & (Integers)all(1.0));
+template <class Lanes>
+LANE_FUNCTION Lanes ones_where(IntegersOf<Lanes> mask) noexcept {
+  return (Lanes)(mask & (IntegersOf<Lanes>)all<Lanes>(1.0));
 }
 
 // Written as a comparison and a choice, which GCC compiles to one minpd or maxpd.
-Lanes min(Lanes a, Lanes b) noexcept {
+template <class Lanes>
+LANE_FUNCTION Lanes min(Lanes a, Lanes b) noexcept {
   return a < b ? a : b;
 }
-Lanes max(Lanes a, Lanes b) noexcept {
+template <class Lanes>
+LANE_FUNCTION Lanes max(Lanes a, Lanes b) noexcept {
   return a < b ? b : a;
 }
 
@@ -50,50 +58,60 @@ Lanes max(Lanes a, Lanes b) noexcept {
 // default rounding mode). Subtracting it again gives that integer as a double.
 constexpr double round_magic = 6755399441055744.0;
 
-Lanes nearest_even(Lanes x) noexcept {
+template <class Lanes>
+LANE_FUNCTION Lanes nearest_even(Lanes x) noexcept {
   return (x + round_magic) - round_magic;
 }
 
 // floor(x): one less where rounding went up.
-Lanes floor_lanes(Lanes x) noexcept {
+template <class Lanes>
+LANE_FUNCTION Lanes floor_lanes(Lanes x) noexcept {
   const Lanes r = nearest_even(x);
-  return r - ones_where(r > x);
+  return r - ones_where<Lanes>(r > x);
 }
 
 // snap_to_256ths in lanes, for |p| <= 2^16: p * 256 rounded to the nearest integer, halves up.
 // x - r is exact (r is the integer nearest x), and it is 0.5 only for a half that went down.
-Lanes snap(Lanes p) noexcept {
+template <class Lanes>
+LANE_FUNCTION Lanes snap(Lanes p) noexcept {
   const Lanes x = p * 256.0;
   const Lanes r = nearest_even(x);
-  return r + ones_where(x - r >= 0.5);
+  return r + ones_where<Lanes>(x - r >= 0.5);
 }
 
 // A whole number |x| < 2^51 as a 64-bit integer, without a conversion instruction (SSE2 has none
 // for 64 bits): x + 1.5 * 2^52 holds x in the low bits of its significand.
-Integers to_integers(Lanes x) noexcept {
-  return (Integers)(x + round_magic) - (Integers)all(round_magic);
+template <class Lanes>
+LANE_FUNCTION IntegersOf<Lanes> to_integers(Lanes x) noexcept {
+  using Integers = IntegersOf<Lanes>;
+  return (Integers)(x + round_magic) - (Integers)all<Lanes>(round_magic);
 }
 // [/listing]
 
 // [listing lane_edge]
+template <class Lanes>
 struct EdgeLanes {
   Lanes value, step_x, step_y;
 };
 
 // make_edge in lanes: the edge a -> b at the origin pixel (px, py, in 1/256 pixel). Every
 // product and difference is an integer below 2^51, so exact in doubles; dividing by 256 too.
-EdgeLanes edge_lanes(Lanes ax, Lanes ay, Lanes bx, Lanes by, Lanes px, Lanes py) noexcept {
+template <class Lanes>
+LANE_FUNCTION EdgeLanes<Lanes> edge_lanes(Lanes ax, Lanes ay, Lanes bx, Lanes by, Lanes px,
+                                          Lanes py) noexcept {
   const Lanes e = (bx - ax) * (py - ay) - (by - ay) * (px - ax);
   const Lanes quotient = e * (1.0 / 256);
   const Lanes value = floor_lanes(quotient);
   // The top-left bias: minus one for an edge that is not top-left where e is a multiple of 256.
-  const Integers top_left = ((ay == by) & (bx < ax)) | (by < ay);
-  return {value - ones_where((value == quotient) & ~top_left), ay - by, bx - ax};
+  const IntegersOf<Lanes> top_left = ((ay == by) & (bx < ax)) | (by < ay);
+  return {value - ones_where<Lanes>((value == quotient) & ~top_left), ay - by, bx - ax};
 }
 // [/listing]
 
 // Stores one register of lanes into lanes first.. of a field of SetupLanes.
-void store(Integers values, std::array<std::int64_t, setup_lanes>& field, std::size_t first) {
+template <class Integers>
+LANE_FUNCTION void store(Integers values, std::array<std::int64_t, setup_lanes>& field,
+                         std::size_t first) {
   std::memcpy(field.data() + first, &values, sizeof values);
 }
 
@@ -102,8 +120,10 @@ using Vertices = std::array<std::array<double, setup_lanes>, 6>;
 
 // [listing set_up_register]
 // set_up_lanes for the lanes first.. of one register.
-void set_up_register(const Vertices& vertices, std::size_t first, int width, int height,
-                     SetupLanes& lanes) noexcept {
+template <class Lanes>
+LANE_FUNCTION void set_up_register(const Vertices& vertices, std::size_t first, int width,
+                                   int height, SetupLanes& lanes) noexcept {
+  using Integers = IntegersOf<Lanes>;
   Lanes x[3], y[3];
   for (std::size_t v = 0; v < 3; ++v) {
     std::memcpy(&x[v], vertices[2 * v].data() + first, sizeof(Lanes));
@@ -123,16 +143,16 @@ void set_up_register(const Vertices& vertices, std::size_t first, int width, int
   const Lanes min_y = min(min(y[0], y[1]), y[2]), max_y = max(max(y[0], y[1]), y[2]);
   const Lanes x0 = max(-floor_lanes(min_x * (-1.0 / 256)), Lanes{});
   const Lanes y0 = max(-floor_lanes(min_y * (-1.0 / 256)), Lanes{});
-  const Lanes x1 = min(floor_lanes(max_x * (1.0 / 256)), all(width - 1));
-  const Lanes y1 = min(floor_lanes(max_y * (1.0 / 256)), all(height - 1));
+  const Lanes x1 = min(floor_lanes(max_x * (1.0 / 256)), all<Lanes>(width - 1));
+  const Lanes y1 = min(floor_lanes(max_y * (1.0 / 256)), all<Lanes>(height - 1));
   // Twice the signed area: zero covers nothing, negative is clockwise and gets turned around.
   const Lanes area = (x[1] - x[0]) * (y[2] - y[0]) - (y[1] - y[0]) * (x[2] - x[0]);
   const Lanes bx = area < 0 ? x[2] : x[1], by = area < 0 ? y[2] : y[1];
   const Lanes cx = area < 0 ? x[1] : x[2], cy = area < 0 ? y[1] : y[2];
   const Lanes px = x0 * 256.0, py = y0 * 256.0;
-  const EdgeLanes edges[3] = {edge_lanes(bx, by, cx, cy, px, py),
-                              edge_lanes(cx, cy, x[0], y[0], px, py),
-                              edge_lanes(x[0], y[0], bx, by, px, py)};
+  const EdgeLanes<Lanes> edges[3] = {edge_lanes(bx, by, cx, cy, px, py),
+                                     edge_lanes(cx, cy, x[0], y[0], px, py),
+                                     edge_lanes(x[0], y[0], bx, by, px, py)};
   for (std::size_t e = 0; e < 3; ++e) {
     store(to_integers(edges[e].value), lanes.value[e], first);
     store(to_integers(edges[e].step_x), lanes.step_x[e], first);
@@ -145,17 +165,47 @@ void set_up_register(const Vertices& vertices, std::size_t first, int width, int
   store(to_integers(max(max_x - min_x, max_y - min_y)), lanes.vertex_extent, first);
   const Integers drawn = (x0 <= x1) & (y0 <= y1) & (area != 0);
   const Integers result = (~near & 2) | (near & drawn & 1);  // LaneResult's numbers
-  for (std::size_t i = 0; i < lanes_per_register; ++i) {
+  for (std::size_t i = 0; i < lanes_in<Lanes>; ++i) {
     lanes.result[first + i] = static_cast<LaneResult>(result[i]);
   }
 }
 // [/listing]
 
+template <class Lanes>
+LANE_FUNCTION void set_up_registers(const Vertices& vertices, int width, int height,
+                                    SetupLanes& lanes) noexcept {
+  for (std::size_t first = 0; first < setup_lanes; first += lanes_in<Lanes>) {
+    set_up_register<Lanes>(vertices, first, width, height, lanes);
+  }
+}
+
+#if defined(__x86_64__) && !defined(__AVX2__)
+constexpr bool can_choose_avx2 = true;
+// The same code compiled for AVX2: four lanes per instruction, three operands (no copies).
+__attribute__((target("avx2"))) void set_up_registers_avx2(const Vertices& vertices, int width,
+                                                           int height, SetupLanes& lanes) noexcept {
+  set_up_registers<Avx2Lanes>(vertices, width, height, lanes);
+}
+#else
+constexpr bool can_choose_avx2 = false;
+void set_up_registers_avx2(const Vertices& vertices, int width, int height,
+                           SetupLanes& lanes) noexcept {
+  set_up_registers<Sse2Lanes>(vertices, width, height, lanes);
+}
+#endif
+
 }  // namespace
+
+LaneInstructions widest_lane_instructions() noexcept {
+#if defined(__x86_64__) && !defined(__AVX2__)
+  if (__builtin_cpu_supports("avx2")) return LaneInstructions::avx2;
+#endif
+  return LaneInstructions::portable;
+}
 
 // [listing set_up_lanes]
 void set_up_lanes(std::span<const SceneTriangle> triangles, int width, int height,
-                  SetupLanes& lanes) noexcept {
+                  SetupLanes& lanes, LaneInstructions instructions) noexcept {
   // The vertices as a structure of arrays. Lanes past the triangles given keep zeros: zero area.
   Vertices vertices{};
   const std::size_t count = std::min<std::size_t>(triangles.size(), setup_lanes);
@@ -165,8 +215,10 @@ void set_up_lanes(std::span<const SceneTriangle> triangles, int width, int heigh
       vertices[2 * v + 1][i] = triangles[i].vertices[v].y;
     }
   }
-  for (std::size_t first = 0; first < setup_lanes; first += lanes_per_register) {
-    set_up_register(vertices, first, width, height, lanes);
+  if (can_choose_avx2 && instructions == LaneInstructions::avx2) {
+    set_up_registers_avx2(vertices, width, height, lanes);
+  } else {
+    set_up_registers<Sse2Lanes>(vertices, width, height, lanes);
   }
 }
 // [/listing]
@@ -178,9 +230,10 @@ template <PixelWriter Writer>
 void draw_groups(Canvas& canvas, std::span<const SceneTriangle> triangles) {
   const int width = canvas.width(), height = canvas.height();
   SetupLanes lanes;
+  const LaneInstructions instructions = widest_lane_instructions();
   while (!triangles.empty()) {
     const std::size_t count = std::min<std::size_t>(triangles.size(), setup_lanes);
-    set_up_lanes(triangles, width, height, lanes);
+    set_up_lanes(triangles, width, height, lanes, instructions);
     for (std::size_t i = 0; i < count; ++i) {
       if (lanes.result[i] == LaneResult::set_up) {
         Writer writer(canvas, triangles[i].color);
