@@ -24,6 +24,13 @@ namespace {
 // Comparisons give Integers: all bits set where true.
 typedef double Sse2Lanes __attribute__((vector_size(16)));
 typedef double Avx2Lanes __attribute__((vector_size(32)));
+// What the build's own instructions hold: SSE2's two lanes by default, AVX2's four with
+// -march=native (TUTORIAL_NATIVE) on a host that has them.
+#if defined(__AVX2__)
+using BuildLanes = Avx2Lanes;
+#else
+using BuildLanes = Sse2Lanes;
+#endif
 template <class Lanes>
 using IntegersOf = decltype(Lanes{} < Lanes{});
 template <class Lanes>
@@ -187,12 +194,14 @@ __attribute__((target("avx2"))) void set_up_registers_avx2(const Vertices& verti
   set_up_registers<Avx2Lanes>(vertices, width, height, lanes);
 }
 #else
-constexpr bool can_choose_avx2 = false;
+constexpr bool can_choose_avx2 = false;  // not x86-64, or a build for AVX2 already
 void set_up_registers_avx2(const Vertices& vertices, int width, int height,
                            SetupLanes& lanes) noexcept {
-  set_up_registers<Sse2Lanes>(vertices, width, height, lanes);
+  set_up_registers<BuildLanes>(vertices, width, height, lanes);
 }
 #endif
+
+#undef LANE_FUNCTION
 
 }  // namespace
 
@@ -218,7 +227,7 @@ void set_up_lanes(std::span<const SceneTriangle> triangles, int width, int heigh
   if (can_choose_avx2 && instructions == LaneInstructions::avx2) {
     set_up_registers_avx2(vertices, width, height, lanes);
   } else {
-    set_up_registers<Sse2Lanes>(vertices, width, height, lanes);
+    set_up_registers<BuildLanes>(vertices, width, height, lanes);
   }
 }
 // [/listing]
