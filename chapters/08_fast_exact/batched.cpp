@@ -137,13 +137,15 @@ LANE_FUNCTION void set_up_register(const Vertices& vertices, std::size_t first, 
     std::memcpy(&y[v], vertices[2 * v + 1].data() + first, sizeof(Lanes));
   }
   // Doubles are exact only for integers below 2^53, which bounds the coordinates: a lane with a
-  // vertex beyond ±2^16 pixels goes to the scalar setup_triangle (its numbers here are unused).
+  // vertex beyond ±2^16 pixels goes to the scalar setup_triangle. Its vertices are zeroed here,
+  // so every number the lanes form stays in range. A multiplication by 1 or 0, since GCC 12
+  // compiled the mask's bits over theirs into a scalar choice per lane for SSE2.
   const Lanes highest = max(max(max(x[0], y[0]), max(x[1], y[1])), max(x[2], y[2]));
   const Lanes lowest = min(min(min(x[0], y[0]), min(x[1], y[1])), min(x[2], y[2]));
   const Integers near = (highest <= max_lane_coordinate) & (lowest >= -max_lane_coordinate);
   for (std::size_t v = 0; v < 3; ++v) {
-    x[v] = snap(x[v]);
-    y[v] = snap(y[v]);
+    x[v] = snap(x[v] * ones_where<Lanes>(near));
+    y[v] = snap(y[v] * ones_where<Lanes>(near));
   }
   // Candidate pixels: centres within the snapped extent (ceil and floor of 1/256 units), clipped.
   const Lanes min_x = min(min(x[0], x[1]), x[2]), max_x = max(max(x[0], x[1]), x[2]);
