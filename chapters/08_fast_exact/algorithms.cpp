@@ -3,6 +3,7 @@
 #include <array>
 #include <string_view>
 
+#include "chapters/08_fast_exact/batched.hpp"
 #include "chapters/08_fast_exact/blocks.hpp"
 #include "chapters/08_fast_exact/hybrid.hpp"
 #include "chapters/08_fast_exact/incremental.hpp"
@@ -31,7 +32,7 @@ constexpr TriangleAlgorithm variant(std::string_view name, std::string_view summ
 }  // namespace
 
 std::span<const TriangleAlgorithm> triangle_algorithms() {
-  static constexpr std::array<TriangleAlgorithm, 8> algorithms{{
+  static constexpr std::array<TriangleAlgorithm, 9> algorithms{{
       variant("fast_incremental",
               "fixed_point_8 with edge values updated by one addition per pixel and edge",
               draw_triangle_incremental),
@@ -57,6 +58,10 @@ std::span<const TriangleAlgorithm> triangle_algorithms() {
               "fast_hybrid per 64x64 tile: the batch binned into tiles, which "
               "hardware_concurrency threads take one at a time",
               draw_triangle_hybrid, draw_batch_tiled, true),
+      variant("fast_batched",
+              "fast_hybrid with the setup of eight triangles at once in vector lanes, then "
+              "each filled in order",
+              draw_triangle_batched, draw_batch_batched),
   }};
   return algorithms;
 }

@@ -43,13 +43,13 @@ bool same_colors(const Canvas& a, const Canvas& b) {
 
 }  // namespace
 
-TEST_CASE("The chapter registers eight exact variants under stable names",
+TEST_CASE("The chapter registers nine exact variants under stable names",
           "[08_fast_exact][exactness]") {
   const auto algorithms = tri::ch08::triangle_algorithms();
-  REQUIRE(algorithms.size() == 8);
-  const char* names[] = {"fast_incremental", "fast_all_edges",     "fast_spans",
-                         "fast_blocks_8x8",  "fast_simd",          "fast_hybrid",
-                         "fast_threaded",    "fast_tiled_threaded"};
+  REQUIRE(algorithms.size() == 9);
+  const char* names[] = {"fast_incremental", "fast_all_edges",      "fast_spans",
+                         "fast_blocks_8x8",  "fast_simd",           "fast_hybrid",
+                         "fast_threaded",    "fast_tiled_threaded", "fast_batched"};
   for (std::size_t i = 0; i < algorithms.size(); ++i) {
     CHECK(algorithms[i].name == names[i]);
     CHECK(algorithms[i].chapter == "08_fast_exact");
@@ -132,8 +132,8 @@ TEST_CASE("Every variant is safe on degenerate, tiny-canvas and refused input",
 
 TEST_CASE("Batches through the registry's entry point equal drawing one by one",
           "[08_fast_exact][step6]") {
-  // fast_hybrid, fast_threaded and fast_tiled_threaded have batch entries; draw_triangles uses
-  // them.
+  // fast_hybrid, fast_threaded, fast_tiled_threaded and fast_batched have batch entries;
+  // draw_triangles uses them.
   tri::testing::Random random(31);
   std::vector<tri::SceneTriangle> scene;
   for (int i = 0; i < 300; ++i) {

@@ -1,0 +1,83 @@
+/// @file
+/// Step 10 · set up several triangles at once: the per-triangle setup of triangle_setup.cpp
+/// computed for setup_lanes triangles side by side in vector lanes (a structure of arrays), then
+/// each triangle filled in submission order by step 6's fill_hybrid.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <span>
+
+#include "chapters/08_fast_exact/triangle_setup.hpp"
+#include "common/canvas.hpp"
+#include "common/color.hpp"
+#include "common/scene.hpp"
+#include "common/triangle_algorithm.hpp"
+
+namespace tri::ch08 {
+
+/// How many triangles one pass of set_up_lanes sets up side by side.
+inline constexpr int setup_lanes = 8;
+
+/// The largest |coordinate| in pixels that the lanes set up: 2^16. Snapped, that is at most 2^24
+/// sub-pixel units, so every number the lanes form (vertex differences below 2^25, products
+/// below 2^50, twice the area below 2^51) is an integer that a double holds exactly. A triangle
+/// with a vertex farther out is set up by setup_triangle instead (LaneResult::scalar).
+inline constexpr double max_lane_coordinate = 65536.0;
+
+/// What set_up_lanes did with one lane's triangle.
+enum class LaneResult : std::uint8_t {
+  nothing = 0,  ///< set up in lanes: zero area or no candidate pixel, nothing to draw
+  set_up = 1,   ///< set up in lanes: SetupLanes::setup gives it
+  scalar = 2    ///< a vertex beyond max_lane_coordinate: call setup_triangle for it
+};
+
+/// Up to setup_lanes triangles set up at once, each field one array over the lanes (structure
+/// of arrays). Fields of lanes whose result is not `set_up` hold no meaning.
+struct SetupLanes {
+  std::array<LaneResult, setup_lanes> result;
+  /// Edge e of lane i is {value[e][i], step_x[e][i], step_y[e][i]}, as in TriangleSetup.
+  std::array<std::array<std::int64_t, setup_lanes>, 3> value, step_x, step_y;
+  /// The candidate pixels, as whole numbers of the lanes' width.
+  std::array<std::int64_t, setup_lanes> min_x, min_y, max_x, max_y;
+  std::array<std::int64_t, setup_lanes> vertex_extent;
+
+  /// Lane i's fields gathered into the TriangleSetup that setup_triangle gives for the same
+  /// triangle (result[i] must be `set_up`).
+  TriangleSetup setup(int lane) const noexcept {
+    const auto i = static_cast<std::size_t>(lane);
+    return {{EdgeFunction{value[0][i], step_x[0][i], step_y[0][i]},
+             EdgeFunction{value[1][i], step_x[1][i], step_y[1][i]},
+             EdgeFunction{value[2][i], step_x[2][i], step_y[2][i]}},
+            {{static_cast<int>(min_x[i]), static_cast<int>(min_y[i])},
+             {static_cast<int>(max_x[i]), static_cast<int>(max_y[i])}},
+            vertex_extent[i]};
+  }
+};
+
+/// The vector instructions set_up_lanes runs on: SSE2's two lanes per instruction, which every
+/// x86-64 has (and, as generic vectors, any other target), or AVX2's four.
+enum class LaneInstructions { portable, avx2 };
+
+/// AVX2 when this build is for x86-64 without it and the host has it (asked at run time), so
+/// that the portable build uses it where it can; portable otherwise (a build for AVX2 or wider
+/// compiles the portable code with its own instructions already).
+LaneInstructions widest_lane_instructions() noexcept;
+
+/// Sets up the first min(setup_lanes, size) triangles of `triangles` for a width x height canvas
+/// (at most 16384 a side) in lanes: the same snapping, zero-area cull, counter-clockwise order,
+/// candidate pixels, edges with the top-left bias and extent as setup_triangle. Vertices must be
+/// finite (draw_triangles checks them); lanes beyond the triangles given are `nothing`. Both
+/// choices of instructions give the same numbers.
+void set_up_lanes(std::span<const SceneTriangle> triangles, int width, int height,
+                  SetupLanes& lanes,
+                  LaneInstructions instructions = widest_lane_instructions()) noexcept;
+
+/// Step 10 · one triangle: set_up_lanes with one lane used, then fill_hybrid.
+void draw_triangle_batched(Canvas& canvas, const Triangle& triangle, Color color);
+
+/// Step 10 · a batch: set_up_lanes for each group of setup_lanes triangles, then fill_hybrid
+/// for each of them in submission order, so the pixels are draw_batch_hybrid's.
+void draw_batch_batched(Canvas& canvas, std::span<const SceneTriangle> triangles);
+
+}  // namespace tri::ch08
