@@ -1,7 +1,6 @@
 #include "common/triangle_algorithm.hpp"
 
 #include <cmath>
-#include <vector>
 
 #include "common/scene.hpp"
 
@@ -63,23 +62,38 @@ int nearest_integer(double x) noexcept {
 
 }  // namespace
 
-std::size_t draw_triangles(const TriangleAlgorithm& algorithm, Canvas& canvas,
-                           std::span<const SceneTriangle> triangles) {
+BatchDrawer::BatchDrawer(const TriangleAlgorithm& algorithm)
+    : algorithm_(&algorithm),
+      renderer_(algorithm.make_renderer != nullptr ? algorithm.make_renderer() : nullptr) {}
+
+std::size_t BatchDrawer::draw(Canvas& canvas, std::span<const SceneTriangle> triangles) {
   std::size_t refused = 0;
   for (const SceneTriangle& t : triangles)
     refused += validate_triangle(t.vertices) != DrawResult::drawn;
-  if (algorithm.draw_batch == nullptr) {
-    for (const SceneTriangle& t : triangles) draw_triangle(algorithm, canvas, t.vertices, t.color);
-  } else if (refused == 0) {
-    algorithm.draw_batch(canvas, triangles);
-  } else {
-    std::vector<SceneTriangle> valid;  // only when some input was refused
+  if (renderer_ == nullptr && algorithm_->draw_batch == nullptr) {
+    for (const SceneTriangle& t : triangles)
+      draw_triangle(*algorithm_, canvas, t.vertices, t.color);
+    return refused;
+  }
+  std::span<const SceneTriangle> batch = triangles;
+  if (refused > 0) {
+    valid_.clear();  // only when some input was refused
     for (const SceneTriangle& t : triangles) {
-      if (validate_triangle(t.vertices) == DrawResult::drawn) valid.push_back(t);
+      if (validate_triangle(t.vertices) == DrawResult::drawn) valid_.push_back(t);
     }
-    algorithm.draw_batch(canvas, valid);
+    batch = valid_;
+  }
+  if (renderer_ != nullptr) {
+    renderer_->draw(canvas, batch);
+  } else {
+    algorithm_->draw_batch(canvas, batch);
   }
   return refused;
+}
+
+std::size_t draw_triangles(const TriangleAlgorithm& algorithm, Canvas& canvas,
+                           std::span<const SceneTriangle> triangles) {
+  return BatchDrawer(algorithm).draw(canvas, triangles);
 }
 
 glm::ivec2 nearest_pixel(glm::dvec2 p) noexcept {

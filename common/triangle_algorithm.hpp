@@ -5,8 +5,10 @@
 
 #include <array>
 #include <cstddef>
+#include <memory>
 #include <span>
 #include <string_view>
+#include <vector>
 
 #include <glm/vec2.hpp>
 
@@ -38,6 +40,20 @@ using DrawTriangleFunction = void (*)(Canvas& canvas, const Triangle& triangle, 
 /// Called only with triangles that passed validate_triangle.
 using DrawBatchFunction = void (*)(Canvas& canvas, std::span<const SceneTriangle> triangles);
 
+/// What an algorithm keeps from one batch to the next, e.g. threads started once and kept, the
+/// way a real renderer keeps its workers across frames. Made before a run of batches (outside
+/// any timed region), used for each, destroyed after the last.
+class BatchRenderer {
+ public:
+  virtual ~BatchRenderer() = default;
+  /// Draws many triangles as if one after the other, on a canvas of any size. Called only with
+  /// triangles that passed validate_triangle, one batch at a time.
+  virtual void draw(Canvas& canvas, std::span<const SceneTriangle> triangles) = 0;
+};
+
+/// Makes an algorithm's BatchRenderer.
+using MakeRendererFunction = std::unique_ptr<BatchRenderer> (*)();
+
 /// A registered triangle algorithm.
 struct TriangleAlgorithm {
   std::string_view name;     ///< stable name, e.g. "scanline_single_loop"
@@ -47,6 +63,8 @@ struct TriangleAlgorithm {
   DrawTriangleFunction draw;
   bool threaded = false;                   ///< uses more than one thread
   DrawBatchFunction draw_batch = nullptr;  ///< optional: a faster way to draw many at once
+  /// Optional, instead of draw_batch: the same with state kept between batches (BatchDrawer).
+  MakeRendererFunction make_renderer = nullptr;
   /// Algorithms that differ only in numeric precision share a family ("fixed_point",
   /// "barycentric"); empty for the others. The report joins a family's points into a line.
   std::string_view precision_family = {};
@@ -71,9 +89,25 @@ DrawResult validate_triangle(const Triangle& triangle) noexcept;
 DrawResult draw_triangle(const TriangleAlgorithm& algorithm, Canvas& canvas,
                          const Triangle& triangle, Color color);
 
-/// Draws triangles in order with one algorithm: each is validated, refused ones are skipped, and
-/// the rest go through the algorithm's batch entry point when it has one (one by one otherwise).
-/// Returns how many were refused.
+/// Draws batches of triangles with one algorithm; every caller that draws batches goes through
+/// one. Each triangle is validated, refused ones are skipped, and the rest go to the algorithm's
+/// renderer (made once, by the constructor, and kept until the drawer goes), else to its batch
+/// entry point, else one by one. Make one before a run of frames and draw every frame with it,
+/// so that no frame pays for what the renderer keeps (starting its threads).
+class BatchDrawer {
+ public:
+  explicit BatchDrawer(const TriangleAlgorithm& algorithm);
+
+  /// Draws the triangles in order; returns how many were refused. One batch at a time.
+  std::size_t draw(Canvas& canvas, std::span<const SceneTriangle> triangles);
+
+ private:
+  const TriangleAlgorithm* algorithm_;
+  std::unique_ptr<BatchRenderer> renderer_;  // null unless the algorithm has make_renderer
+  std::vector<SceneTriangle> valid_;         // a batch's accepted triangles when some are refused
+};
+
+/// Draws one batch: a BatchDrawer made for it. Returns how many triangles were refused.
 std::size_t draw_triangles(const TriangleAlgorithm& algorithm, Canvas& canvas,
                            std::span<const SceneTriangle> triangles);
 

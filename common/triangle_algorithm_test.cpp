@@ -2,7 +2,10 @@
 
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <limits>
+#include <memory>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -43,6 +46,34 @@ const TriangleAlgorithm one_pixel_algorithm{
     [](Canvas& canvas, const Triangle& triangle, Color color) {
       canvas.put_pixel(nearest_pixel(triangle[0]), color);
     }};
+
+// A stand-in renderer with state: it numbers the batches it draws (from 1) and marks triangle k
+// of batch n at pixel (k, n), in the triangle's colour, so a test sees which renderer drew what.
+class NumberingRenderer final : public BatchRenderer {
+ public:
+  void draw(Canvas& canvas, std::span<const SceneTriangle> triangles) override {
+    ++batches_;
+    for (std::size_t k = 0; k < triangles.size(); ++k)
+      canvas.put_pixel({static_cast<int>(k), batches_}, triangles[k].color);
+  }
+
+ private:
+  int batches_ = 0;
+};
+
+const TriangleAlgorithm numbering_algorithm{
+    .name = "numbering",
+    .chapter = "00_test",
+    .rule = CoverageRule::approximate,
+    .summary = "marks each triangle of each batch at (index in batch, batch number)",
+    .draw = [](Canvas&, const Triangle&, Color) {},
+    .make_renderer = []() -> std::unique_ptr<BatchRenderer> {
+      return std::make_unique<NumberingRenderer>();
+    }};
+
+SceneTriangle scene_triangle(const Triangle& triangle, std::uint8_t red) {
+  return {triangle, Color{red, 0, 0, 255}};
+}
 
 }  // namespace
 
@@ -151,6 +182,33 @@ TEST_CASE("draw_triangle draws nothing for a refused triangle and says why",
     CHECK(testing::written_pixels(canvas).empty());
     CHECK(canvas.outside_writes() == 0);
   }
+}
+
+TEST_CASE("A batch drawer keeps the algorithm's renderer and hands it only accepted triangles",
+          "[common][algorithm][draw]") {
+  Canvas canvas(8, 8);
+  canvas.enable_write_counts();
+  BatchDrawer drawer(numbering_algorithm);
+  const std::vector<SceneTriangle> first{scene_triangle(ordinary, 11), scene_triangle(ordinary, 12),
+                                         scene_triangle(ordinary, 13)};
+  const std::vector<SceneTriangle> second{
+      scene_triangle(ordinary, 21), scene_triangle(with_coordinate(2, not_a_number), 22),
+      scene_triangle(with_coordinate(1, 2 * limit), 23), scene_triangle(ordinary, 24)};
+  CHECK(drawer.draw(canvas, first) == 0);
+  CHECK(drawer.draw(canvas, second) == 2);
+  CHECK(drawer.draw(canvas, std::span(first).first(1)) == 0);
+  // One renderer drew the three batches (rows 1, 2, 3), without the refused triangles.
+  CHECK(testing::written_pixels(canvas) ==
+        PixelSet{{0, 1}, {1, 1}, {2, 1}, {0, 2}, {1, 2}, {0, 3}});
+  CHECK(canvas.pixel(1, 2).r == 24);
+  CHECK(canvas.pixel(0, 3).r == 11);
+  // draw_triangles makes a drawer, and so a renderer, for each batch: both are batch 1.
+  Canvas once(8, 8);
+  CHECK(draw_triangles(numbering_algorithm, once, second) == 2);
+  CHECK(draw_triangles(numbering_algorithm, once, std::span(first).first(1)) == 0);
+  CHECK(once.pixel(0, 1).r == 11);
+  CHECK(once.pixel(1, 1).r == 24);
+  CHECK(rgba(once.pixel(0, 2)) == rgba(colors::black));
 }
 
 TEST_CASE("nearest_pixel rounds to the nearest pixel centre, halves up",

@@ -177,7 +177,8 @@ Findings check_rasterizer(const TriangleAlgorithm& algorithm, const RasterizerIn
   Findings findings;
   Checker checker(algorithm, input, findings);
   for (std::size_t i = 0; i < input.triangles.size(); ++i) checker.check_one_triangle(i);
-  if (algorithm.draw_batch != nullptr || algorithm.threaded) checker.check_batch();
+  if (algorithm.draw_batch != nullptr || algorithm.make_renderer != nullptr || algorithm.threaded)
+    checker.check_batch();
   return findings;
 }
 

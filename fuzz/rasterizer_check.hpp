@@ -29,9 +29,9 @@ std::string scene_line(const SceneTriangle& triangle);
 ///  - every pixel written holds the triangle's colour, every other pixel the background;
 ///  - an algorithm whose rule is top-left covers exactly the oracle's pixels when the vertices lie
 ///    on the 1/256 grid.
-/// For algorithms with a batch entry point or threads, it also draws all triangles at once with
-/// draw_triangles and checks that the picture equals drawing them one by one, that nothing is
-/// written outside, and that the same number of triangles is refused.
+/// For algorithms with a batch entry point (draw_batch, make_renderer) or threads, it also draws
+/// all triangles at once with draw_triangles and checks that the picture equals drawing them one
+/// by one, that nothing is written outside, and that the same number of triangles is refused.
 Findings check_rasterizer(const TriangleAlgorithm& algorithm, const RasterizerInput& input);
 
 }  // namespace tri::fuzz

@@ -26,7 +26,7 @@ std::vector<SceneTriangle> scene_triangles(const Scene& scene) {
   return triangles;
 }
 
-RenderStats render_scene(const Scene& scene, const TriangleAlgorithm* algorithm, Canvas& canvas,
+RenderStats render_scene(const Scene& scene, BatchDrawer* drawer, Canvas& canvas,
                          const std::function<void(std::size_t done)>& on_progress) {
   RenderStats stats;
   // Consecutive triangles are drawn as one batch, so a batch algorithm sees them together.
@@ -37,9 +37,9 @@ RenderStats render_scene(const Scene& scene, const TriangleAlgorithm* algorithm,
   std::size_t piece = 1;
   const auto flush = [&] {
     if (run.empty()) return;
-    if (algorithm == nullptr) throw std::logic_error("the scene has triangles but no algorithm");
+    if (drawer == nullptr) throw std::logic_error("the scene has triangles but no algorithm");
     const auto start = std::chrono::steady_clock::now();
-    const std::size_t refused = draw_triangles(*algorithm, canvas, run);
+    const std::size_t refused = drawer->draw(canvas, run);
     stats.rejected_triangles += refused;
     stats.triangles += run.size() - refused;
     run.clear();
@@ -66,6 +66,14 @@ RenderStats render_scene(const Scene& scene, const TriangleAlgorithm* algorithm,
   }
   flush();
   return stats;
+}
+
+RenderStats render_scene(const Scene& scene, const TriangleAlgorithm* algorithm, Canvas& canvas,
+                         const std::function<void(std::size_t done)>& on_progress) {
+  if (algorithm == nullptr)
+    return render_scene(scene, static_cast<BatchDrawer*>(nullptr), canvas, on_progress);
+  BatchDrawer drawer(*algorithm);
+  return render_scene(scene, &drawer, canvas, on_progress);
 }
 
 }  // namespace tri

@@ -22,11 +22,16 @@ struct RenderStats {
 /// A canvas of the scene's size and background.
 Canvas make_canvas(const Scene& scene);
 
-/// Draws every primitive in file order: runs of consecutive triangles with the algorithm (through
-/// draw_triangles, so non-finite input is refused and batch algorithms get whole runs), lines with
-/// chapter 01's Bresenham between the nearest pixel centres. The algorithm may be null when the
-/// scene has no triangles. With on_progress, runs are drawn in pieces sized to take about a tenth
-/// of a second, and on_progress hears how many primitives are done after each piece.
+/// Draws every primitive in file order: runs of consecutive triangles with the drawer (so
+/// non-finite input is refused and batch algorithms get whole runs), lines with chapter 01's
+/// Bresenham between the nearest pixel centres. The drawer may be null when the scene has no
+/// triangles. With on_progress, runs are drawn in pieces sized to take about a tenth of a second,
+/// and on_progress hears how many primitives are done after each piece. A caller that draws the
+/// scene many times keeps one drawer for all of them.
+RenderStats render_scene(const Scene& scene, BatchDrawer* drawer, Canvas& canvas,
+                         const std::function<void(std::size_t done)>& on_progress = {});
+
+/// The same with a drawer of the algorithm made for this one scene (null: no triangles).
 RenderStats render_scene(const Scene& scene, const TriangleAlgorithm* algorithm, Canvas& canvas,
                          const std::function<void(std::size_t done)>& on_progress = {});
 

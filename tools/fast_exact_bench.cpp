@@ -166,9 +166,9 @@ std::vector<const TriangleAlgorithm*> selected(const std::vector<TriangleAlgorit
 
 // The timed work, kept out of line so a profiler can single it out
 // (valgrind --tool=callgrind --toggle-collect='*timed_draw*').
-[[gnu::noinline]] void timed_draw(const TriangleAlgorithm& algorithm, Canvas& canvas,
+[[gnu::noinline]] void timed_draw(tri::BatchDrawer& drawer, Canvas& canvas,
                                   const std::vector<SceneTriangle>& triangles) {
-  tri::draw_triangles(algorithm, canvas, triangles);
+  drawer.draw(canvas, triangles);
 }
 
 std::uint64_t covered_pixels(const TriangleAlgorithm& algorithm, const BenchScene& scene) {
@@ -179,17 +179,16 @@ std::uint64_t covered_pixels(const TriangleAlgorithm& algorithm, const BenchScen
   return std::accumulate(counts.begin(), counts.end(), std::uint64_t{0});
 }
 
-// What one scene's rounds time: the ceiling's two fills first, then one draw per algorithm.
+// What one scene's rounds time: the ceiling's two fills first, then one draw per algorithm, each
+// through its drawer in `drawers` (made by the caller before the clock runs, one per algorithm).
 std::vector<std::function<void()>> scene_runs(const BenchScene& scene,
-                                              const std::vector<const TriangleAlgorithm*>& timed,
+                                              std::vector<tri::BatchDrawer>& drawers,
                                               Canvas& canvas) {
   std::vector<std::function<void()>> runs;
   for (const tri::CeilingFill fill : tri::ceiling_fills)
     runs.push_back(tri::ceiling_fill_run(canvas, fill, 1));
-  for (const TriangleAlgorithm* algorithm : timed) {
-    runs.emplace_back(
-        [&canvas, &scene, algorithm] { timed_draw(*algorithm, canvas, scene.triangles); });
-  }
+  for (tri::BatchDrawer& drawer : drawers)
+    runs.emplace_back([&canvas, &scene, &drawer] { timed_draw(drawer, canvas, scene.triangles); });
   return runs;
 }
 
@@ -304,7 +303,10 @@ void benchmark_scene(const BenchScene& scene, const std::vector<const TriangleAl
   Canvas canvas(scene.side, scene.side);
   NarrowCanvases narrow{{scene.side, scene.side}, {scene.side, scene.side}};
   const TimingPlan plan = timing_plan(options);
-  std::vector<std::function<void()>> runs = scene_runs(scene, timed, canvas);
+  // Kept for every draw of the scene: a renderer's threads start here, not in the rounds.
+  std::vector<tri::BatchDrawer> drawers;
+  for (const TriangleAlgorithm* algorithm : timed) drawers.emplace_back(*algorithm);
+  std::vector<std::function<void()>> runs = scene_runs(scene, drawers, canvas);
   if (std::any_of(timed.begin(), timed.end(),
                   [](const TriangleAlgorithm* a) { return a->name == "fast_spans"; })) {
     add_narrow_runs(scene, narrow, runs);

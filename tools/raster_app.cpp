@@ -108,7 +108,11 @@ void benchmark(const std::function<void()>& draw, std::size_t triangles,
 void benchmark(const Scene& scene, const TriangleAlgorithm* algorithm, long long frames,
                bool forced, std::ostream& out, std::ostream& err) {
   Canvas canvas = make_canvas(scene);
-  benchmark([&] { render_scene(scene, algorithm, canvas); }, count_triangles(scene),
+  // One drawer for every frame, made before the clock runs: a renderer's threads start once.
+  std::optional<BatchDrawer> drawer;
+  if (algorithm != nullptr) drawer.emplace(*algorithm);
+  BatchDrawer* kept = drawer ? &*drawer : nullptr;
+  benchmark([&] { render_scene(scene, kept, canvas); }, count_triangles(scene),
             [&] { return pixels_per_frame(scene, algorithm); }, frames, forced, out, err);
 }
 

@@ -19,14 +19,16 @@ namespace {
 // its entry points differ.
 constexpr TriangleAlgorithm variant(std::string_view name, std::string_view summary,
                                     DrawTriangleFunction draw,
-                                    DrawBatchFunction draw_batch = nullptr, bool threaded = false) {
+                                    DrawBatchFunction draw_batch = nullptr, bool threaded = false,
+                                    MakeRendererFunction make_renderer = nullptr) {
   return {.name = name,
           .chapter = "08_fast_exact",
           .rule = CoverageRule::top_left,
           .summary = summary,
           .draw = draw,
           .threaded = threaded,
-          .draw_batch = draw_batch};
+          .draw_batch = draw_batch,
+          .make_renderer = make_renderer};
 }
 
 }  // namespace
@@ -55,9 +57,9 @@ std::span<const TriangleAlgorithm> triangle_algorithms() {
               "fast_hybrid on bands of rows dealt to hardware_concurrency threads per batch",
               draw_triangle_hybrid, draw_batch_threaded, true),
       variant("fast_tiled_threaded",
-              "fast_hybrid per 64x64 tile: the batch binned into tiles, which "
-              "hardware_concurrency threads take one at a time",
-              draw_triangle_hybrid, draw_batch_tiled, true),
+              "fast_hybrid per tile: the batch binned into tiles, which hardware_concurrency "
+              "threads (started once, kept between batches) take one at a time",
+              draw_triangle_hybrid, nullptr, true, make_tiled_renderer),
       variant("fast_batched",
               "fast_hybrid with the setup of eight triangles at once in vector lanes, then "
               "each filled in order",

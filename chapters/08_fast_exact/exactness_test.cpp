@@ -1,13 +1,17 @@
 // Every variant of the chapter against the oracle (chapter 07), through the registry's entry.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <array>
+#include <cstddef>
 #include <limits>
+#include <utility>
 #include <vector>
 
 #include "chapters/07_exact_coverage/coverage_oracle.hpp"
 #include "chapters/07_exact_coverage/fixed_point.hpp"
 #include "chapters/08_fast_exact/algorithms.hpp"
+#include "chapters/08_fast_exact/hybrid.hpp"
 #include "chapters/08_fast_exact/test_triangles.hpp"
 #include "tests/support/pixels.hpp"
 
@@ -132,7 +136,7 @@ TEST_CASE("Every variant is safe on degenerate, tiny-canvas and refused input",
 
 TEST_CASE("Batches through the registry's entry point equal drawing one by one",
           "[08_fast_exact][step6]") {
-  // fast_hybrid, fast_threaded, fast_tiled_threaded and fast_batched have batch entries;
+  // fast_hybrid, fast_threaded and fast_batched have batch entries, fast_tiled_threaded a renderer;
   // draw_triangles uses them.
   tri::testing::Random random(31);
   std::vector<tri::SceneTriangle> scene;
@@ -151,5 +155,58 @@ TEST_CASE("Batches through the registry's entry point equal drawing one by one",
     CHECK(same_colors(batch, one_by_one));
     CHECK(same_counts(batch, one_by_one));
     CHECK(batch.outside_writes() == 0);
+  }
+}
+
+TEST_CASE("One drawer kept for successive batches draws what fast_hybrid draws serially",
+          "[08_fast_exact][step9]") {
+  // Each variant's drawer (fast_tiled_threaded's keeps its threads and bins) draws batches of
+  // overlapping colours on canvases of several sizes in turn, one batch with refused triangles
+  // among the others; every batch must equal the serial fast_hybrid of its accepted triangles.
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const std::array<std::pair<int, int>, 6> sizes{
+      {{150, 140}, {1100, 70}, {1, 1}, {600, 130}, {65, 13}, {150, 140}}};
+  for (const TriangleAlgorithm& algorithm : tri::ch08::triangle_algorithms()) {
+    tri::BatchDrawer drawer(algorithm);
+    for (std::size_t b = 0; b < sizes.size(); ++b) {
+      const auto [width, height] = sizes[b];
+      auto batch = tri::ch08::testing::overlapping_scene(40 + b, 500, std::max(width, height));
+      std::size_t refused = 0;
+      if (b == 2 || b == 3) {
+        // Refused triangles at the start, in the middle and at the end of the batch.
+        for (const std::size_t at : {std::size_t{0}, batch.size() / 2, batch.size()}) {
+          const Triangle bad =
+              b == 2 ? Triangle{{{0, 0}, {nan, 5}, {5, 0}}} : Triangle{{{0, 0}, {2e9, 5}, {5, 0}}};
+          batch.insert(batch.begin() + static_cast<std::ptrdiff_t>(at),
+                       {bad, tri::Color{255, 0, 0, 255}});
+          ++refused;
+        }
+      }
+      for (const bool counting : {true, false}) {
+        INFO(algorithm.name << ", batch " << b << " on " << width << "x" << height << ", counting "
+                            << counting);
+        const Canvas serial = tri::ch08::testing::drawn_on(width, height, counting, [&](Canvas& c) {
+          for (const auto& t : batch) {
+            if (tri::validate_triangle(t.vertices) == tri::DrawResult::drawn)
+              tri::ch08::draw_triangle_hybrid(c, t.vertices, t.color);
+          }
+        });
+        std::size_t reported = 0;
+        const Canvas kept = tri::ch08::testing::drawn_on(
+            width, height, counting, [&](Canvas& c) { reported = drawer.draw(c, batch); });
+        CHECK(reported == refused);
+        CHECK(kept.outside_writes() == 0);
+        CHECK(tri::ch08::testing::same_canvas(kept, serial));
+      }
+    }
+  }
+}
+
+TEST_CASE("A variant has at most one batch entry, and the tiled one keeps a renderer",
+          "[08_fast_exact][step9]") {
+  for (const TriangleAlgorithm& algorithm : tri::ch08::triangle_algorithms()) {
+    INFO(algorithm.name);
+    CHECK(!(algorithm.draw_batch != nullptr && algorithm.make_renderer != nullptr));
+    CHECK((algorithm.make_renderer != nullptr) == (algorithm.name == "fast_tiled_threaded"));
   }
 }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <memory>
 #include <system_error>
 #include <thread>
 #include <utility>
@@ -252,25 +253,8 @@ void TiledRenderer::help() noexcept {
 }
 // [/listing]
 
-void TiledRenderer::draw_once(Canvas& canvas, std::span<const SceneTriangle> triangles,
-                              int threads) {
-  TiledRenderer batch(1);  // no helpers of its own
-  batch.open(canvas, triangles);
-  std::vector<std::jthread> workers;
-  workers.reserve(static_cast<std::size_t>(std::max(threads - 1, 0)));
-  try {
-    while (static_cast<int>(workers.size()) < threads - 1) {
-      workers.emplace_back([&batch] { batch.work(); });
-    }
-  } catch (const std::system_error&) {
-    // No more threads to be had: the ones running take all the chunks and tiles.
-  }
-  batch.work();
-  // Each std::jthread joins when `workers` goes out of scope, before `batch`.
-}
-
-void draw_batch_tiled(Canvas& canvas, std::span<const SceneTriangle> triangles) {
-  TiledRenderer::draw_once(canvas, triangles, hardware_threads());
+std::unique_ptr<BatchRenderer> make_tiled_renderer() {
+  return std::make_unique<TiledRenderer>(hardware_threads());
 }
 
 }  // namespace tri::ch08

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <thread>
 #include <vector>
@@ -136,20 +137,16 @@ class TileBins {
 /// to draw, each from a shared counter. No chunk or tile belongs to a thread in advance, so a
 /// helper that wakes late or is slowed down simply takes fewer; draw() returns once every helper
 /// that took part has left. If a helper cannot be started, the others do its share.
-class TiledRenderer {
+class TiledRenderer final : public BatchRenderer {
  public:
   explicit TiledRenderer(int threads);
-  ~TiledRenderer();
+  ~TiledRenderer() override;
   TiledRenderer(const TiledRenderer&) = delete;
   TiledRenderer& operator=(const TiledRenderer&) = delete;
 
   /// Draws the batch as if one triangle after the other. One batch at a time: draw() is not to
   /// be called from two threads at once.
-  void draw(Canvas& canvas, std::span<const SceneTriangle> triangles);
-
-  /// The same for a single batch with `threads` threads started for it, which take part from
-  /// their first instruction and are joined before returning: no helper sleeps and wakes.
-  static void draw_once(Canvas& canvas, std::span<const SceneTriangle> triangles, int threads);
+  void draw(Canvas& canvas, std::span<const SceneTriangle> triangles) override;
 
  private:
   void open(Canvas& canvas, std::span<const SceneTriangle> triangles);  // bins and counters
@@ -168,8 +165,8 @@ class TiledRenderer {
   std::vector<std::jthread> helpers_;  // the last member: joined before the others go
 };
 
-/// Step 9 · the registered batch entry: TiledRenderer::draw_once with
-/// std::thread::hardware_concurrency() threads (its threads and bins made and released here).
-void draw_batch_tiled(Canvas& canvas, std::span<const SceneTriangle> triangles);
+/// Step 9 · the registered renderer: a TiledRenderer with one thread per hardware thread
+/// (hardware_threads()), kept by the caller's BatchDrawer for as many batches as it draws.
+std::unique_ptr<BatchRenderer> make_tiled_renderer();
 
 }  // namespace tri::ch08

@@ -88,11 +88,12 @@ std::vector<Timing> time_algorithms(std::span<const TriangleAlgorithm> algorithm
                                     const PreparedScene& prepared, const TimingPlan& plan) {
   Canvas canvas = make_canvas(prepared.scene);  // no write counts: they would be timed too
   const std::span<const SceneTriangle> triangles(prepared.triangles);
+  // Each algorithm's drawer is made before the clock runs and kept for all its draws: a
+  // renderer's threads are started once, as a real renderer's are.
+  std::vector<BatchDrawer> drawers(algorithms.begin(), algorithms.end());
   std::vector<std::function<void()>> draws;
-  for (const TriangleAlgorithm& algorithm : algorithms) {
-    draws.emplace_back(
-        [&canvas, &algorithm, triangles] { draw_triangles(algorithm, canvas, triangles); });
-  }
+  for (BatchDrawer& drawer : drawers)
+    draws.emplace_back([&canvas, &drawer, triangles] { drawer.draw(canvas, triangles); });
   return time_interleaved(draws, plan);
 }
 
