@@ -22,30 +22,40 @@ namespace tri::ch08 {
 static_assert(sizeof(Color) == sizeof(std::uint32_t), "a pixel is one 32-bit word");
 
 // [listing fill_pixels]
-/// Fills count pixels from first with one colour word, 8 pixels (two 16-byte stores) at a time:
-/// the last stores of a span overlap the ones before instead of finishing pixel by pixel. The
-/// word sits in a local vector that no store can alias, so it stays in a register. GCC 12
-/// compiles std::fill over Color (canvas.cpp) into one 4-byte store per pixel (see the README).
-inline void fill_pixels(Color* first, int count, std::uint32_t word) noexcept {
-  typedef std::uint32_t Four __attribute__((vector_size(16)));
-  const Four four = {word, word, word, word};
-  const auto store4 = [&four](Color* at) { std::memcpy(at, &four, sizeof four); };
-  if (count >= 8) {
-    int i = 0;
-    for (; i + 8 <= count; i += 8) {
-      store4(first + i);
-      store4(first + i + 4);
-    }
-    if (i < count) {
-      store4(first + count - 8);
-      store4(first + count - 4);
-    }
-  } else if (count >= 4) {
-    store4(first);
-    store4(first + count - 4);
+/// Fills count pixels from first with one colour word, in stores of Bytes bytes (16, 32 or 64;
+/// P = Bytes / 4 pixels each). A span of P pixels or more takes one store at its start, then
+/// stores at addresses that are multiples of Bytes, so that none of them straddles two cache
+/// lines, and one store that ends exactly at its end, overlapping the one before instead of
+/// finishing pixel by pixel. A shorter span goes to the next narrower store, and below 4 pixels to
+/// single words. The word sits in a local vector that no store can alias, so it stays in a
+/// register. Inlined always, so that a caller compiled for AVX2 or AVX-512 (spans.cpp) gets its
+/// 32- or 64-byte stores; where the target has no vector that wide, each becomes narrower stores.
+template <int Bytes>
+[[gnu::always_inline]] inline void fill_pixels_in(Color* first, int count,
+                                                  std::uint32_t word) noexcept {
+  static_assert(Bytes == 16 || Bytes == 32 || Bytes == 64);
+  constexpr int P = Bytes / 4;
+  typedef std::uint32_t Lanes __attribute__((vector_size(Bytes)));
+  const Lanes lanes = Lanes{} + word;
+  if (count >= P) {
+    std::memcpy(first, &lanes, sizeof lanes);
+    // Pixels to the first multiple of Bytes after first: 1 to P (pixels sit on 4-byte addresses).
+    const auto address = reinterpret_cast<std::uintptr_t>(first);
+    const int head = static_cast<int>(Bytes - address % Bytes) / 4;
+    for (int i = head; i < count - P; i += P) std::memcpy(first + i, &lanes, sizeof lanes);
+    std::memcpy(first + count - P, &lanes, sizeof lanes);
+  } else if constexpr (Bytes > 16) {
+    fill_pixels_in<Bytes / 2>(first, count, word);
   } else {
     for (int i = 0; i < count; ++i) std::memcpy(first + i, &word, sizeof word);
   }
+}
+
+/// fill_pixels_in with 16-byte stores, the widest every x86-64 has (SSE2): what the portable
+/// build writes with wherever no wider store was chosen at run time. GCC 12 compiles std::fill
+/// over Color (canvas.cpp) into one 4-byte store per pixel (see the README).
+inline void fill_pixels(Color* first, int count, std::uint32_t word) noexcept {
+  fill_pixels_in<16>(first, count, word);
 }
 // [/listing]
 

@@ -98,7 +98,12 @@ class SpanWalker {
   int last_row_;
 };
 
-/// Draws a prepared triangle the way draw_triangle_spans does, through either writer.
+/// The bytes of each store with which fill_spans fills a span of RowWriter on this host: 64 with
+/// AVX-512, 32 with AVX2, else 16 (SSE2, the portable build's), chosen once at load time.
+int span_store_bytes() noexcept;
+
+/// Draws a prepared triangle the way draw_triangle_spans does, through either writer. Through
+/// RowWriter, each span is one fill_pixels_in with the widest stores of span_store_bytes().
 template <PixelWriter Writer>
 void fill_spans(const TriangleSetup& setup, Writer& writer);
 extern template void fill_spans(const TriangleSetup&, RowWriter&);
