@@ -87,6 +87,7 @@ namespace {
 // [listing fill_rows]
 // fill_spans into the canvas's rows with stores of Bytes bytes: the row's first pixel moves up by
 // the stride, so nothing of the canvas is read again per row.
+// Bytes 0 stands for fill_pixels_avx512, which needs no test for empty spans.
 template <int Bytes>
 [[gnu::always_inline]] inline void fill_rows_in(const TriangleSetup& setup, RowWriter& writer) {
   SpanWalker walker(setup);
@@ -97,7 +98,13 @@ template <int Bytes>
   // After the canvas's top row, row ends one past its last pixel: a valid pointer, never used.
   for (int y = walker.first_row(); y <= walker.last_row(); ++y, row += stride, walker.next_row()) {
     const RowSpan s = walker.span();
-    if (!s.empty()) fill_pixels_in<Bytes>(row + s.first, s.last - s.first + 1, word);
+    if constexpr (Bytes == 0) {
+#if defined(TRI_CH08_HAS_AVX512_FILL)
+      fill_pixels_avx512(row + s.first, s.last - s.first + 1, word);  // empty: count 0
+#endif
+    } else if (!s.empty()) {
+      fill_pixels_in<Bytes>(row + s.first, s.last - s.first + 1, word);
+    }
   }
 }
 
@@ -115,7 +122,7 @@ __attribute__((target("avx2"))) void fill_rows(const TriangleSetup& setup, RowWr
   fill_rows_in<32>(setup, writer);
 }
 __attribute__((target("avx512f"))) void fill_rows(const TriangleSetup& setup, RowWriter& writer) {
-  fill_rows_in<64>(setup, writer);
+  fill_rows_in<0>(setup, writer);
 }
 __attribute__((target("default"))) int widest_store_bytes() {
   return 16;
