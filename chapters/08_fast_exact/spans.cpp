@@ -87,7 +87,7 @@ namespace {
 // [listing fill_rows]
 // fill_spans into the canvas's rows with stores of Bytes bytes: the row's first pixel moves up by
 // the stride, so nothing of the canvas is read again per row.
-// Bytes 0 stands for fill_pixels_avx512, which needs no test for empty spans.
+// Bytes 0 stands for fill_pixels_avx512 (64-byte stores), which needs no test for empty spans.
 template <int Bytes>
 [[gnu::always_inline]] inline void fill_rows_in(const TriangleSetup& setup, RowWriter& writer) {
   SpanWalker walker(setup);

@@ -121,7 +121,8 @@ void check_fill_pixels_in(int start, int count) {
     tri::ch08::fill_pixels_in<Bytes>(row.data() + start, count, std::bit_cast<std::uint32_t>(fill));
   }
   for (int x = 0; x < static_cast<int>(row.size()); ++x) {
-    INFO(Bytes << "-byte stores, start " << start << ", count " << count << ", pixel " << x);
+    INFO((Bytes == 0 ? 64 : Bytes)
+         << "-byte stores, start " << start << ", count " << count << ", pixel " << x);
     REQUIRE(row[static_cast<std::size_t>(x)] ==
             (x >= start && x < start + count ? fill : background));
   }
@@ -135,7 +136,6 @@ TEST_CASE("fill_pixels_in writes exactly the span for every length, start and st
     for (int count = 0; count <= 250; ++count) {
       check_fill_pixels_in<16>(start, count);
       check_fill_pixels_in<32>(start, count);
-      check_fill_pixels_in<64>(start, count);
     }
   }
 }
