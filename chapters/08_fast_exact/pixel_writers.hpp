@@ -27,10 +27,9 @@ static_assert(sizeof(Color) == sizeof(std::uint32_t), "a pixel is one 32-bit wor
 
 // [listing fill_pixels]
 /// Fills count pixels from first with one colour word, in stores of Bytes bytes (16 or 32; P =
-/// Bytes / 4 pixels each). A span of 2P pixels or more takes one store at its start, then two per
-/// loop step at addresses that are multiples of Bytes, so that none of them straddles two cache
-/// lines, and two that end exactly at its end, overlapping the ones before instead of finishing
-/// pixel by pixel (no test of what the loop left). A shorter span goes to the next narrower
+/// Bytes / 4 pixels each): two stores per loop step, then two that end exactly at the span's end,
+/// overlapping the ones before instead of finishing pixel by pixel, with no test of what the loop
+/// left. A span shorter than 2P pixels takes two overlapping stores, or goes to the next narrower
 /// store, and below 4 pixels to single words. The word sits in a local vector that no store can
 /// alias, so it stays in a register. Inlined always, so that a caller compiled for AVX2
 /// (spans.cpp) gets its 32-byte stores; without AVX2, each becomes two 16-byte stores.
@@ -42,15 +41,10 @@ template <int Bytes>
   typedef std::uint32_t Lanes __attribute__((vector_size(Bytes)));
   const Lanes lanes = Lanes{} + word;
   if (count >= 2 * P) {
-    std::memcpy(first, &lanes, sizeof lanes);
-    // Pixels to the first multiple of Bytes after first: 1 to P (pixels sit on 4-byte addresses).
-    const auto address = reinterpret_cast<std::uintptr_t>(first);
-    int i = static_cast<int>(Bytes - address % Bytes) / 4;
-    for (; i + P < count - P; i += 2 * P) {  // two aligned stores per step, both before the last 2P
+    for (int i = 0; i < count - 2 * P; i += 2 * P) {
       std::memcpy(first + i, &lanes, sizeof lanes);
       std::memcpy(first + i + P, &lanes, sizeof lanes);
     }
-    // i >= count - 2P now: the last two stores cover whatever the loop left.
     std::memcpy(first + count - 2 * P, &lanes, sizeof lanes);
     std::memcpy(first + count - P, &lanes, sizeof lanes);
   } else if (count >= P) {
@@ -74,12 +68,12 @@ inline void fill_pixels(Color* first, int count, std::uint32_t word) noexcept {
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
 #define TRI_CH08_HAS_AVX512_FILL 1
 // [listing fill_pixels_avx512]
-/// The same fill in 64-byte stores (16 pixels), for AVX-512 only: only code compiled for AVX-512
-/// may call it (spans.cpp, after the loader chose that version). A span of at most 16 pixels, none
-/// included, is one masked store, whose masked-off lanes are neither written nor faulted on,
-/// instead of a chain of narrower stores. A longer one is a store at its start, aligned stores one
-/// per loop step (two per step measured slower with 64-byte stores: one more store straddles two
-/// lines), and a store that ends at its end.
+/// The pixels of fill_pixels_in, in 64-byte stores (16 pixels), for AVX-512 only: only code
+/// compiled for AVX-512 may call it (spans.cpp, after the loader chose that version). A span of at
+/// most 16 pixels, none included, is one masked store, whose masked-off lanes are neither written
+/// nor faulted on, instead of a chain of narrower stores. A longer one is a store at its start,
+/// stores at multiples of 64 bytes (whole cache lines) one per loop step, and a store that ends at
+/// its end: on the large scene that beat two unaligned stores per step (see the README).
 __attribute__((target("avx512f"))) inline void fill_pixels_avx512(Color* first, int count,
                                                                   std::uint32_t word) noexcept {
   const __m512i lanes = _mm512_set1_epi32(static_cast<int>(word));
