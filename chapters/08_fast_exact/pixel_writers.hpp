@@ -12,10 +12,6 @@
 #include <cstdint>
 #include <cstring>
 
-#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
-#include <immintrin.h>
-#endif
-
 #include "chapters/08_fast_exact/triangle_setup.hpp"
 #include "common/canvas.hpp"
 #include "common/color.hpp"
@@ -64,32 +60,6 @@ inline void fill_pixels(Color* first, int count, std::uint32_t word) noexcept {
   fill_pixels_in<16>(first, count, word);
 }
 // [/listing]
-
-#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
-#define TRI_CH08_HAS_AVX512_FILL 1
-// [listing fill_pixels_avx512]
-/// The pixels of fill_pixels_in, in 64-byte stores (16 pixels), for AVX-512 only: only code
-/// compiled for AVX-512 may call it (spans.cpp, after the loader chose that version). A span of at
-/// most 16 pixels, none included, is one masked store, whose masked-off lanes are neither written
-/// nor faulted on, instead of a chain of narrower stores. A longer one is a store at its start,
-/// stores at multiples of 64 bytes (whole cache lines) one per loop step, and a store that ends at
-/// its end: on the large scene that beat two unaligned stores per step (see the README).
-__attribute__((target("avx512f"))) inline void fill_pixels_avx512(Color* first, int count,
-                                                                  std::uint32_t word) noexcept {
-  const __m512i lanes = _mm512_set1_epi32(static_cast<int>(word));
-  if (count <= 16) {
-    const unsigned n = count > 0 ? static_cast<unsigned>(count) : 0u;
-    _mm512_mask_storeu_epi32(first, static_cast<__mmask16>((1u << n) - 1u), lanes);
-    return;
-  }
-  _mm512_storeu_si512(first, lanes);
-  const auto address = reinterpret_cast<std::uintptr_t>(first);
-  const int head = static_cast<int>(64 - address % 64) / 4;
-  for (int i = head; i < count - 16; i += 16) _mm512_store_si512(first + i, lanes);
-  _mm512_storeu_si512(first + count - 16, lanes);
-}
-// [/listing]
-#endif
 
 /// Writes into Canvas::row, with no per-pixel bounds or counter checks. Callers pass only
 /// pixels of the canvas. Safe for threads that write disjoint rows, or disjoint tiles when each

@@ -87,7 +87,6 @@ namespace {
 // [listing fill_rows]
 // fill_spans into the canvas's rows with stores of Bytes bytes: the row's first pixel moves up by
 // the stride, so nothing of the canvas is read again per row.
-// Bytes 0 stands for fill_pixels_avx512 (64-byte stores), which needs no test for empty spans.
 template <int Bytes>
 [[gnu::always_inline]] inline void fill_rows_in(const TriangleSetup& setup, RowWriter& writer) {
   SpanWalker walker(setup);
@@ -98,21 +97,16 @@ template <int Bytes>
   // After the canvas's top row, row ends one past its last pixel: a valid pointer, never used.
   for (int y = walker.first_row(); y <= walker.last_row(); ++y, row += stride, walker.next_row()) {
     const RowSpan s = walker.span();
-    if constexpr (Bytes == 0) {
-#if defined(TRI_CH08_HAS_AVX512_FILL)
-      fill_pixels_avx512(row + s.first, s.last - s.first + 1, word);  // empty: count 0
-#endif
-    } else if (!s.empty()) {
-      fill_pixels_in<Bytes>(row + s.first, s.last - s.first + 1, word);
-    }
+    if (!s.empty()) fill_pixels_in<Bytes>(row + s.first, s.last - s.first + 1, word);
   }
 }
 
 }  // namespace
 
-// The widest stores the host has, chosen once by the loader (GCC's and Clang's function
+// The widest stores that paid off, chosen once by the loader (GCC's and Clang's function
 // multi-versioning: one body per target, and an ifunc that picks the best the processor
-// supports). Only these loops are compiled for AVX2 or AVX-512; the portable build stays SSE2.
+// supports). Only this loop is compiled for AVX2; everything else stays portable (SSE2). A third
+// version with AVX-512's 64-byte stores was no faster than AVX2 on Zen 4 (see the README).
 // Outside the unnamed namespace: Clang counts the versions there as unused functions.
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
 __attribute__((target("default"))) void fill_rows(const TriangleSetup& setup, RowWriter& writer) {
@@ -121,17 +115,11 @@ __attribute__((target("default"))) void fill_rows(const TriangleSetup& setup, Ro
 __attribute__((target("avx2"))) void fill_rows(const TriangleSetup& setup, RowWriter& writer) {
   fill_rows_in<32>(setup, writer);
 }
-__attribute__((target("avx512f"))) void fill_rows(const TriangleSetup& setup, RowWriter& writer) {
-  fill_rows_in<0>(setup, writer);
-}
 __attribute__((target("default"))) int widest_store_bytes() {
   return 16;
 }
 __attribute__((target("avx2"))) int widest_store_bytes() {
   return 32;
-}
-__attribute__((target("avx512f"))) int widest_store_bytes() {
-  return 64;
 }
 #else
 void fill_rows(const TriangleSetup& setup, RowWriter& writer) {

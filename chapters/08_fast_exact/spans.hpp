@@ -101,8 +101,8 @@ class SpanWalker {
   int last_row_;
 };
 
-/// The bytes of each store with which fill_spans fills a span of RowWriter on this host: 64 with
-/// AVX-512, 32 with AVX2, else 16 (SSE2, the portable build's), chosen once at load time.
+/// The bytes of each store with which fill_spans fills a span of RowWriter on this host: 32 with
+/// AVX2, else 16 (SSE2, the portable build's), chosen once at load time.
 int span_store_bytes() noexcept;
 
 /// Draws a prepared triangle the way draw_triangle_spans does, through either writer. Through
