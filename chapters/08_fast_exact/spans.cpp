@@ -139,6 +139,17 @@ template <PixelWriter Writer>
 void fill_spans(const TriangleSetup& setup, Writer& writer) {
   if constexpr (std::is_same_v<Writer, RowWriter>) {
     fill_rows(setup, writer);
+  } else if constexpr (std::is_same_v<Writer, MaskWriter>) {
+    // As fill_rows_in: the row's words move up by the stride instead of being asked for by y.
+    SpanWalker walker(setup);
+    if (walker.first_row() > walker.last_row()) return;
+    const std::ptrdiff_t stride = writer.stride();
+    std::uint64_t* row = writer.row_words(walker.first_row());
+    for (int y = walker.first_row(); y <= walker.last_row();
+         ++y, row += stride, walker.next_row()) {
+      const RowSpan s = walker.span();
+      if (!s.empty()) MaskWriter::set_bits(row, s.first, s.last + 1);
+    }
   } else {
     SpanWalker walker(setup);
     for (int y = walker.first_row(); y <= walker.last_row(); ++y, walker.next_row()) {
