@@ -76,21 +76,30 @@ class IndexWriter {
 class MaskWriter {
  public:
   explicit MaskWriter(MaskCanvas& canvas) noexcept : canvas_(canvas) {}
-  void span(int y, int x_begin, int x_end) noexcept {
-    std::uint64_t* words = canvas_.row(y);
-    const int first = x_begin / 64, last = (x_end - 1) / 64;
-    const std::uint64_t from_begin = ~std::uint64_t{0} << (x_begin % 64);
-    const std::uint64_t to_end = ~std::uint64_t{0} >> (63 - (x_end - 1) % 64);
+  void span(int y, int x_begin, int x_end) noexcept { set_bits(canvas_.row(y), x_begin, x_end); }
+  void pixel(int x, int y) noexcept { canvas_.row(y)[x / 64] |= std::uint64_t{1} << (x % 64); }
+  int width() const noexcept { return canvas_.width(); }
+
+  /// For code that walks rows itself (spans.cpp): row y's words and the words from one row to the
+  /// next.
+  std::uint64_t* row_words(int y) noexcept { return canvas_.row(y); }
+  int stride() const noexcept { return canvas_.words_per_row(); }
+
+  /// Sets bits x_begin <= x < x_end (0 <= x_begin < x_end) of one row's words.
+  static void set_bits(std::uint64_t* words, int x_begin, int x_end) noexcept {
+    // Pixel offsets are never negative: unsigned shifts and masks instead of signed / and %.
+    const auto begin = static_cast<unsigned>(x_begin), last_x = static_cast<unsigned>(x_end - 1);
+    const unsigned first = begin / 64, last = last_x / 64;
+    const std::uint64_t from_begin = ~std::uint64_t{0} << (begin % 64);
+    const std::uint64_t to_end = ~std::uint64_t{0} >> (63 - last_x % 64);
     if (first == last) {
       words[first] |= from_begin & to_end;
       return;
     }
     words[first] |= from_begin;
-    for (int w = first + 1; w < last; ++w) words[w] = ~std::uint64_t{0};
+    for (unsigned w = first + 1; w < last; ++w) words[w] = ~std::uint64_t{0};
     words[last] |= to_end;
   }
-  void pixel(int x, int y) noexcept { canvas_.row(y)[x / 64] |= std::uint64_t{1} << (x % 64); }
-  int width() const noexcept { return canvas_.width(); }
 
  private:
   MaskCanvas& canvas_;

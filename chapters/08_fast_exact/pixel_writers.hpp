@@ -22,30 +22,42 @@ namespace tri::ch08 {
 static_assert(sizeof(Color) == sizeof(std::uint32_t), "a pixel is one 32-bit word");
 
 // [listing fill_pixels]
-/// Fills count pixels from first with one colour word, 8 pixels (two 16-byte stores) at a time:
-/// the last stores of a span overlap the ones before instead of finishing pixel by pixel. The
-/// word sits in a local vector that no store can alias, so it stays in a register. GCC 12
-/// compiles std::fill over Color (canvas.cpp) into one 4-byte store per pixel (see the README).
-inline void fill_pixels(Color* first, int count, std::uint32_t word) noexcept {
-  typedef std::uint32_t Four __attribute__((vector_size(16)));
-  const Four four = {word, word, word, word};
-  const auto store4 = [&four](Color* at) { std::memcpy(at, &four, sizeof four); };
-  if (count >= 8) {
-    int i = 0;
-    for (; i + 8 <= count; i += 8) {
-      store4(first + i);
-      store4(first + i + 4);
+/// Fills count pixels from first with one colour word, in stores of Bytes bytes (16 or 32; P =
+/// Bytes / 4 pixels each): two stores per loop step, then two that end exactly at the span's end,
+/// overlapping the ones before instead of finishing pixel by pixel, with no test of what the loop
+/// left. A span shorter than 2P pixels takes two overlapping stores, or goes to the next narrower
+/// store, and below 4 pixels to single words. The word sits in a local vector that no store can
+/// alias, so it stays in a register. Inlined always, so that a caller compiled for AVX2
+/// (spans.cpp) gets its 32-byte stores; without AVX2, each becomes two 16-byte stores.
+template <int Bytes>
+[[gnu::always_inline]] inline void fill_pixels_in(Color* first, int count,
+                                                  std::uint32_t word) noexcept {
+  static_assert(Bytes == 16 || Bytes == 32);
+  constexpr int P = Bytes / 4;
+  typedef std::uint32_t Lanes __attribute__((vector_size(Bytes)));
+  const Lanes lanes = Lanes{} + word;
+  if (count >= 2 * P) {
+    for (int i = 0; i < count - 2 * P; i += 2 * P) {
+      std::memcpy(first + i, &lanes, sizeof lanes);
+      std::memcpy(first + i + P, &lanes, sizeof lanes);
     }
-    if (i < count) {
-      store4(first + count - 8);
-      store4(first + count - 4);
-    }
-  } else if (count >= 4) {
-    store4(first);
-    store4(first + count - 4);
+    std::memcpy(first + count - 2 * P, &lanes, sizeof lanes);
+    std::memcpy(first + count - P, &lanes, sizeof lanes);
+  } else if (count >= P) {
+    std::memcpy(first, &lanes, sizeof lanes);
+    std::memcpy(first + count - P, &lanes, sizeof lanes);
+  } else if constexpr (Bytes > 16) {
+    fill_pixels_in<Bytes / 2>(first, count, word);
   } else {
     for (int i = 0; i < count; ++i) std::memcpy(first + i, &word, sizeof word);
   }
+}
+
+/// fill_pixels_in with 16-byte stores, the widest every x86-64 has (SSE2): what the portable
+/// build writes with wherever no wider store was chosen at run time. GCC 12 compiles std::fill
+/// over Color (canvas.cpp) into one 4-byte store per pixel (see the README).
+inline void fill_pixels(Color* first, int count, std::uint32_t word) noexcept {
+  fill_pixels_in<16>(first, count, word);
 }
 // [/listing]
 

@@ -61,11 +61,14 @@ class SpanWalker {
 
   /// The span of the current row (starting with first_row()).
   RowSpan span() const noexcept {
+    // The third slot bounds one side and leaves the other alone, chosen by masks, not a branch:
+    // the side changes from triangle to triangle, and a branch on it would be mispredicted.
     const std::int64_t third = bounds_[2].quotient;
+    const std::int64_t from_left = -static_cast<std::int64_t>(third_from_left_);  // all ones or 0
     const std::int64_t first =
-        std::max({std::int64_t{0}, -bounds_[0].quotient, third_from_left_ ? -third : 0});
+        std::max({std::int64_t{0}, -bounds_[0].quotient, -third & from_left});
     const std::int64_t last =
-        std::min({last_dx_, bounds_[1].quotient, third_from_left_ ? last_dx_ : third});
+        std::min({last_dx_, bounds_[1].quotient, (third & ~from_left) | (last_dx_ & from_left)});
     if (first > last) return {first_x_, first_x_ - 1};
     return {first_x_ + static_cast<int>(first), first_x_ + static_cast<int>(last)};
   }
@@ -98,7 +101,12 @@ class SpanWalker {
   int last_row_;
 };
 
-/// Draws a prepared triangle the way draw_triangle_spans does, through either writer.
+/// The bytes of each store with which fill_spans fills a span of RowWriter on this host: 32 with
+/// AVX2, else 16 (SSE2, the portable build's), chosen once at load time.
+int span_store_bytes() noexcept;
+
+/// Draws a prepared triangle the way draw_triangle_spans does, through either writer. Through
+/// RowWriter, each span is one fill_pixels_in with the widest stores of span_store_bytes().
 template <PixelWriter Writer>
 void fill_spans(const TriangleSetup& setup, Writer& writer);
 extern template void fill_spans(const TriangleSetup&, RowWriter&);

@@ -1,6 +1,9 @@
 #include <catch2/catch.hpp>
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
+#include <vector>
 
 #include "chapters/08_fast_exact/spans.hpp"
 #include "chapters/08_fast_exact/test_triangles.hpp"
@@ -101,4 +104,40 @@ TEST_CASE("a sliver costs its rows: one short span per row instead of its boundi
   CHECK(rows == 38);
   CHECK(pixels == covered);
   CHECK(pixels > 0);
+}
+
+namespace {
+
+// Fills count pixels from pixel `start` of a row of 300 and checks that exactly those changed.
+template <int Bytes>
+void check_fill_pixels_in(int start, int count) {
+  const tri::Color background{1, 2, 3, 4}, fill{200, 100, 50, 255};
+  std::vector<tri::Color> row(300, background);
+  tri::ch08::fill_pixels_in<Bytes>(row.data() + start, count, std::bit_cast<std::uint32_t>(fill));
+  for (int x = 0; x < static_cast<int>(row.size()); ++x) {
+    INFO(Bytes << "-byte stores, start " << start << ", count " << count << ", pixel " << x);
+    REQUIRE(row[static_cast<std::size_t>(x)] ==
+            (x >= start && x < start + count ? fill : background));
+  }
+}
+
+}  // namespace
+
+TEST_CASE("fill_pixels_in writes exactly the span for every length, start and store width",
+          "[08_fast_exact][step3]") {
+  for (int start = 0; start < 20; ++start) {
+    for (int count = 0; count <= 250; ++count) {
+      check_fill_pixels_in<16>(start, count);
+      check_fill_pixels_in<32>(start, count);
+    }
+  }
+}
+
+TEST_CASE("span_store_bytes is 32 on a host with AVX2 and 16 without", "[08_fast_exact][step3]") {
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+  const int expected = __builtin_cpu_supports("avx2") ? 32 : 16;
+  CHECK(tri::ch08::span_store_bytes() == expected);
+#else
+  CHECK(tri::ch08::span_store_bytes() == 16);
+#endif
 }
