@@ -172,6 +172,7 @@ LANE_FUNCTION void set_up_register(const Vertices& vertices, std::size_t first, 
   store(to_integers(x1), lanes.max_x, first);
   store(to_integers(y1), lanes.max_y, first);
   store(to_integers(max(max_x - min_x, max_y - min_y)), lanes.vertex_extent, first);
+  store(to_integers(max(min(y[0], y[1]), min(max(y[0], y[1]), y[2]))), lanes.middle_y, first);
   const Integers drawn = (x0 <= x1) & (y0 <= y1) & (area != 0);
   const Integers result = (~near & 2) | (near & drawn & 1);  // LaneResult's numbers
   for (std::size_t i = 0; i < lanes_in<Lanes>; ++i) {

@@ -40,7 +40,7 @@ struct SetupLanes {
   std::array<std::array<std::int64_t, setup_lanes>, 3> value, step_x, step_y;
   /// The candidate pixels, as whole numbers of the lanes' width.
   std::array<std::int64_t, setup_lanes> min_x, min_y, max_x, max_y;
-  std::array<std::int64_t, setup_lanes> vertex_extent;
+  std::array<std::int64_t, setup_lanes> vertex_extent, middle_y;
 
   /// Lane i's fields gathered into the TriangleSetup that setup_triangle gives for the same
   /// triangle (result[i] must be `set_up`).
@@ -51,7 +51,8 @@ struct SetupLanes {
              EdgeFunction{value[2][i], step_x[2][i], step_y[2][i]}},
             {{static_cast<int>(min_x[i]), static_cast<int>(min_y[i])},
              {static_cast<int>(max_x[i]), static_cast<int>(max_y[i])}},
-            vertex_extent[i]};
+            vertex_extent[i],
+            middle_y[i]};
   }
 };
 

@@ -29,7 +29,7 @@ bool same_setup(const TriangleSetup& a, const TriangleSetup& b) {
     }
   }
   return a.range.min == b.range.min && a.range.max == b.range.max &&
-         a.vertex_extent == b.vertex_extent;
+         a.vertex_extent == b.vertex_extent && a.middle_y == b.middle_y;
 }
 
 bool beyond_lanes(const Triangle& t) {

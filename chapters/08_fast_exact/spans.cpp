@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <limits>
 #include <type_traits>
 
 namespace tri::ch08 {
@@ -28,13 +29,22 @@ RowSpan row_span(const TriangleSetup& setup, int y) noexcept {
 
 namespace {
 
-// Beyond any pixel offset of a canvas: a right bound that never binds.
+// Beyond any pixel offset of a canvas: a right bound that never binds. A left bound of quotient
+// 0 and no steps allows first >= 0: it never binds either.
 constexpr std::int64_t never_binding_right = std::int64_t{1} << 62;
 
 }  // namespace
 
+// [listing span_walker_setup]
 SpanWalker::SpanWalker(const TriangleSetup& setup) noexcept
-    : first_x_(setup.range.min.x), last_dx_(setup.range.max.x - setup.range.min.x) {
+    : left_{0, 0, 1, 0, 0},
+      right_{never_binding_right, 0, 1, 0, 0},
+      above_{},
+      above_from_left_(true),
+      row_(setup.range.min.y),
+      middle_row_(std::numeric_limits<int>::max()),
+      first_x_(setup.range.min.x),
+      last_dx_(setup.range.max.x - setup.range.min.x) {
   const ch05::PixelBox& r = setup.range;
   // Rows (offsets from first_y) where every horizontal edge passes: w + step_y * k >= 0.
   std::int64_t first_k = 0, last_k = r.max.y - r.min.y;
@@ -51,36 +61,52 @@ SpanWalker::SpanWalker(const TriangleSetup& setup) noexcept
   if (first_k > last_k) {
     first_row_ = r.min.y;
     last_row_ = r.min.y - 1;
-    first_k = 0;
-  } else {
-    first_row_ = r.min.y + static_cast<int>(first_k);
-    last_row_ = r.min.y + static_cast<int>(last_k);
+    return;
   }
-  // A slot with quotient 0 and no steps never binds: from the left it allows first >= 0, from
-  // the right last <= 0 would, so an unused third slot counts as "from the left".
-  bounds_ = {{{0, 0, 1, 0, 0}, {never_binding_right, 0, 1, 0, 0}, {0, 0, 1, 0, 0}}};
-  third_from_left_ = true;
-  bool have_left = false, have_right = false;
-  for (const EdgeFunction& e : setup.edges) {
-    if (e.step_x == 0) continue;
-    const std::int64_t w = e.at(0, first_k);
+  first_row_ = r.min.y + static_cast<int>(first_k);
+  last_row_ = r.min.y + static_cast<int>(last_k);
+  row_ = first_row_;
+  // Row y's pixel centres lie at 256 y on the grid. Two sloped edges on one side meet at the
+  // vertex with the middle y (the third edge spans all rows): below it (256 y < middle_y, that is
+  // y < ceil(middle_y / 256)) the upper edge's line lies outside the lower edge's half-plane, so
+  // only the lower edge can bound; above it only the upper edge can; on its row (256 y ==
+  // middle_y) both give the same bound, having the same tie rule (both left or both right).
+  const std::int64_t middle_row =
+      (setup.middle_y >> subpixel_bits) + ((setup.middle_y & ((1 << subpixel_bits) - 1)) != 0);
+  const std::int64_t middle_k = std::clamp(middle_row - r.min.y, first_k, last_k + 1);
+  const auto bound_at = [&](const EdgeFunction& e, std::int64_t k) {
+    const std::int64_t w = e.at(0, k);
     const std::int64_t s = e.step_x > 0 ? e.step_x : -e.step_x;
     const std::int64_t q = floor_div(w, s);
     const std::int64_t dq = floor_div(e.step_y, s);
-    const Bound bound{q, w - s * q, s, dq, e.step_y - s * dq};
+    return Bound{q, w - s * q, s, dq, e.step_y - s * dq};
+  };
+  for (std::size_t i = 0; i < 3; ++i) {
+    const EdgeFunction& e = setup.edges[i];
+    if (e.step_x == 0) continue;
     const bool from_left = e.step_x > 0;
-    if (from_left && !have_left) {
-      bounds_[0] = bound;
-      have_left = true;
-    } else if (!from_left && !have_right) {
-      bounds_[1] = bound;
-      have_right = true;
-    } else {
-      bounds_[2] = bound;
-      third_from_left_ = from_left;
+    // The next edge around the triangle (counter-clockwise) on the same side is the edge after
+    // this one at the middle vertex: below it on the left side (edges run down there), above
+    // it on the right (edges run up).
+    const EdgeFunction& next = setup.edges[(i + 1) % 3];
+    const EdgeFunction& previous = setup.edges[(i + 2) % 3];
+    const bool same_side_next = next.step_x != 0 && (next.step_x > 0) == from_left;
+    const bool same_side_previous = previous.step_x != 0 && (previous.step_x > 0) == from_left;
+    const bool above = (same_side_next && from_left) || (same_side_previous && !from_left);
+    const bool below = (same_side_next && !from_left) || (same_side_previous && from_left);
+    Bound& side = from_left ? left_ : right_;
+    if (above && middle_k > first_k) {
+      if (middle_k <= last_k) {
+        above_ = bound_at(e, middle_k);
+        above_from_left_ = from_left;
+        middle_row_ = r.min.y + static_cast<int>(middle_k);
+      }
+    } else if (!below || middle_k > first_k) {
+      side = bound_at(e, first_k);
     }
   }
 }
+// [/listing]
 
 namespace {
 
@@ -89,16 +115,16 @@ namespace {
 // the stride, so nothing of the canvas is read again per row.
 template <int Bytes>
 [[gnu::always_inline]] inline void fill_rows_in(const TriangleSetup& setup, RowWriter& writer) {
-  SpanWalker walker(setup);
+  const SpanWalker walker(setup);
   if (walker.first_row() > walker.last_row()) return;
   const std::uint32_t word = writer.word();
   const std::ptrdiff_t stride = writer.stride();
   Color* row = writer.row_pixels(walker.first_row());
   // After the canvas's top row, row ends one past its last pixel: a valid pointer, never used.
-  for (int y = walker.first_row(); y <= walker.last_row(); ++y, row += stride, walker.next_row()) {
-    const RowSpan s = walker.span();
+  walker.for_each_row([&](int, RowSpan s) {
     if (!s.empty()) fill_pixels_in<Bytes>(row + s.first, s.last - s.first + 1, word);
-  }
+    row += stride;
+  });
 }
 
 }  // namespace
@@ -141,21 +167,18 @@ void fill_spans(const TriangleSetup& setup, Writer& writer) {
     fill_rows(setup, writer);
   } else if constexpr (std::is_same_v<Writer, MaskWriter>) {
     // As fill_rows_in: the row's words move up by the stride instead of being asked for by y.
-    SpanWalker walker(setup);
+    const SpanWalker walker(setup);
     if (walker.first_row() > walker.last_row()) return;
     const std::ptrdiff_t stride = writer.stride();
     std::uint64_t* row = writer.row_words(walker.first_row());
-    for (int y = walker.first_row(); y <= walker.last_row();
-         ++y, row += stride, walker.next_row()) {
-      const RowSpan s = walker.span();
+    walker.for_each_row([&](int, RowSpan s) {
       if (!s.empty()) MaskWriter::set_bits(row, s.first, s.last + 1);
-    }
+      row += stride;
+    });
   } else {
-    SpanWalker walker(setup);
-    for (int y = walker.first_row(); y <= walker.last_row(); ++y, walker.next_row()) {
-      const RowSpan s = walker.span();
+    SpanWalker(setup).for_each_row([&](int y, RowSpan s) {
       if (!s.empty()) writer.span(y, s.first, s.last + 1);
-    }
+    });
   }
 }
 template void fill_spans(const TriangleSetup&, RowWriter&);

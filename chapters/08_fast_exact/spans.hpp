@@ -39,6 +39,7 @@ constexpr std::int64_t floor_div(std::int64_t a, std::int64_t b) noexcept {
 /// divisions per row: the reference the walker is tested against. Empty for an empty row.
 RowSpan row_span(const TriangleSetup& setup, int y) noexcept;
 
+// [listing span_walker]
 /// The spans of successive rows, bottom to top, without any division per row. For each sloped
 /// edge it keeps q = floor(w_row / s) (s = |step_x|) and the remainder w_row - s * q in [0, s);
 /// a row adds step_y = dq * s + dr to w_row, so q grows by dq, the remainder by dr, and by one
@@ -47,9 +48,11 @@ RowSpan row_span(const TriangleSetup& setup, int y) noexcept;
 /// An edge whose value grows to the right bounds a span from the left (first = -q), one shrinking
 /// bounds it from the right (last = q). The three steps in x sum to zero (they are the vertex
 /// height differences around the triangle), so one edge grows and one shrinks, and the third goes
-/// either way: the walker keeps three slots and a flag for the third, no branch per row. A
-/// horizontal edge (step_x == 0) bounds rows instead of pixels, so it only narrows the rows
-/// walked, and its slot holds a bound that never binds.
+/// either way: it and the edge on its side meet at the middle vertex, one bounds the rows below
+/// that vertex and the other the rows above. So the walker keeps two bounds, and at the middle
+/// vertex's row hands one side over to the edge above it (computed in the setup): two updates per
+/// row, not three. A horizontal edge (step_x == 0) bounds rows instead of pixels, so it only
+/// narrows the rows walked.
 class SpanWalker {
  public:
   explicit SpanWalker(const TriangleSetup& setup) noexcept;
@@ -60,28 +63,42 @@ class SpanWalker {
   int last_row() const noexcept { return last_row_; }
 
   /// The span of the current row (starting with first_row()).
-  RowSpan span() const noexcept {
-    // The third slot bounds one side and leaves the other alone, chosen by masks, not a branch:
-    // the side changes from triangle to triangle, and a branch on it would be mispredicted.
-    const std::int64_t third = bounds_[2].quotient;
-    const std::int64_t from_left = -static_cast<std::int64_t>(third_from_left_);  // all ones or 0
-    const std::int64_t first =
-        std::max({std::int64_t{0}, -bounds_[0].quotient, -third & from_left});
-    const std::int64_t last =
-        std::min({last_dx_, bounds_[1].quotient, (third & ~from_left) | (last_dx_ & from_left)});
-    if (first > last) return {first_x_, first_x_ - 1};
-    return {first_x_ + static_cast<int>(first), first_x_ + static_cast<int>(last)};
-  }
+  RowSpan span() const noexcept { return span_between(left_, right_); }
 
   /// Moves to the next row up.
   void next_row() noexcept {
-    for (Bound& b : bounds_) {
-      b.quotient += b.quotient_step;
-      b.remainder += b.remainder_step;
-      // Branch-free carry: the remainder stays in [0, divisor).
-      const bool carry = b.remainder >= b.divisor;
-      b.quotient += carry;
-      b.remainder -= carry ? b.divisor : 0;
+    left_.next_row();
+    right_.next_row();
+    if (++row_ == middle_row_) [[unlikely]] {
+      if (above_from_left_) {
+        left_ = above_;
+      } else {
+        right_ = above_;
+      }
+    }
+  }
+
+  /// Calls visit(y, span) for the current row and every row above it up to last_row(), in order,
+  /// as span() and next_row() would, without changing the walker. The loop the fills use: one
+  /// loop below the middle vertex and one above it, with their two bounds in local variables, so
+  /// they stay in registers (a hand-over inside one loop kept them in memory).
+  template <class Visit>
+  [[gnu::always_inline]] inline void for_each_row(Visit&& visit) const {
+    Bound left = left_, right = right_;
+    const auto walk = [&](int y, int end) {
+      for (; y < end; ++y, left.next_row(), right.next_row()) visit(y, span_between(left, right));
+    };
+    const int end = last_row_ + 1;
+    if (middle_row_ > row_ && middle_row_ < end) {
+      walk(row_, middle_row_);
+      if (above_from_left_) {
+        left = above_;
+      } else {
+        right = above_;
+      }
+      walk(middle_row_, end);
+    } else {
+      walk(row_, end);
     }
   }
 
@@ -92,14 +109,35 @@ class SpanWalker {
     std::int64_t divisor;    // s = |step_x|
     std::int64_t quotient_step;
     std::int64_t remainder_step;
+
+    [[gnu::always_inline]] void next_row() noexcept {
+      quotient += quotient_step;
+      remainder += remainder_step;
+      // Branch-free carry: the remainder stays in [0, divisor).
+      const bool carry = remainder >= divisor;
+      quotient += carry;
+      remainder -= carry ? divisor : 0;
+    }
   };
-  std::array<Bound, 3> bounds_;  // [0] from the left, [1] from the right, [2] either
-  bool third_from_left_;
+  RowSpan span_between(const Bound& left, const Bound& right) const noexcept {
+    const std::int64_t first = std::max(std::int64_t{0}, -left.quotient);
+    const std::int64_t last = std::min(last_dx_, right.quotient);
+    if (first > last) return {first_x_, first_x_ - 1};
+    return {first_x_ + static_cast<int>(first), first_x_ + static_cast<int>(last)};
+  }
+
+  Bound left_;   // the edge that bounds the current row from the left
+  Bound right_;  // ... from the right
+  Bound above_;  // the edge that takes over one side at middle_row_
+  bool above_from_left_;
+  int row_;         // the current row
+  int middle_row_;  // where above_ takes over; beyond every row when it does not
   int first_x_;
   std::int64_t last_dx_;
   int first_row_;
   int last_row_;
 };
+// [/listing]
 
 /// The bytes of each store with which fill_spans fills a span of RowWriter on this host: 32 with
 /// AVX2, else 16 (SSE2, the portable build's), chosen once at load time.

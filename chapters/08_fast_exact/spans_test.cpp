@@ -3,6 +3,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "chapters/08_fast_exact/spans.hpp"
@@ -64,26 +65,125 @@ TEST_CASE("a horizontal edge limits the rows the walker visits", "[08_fast_exact
   CHECK(to_the_top.last_row() == 9);
 }
 
+namespace {
+
+// The walker's spans against row_span's on every row of the setup's range; rows it skips must be
+// empty.
+void check_walker(const tri::ch08::TriangleSetup& setup) {
+  tri::ch08::SpanWalker walker(setup);
+  for (int y = setup.range.min.y; y <= setup.range.max.y; ++y) {
+    if (y < walker.first_row() || y > walker.last_row()) {
+      INFO("row " << y << " skipped");
+      REQUIRE(tri::ch08::row_span(setup, y).empty());
+    }
+  }
+  for (int y = walker.first_row(); y <= walker.last_row(); ++y, walker.next_row()) {
+    const RowSpan direct = tri::ch08::row_span(setup, y);
+    const RowSpan walked = walker.span();
+    INFO("row " << y);
+    REQUIRE(walked.empty() == direct.empty());
+    if (!direct.empty()) REQUIRE(walked == direct);
+  }
+}
+
+// The walker on the setup, and on the setup clipped to a few boxes (tiles, bands, one row).
+void check_walker_and_clips(const tri::ch08::TriangleSetup& setup, tri::testing::Random& random) {
+  check_walker(setup);
+  const auto& r = setup.range;
+  for (int c = 0; c < 4; ++c) {
+    const int x0 = static_cast<int>(random.integer(r.min.x, r.max.x));
+    const int y0 = static_cast<int>(random.integer(r.min.y, r.max.y));
+    const int w = c == 0 ? 8 : static_cast<int>(random.integer(1, 24));
+    const int h = c == 1 ? 1 : static_cast<int>(random.integer(1, 24));
+    const tri::ch05::PixelBox box{{x0, y0}, {x0 + w - 1, y0 + h - 1}};
+    const auto clipped = tri::ch08::clip_setup(setup, box);
+    if (!clipped) continue;
+    INFO("clipped to " << box.min.x << "," << box.min.y << " - " << box.max.x << "," << box.max.y);
+    check_walker(*clipped);
+  }
+}
+
+// The triangle with its vertices in this order and in the reverse one (the setup turns a
+// clockwise one around), mirrored in x, in y and across the diagonal: 16 setups.
+template <class Visit>
+void for_each_symmetry(const Triangle& t, int size, Visit&& visit) {
+  for (int m = 0; m < 8; ++m) {
+    Triangle u = t;
+    for (auto& v : u) {
+      if (m & 1) v.x = size - 1 - v.x;
+      if (m & 2) v.y = size - 1 - v.y;
+      if (m & 4) std::swap(v.x, v.y);
+    }
+    for (int order = 0; order < 2; ++order) {
+      if (order == 1) std::swap(u[1], u[2]);
+      if (const auto setup = tri::ch08::setup_triangle(u, size, size)) visit(m * 2 + order, *setup);
+    }
+  }
+}
+
+}  // namespace
+
 TEST_CASE("The division-free walker gives the direct span on every row", "[08_fast_exact][step3]") {
   tri::testing::Random random(22);
-  tri::ch08::testing::for_each_random_setup(
-      random, 3000, 64, 61, [&](int i, const tri::ch08::TriangleSetup& setup) {
-        tri::ch08::SpanWalker walker(setup);
-        // Rows a horizontal edge excludes are skipped: their direct spans are empty.
-        for (int y = setup.range.min.y; y <= setup.range.max.y; ++y) {
-          if (y < walker.first_row() || y > walker.last_row()) {
-            INFO("triangle " << i << " row " << y << " skipped");
-            REQUIRE(tri::ch08::row_span(setup, y).empty());
-          }
-        }
-        for (int y = walker.first_row(); y <= walker.last_row(); ++y, walker.next_row()) {
-          const RowSpan direct = tri::ch08::row_span(setup, y);
-          const RowSpan walked = walker.span();
-          INFO("triangle " << i << " row " << y);
-          REQUIRE(walked.empty() == direct.empty());
-          if (!direct.empty()) REQUIRE(walked == direct);
-        }
+  tri::ch08::testing::for_each_random_setup(random, 3000, 64, 61,
+                                            [&](int i, const tri::ch08::TriangleSetup& setup) {
+                                              INFO("triangle " << i);
+                                              check_walker_and_clips(setup, random);
+                                            });
+}
+
+TEST_CASE("the walker hands a side over exactly at the middle vertex, on a pixel row or off it",
+          "[08_fast_exact][step3]") {
+  // The middle vertex on a pixel-centre row, 1/256 below or above it, and random; the other two
+  // anywhere near (partly off) a 48 x 48 canvas, in every orientation.
+  tri::testing::Random random(23);
+  constexpr int size = 48;
+  for (int i = 0; i < 1500; ++i) {
+    const double row = static_cast<double>(random.integer(-2, size + 1));
+    const double offsets[] = {0.0, -1.0 / 256, 1.0 / 256,
+                              std::floor(random.real(-1, 1) * 256) / 256};
+    const double middle_y = row + offsets[i % 4];
+    const auto coordinate = [&](double low, double high) {
+      return std::floor(random.real(low, high) * 256) / 256;
+    };
+    const Triangle t{{{coordinate(-8, size + 8), coordinate(middle_y - size, middle_y - 1.0 / 256)},
+                      {coordinate(-8, size + 8), coordinate(middle_y + 1.0 / 256, middle_y + size)},
+                      {coordinate(-8, size + 8), middle_y}}};
+    for_each_symmetry(t, size, [&](int s, const tri::ch08::TriangleSetup& setup) {
+      INFO("triangle " << i << " symmetry " << s);
+      check_walker_and_clips(setup, random);
+    });
+  }
+}
+
+TEST_CASE("the walker is exact on slivers of every orientation and with horizontal edges",
+          "[08_fast_exact][step3]") {
+  tri::testing::Random random(24);
+  constexpr int size = 64;
+  for (int i = 0; i < 600; ++i) {
+    const auto coordinate = [&](double low, double high) {
+      return std::floor(random.real(low, high) * 256) / 256;
+    };
+    // A needle: a third vertex within a few 1/256 of the long edge, often on a pixel row.
+    const glm::dvec2 a{coordinate(-4, size + 4), coordinate(-4, size + 4)};
+    const glm::dvec2 b{coordinate(-4, size + 4), coordinate(-4, size + 4)};
+    const glm::dvec2 on_line = a + random.real(0.05, 0.95) * (b - a);
+    const double third_y = i % 2 == 0 ? std::round(on_line.y) : std::round(on_line.y * 256) / 256;
+    const Triangle sliver{
+        {a,
+         b,
+         {std::round(on_line.x * 256) / 256 + static_cast<double>(random.integer(-3, 3)) / 256,
+          third_y}}};
+    // A horizontal edge at the bottom or top, on a pixel row or between rows.
+    const double edge_y = i % 3 == 0 ? std::round(a.y) : a.y;
+    const Triangle flat{{{a.x, edge_y}, {b.x, edge_y}, {coordinate(-4, size + 4), b.y}}};
+    for (const Triangle& t : {sliver, flat}) {
+      for_each_symmetry(t, size, [&](int s, const tri::ch08::TriangleSetup& setup) {
+        INFO("triangle " << i << " symmetry " << s);
+        check_walker_and_clips(setup, random);
       });
+    }
+  }
 }
 
 TEST_CASE("a sliver costs its rows: one short span per row instead of its bounding box",

@@ -48,7 +48,8 @@ std::optional<TriangleSetup> setup(SubpixelPoint a, SubpixelPoint b, SubpixelPoi
                    make_edge<Int>(a, b, range.min.x, range.min.y)},
                   range,
                   std::max(std::max({a.x, b.x, c.x}) - std::min({a.x, b.x, c.x}),
-                           std::max({a.y, b.y, c.y}) - std::min({a.y, b.y, c.y}))};
+                           std::max({a.y, b.y, c.y}) - std::min({a.y, b.y, c.y})),
+                  std::max(std::min(a.y, b.y), std::min(std::max(a.y, b.y), c.y))};
   if constexpr (sizeof(Int) > sizeof(std::int64_t)) {
     for (const EdgeFunction& edge : s.edges) {
       if (edge.value <= -edge_value_limit) return std::nullopt;  // fails on the whole canvas

@@ -65,11 +65,15 @@ struct EdgeFunction {
 /// candidate_pixels, possibly clipped further). The edges' origin is (range.min.x,
 /// range.min.y); the range is never empty.
 struct TriangleSetup {
+  /// In order around the counter-clockwise triangle: edge e ends where edge e + 1 (mod 3) starts.
   std::array<EdgeFunction, 3> edges;
   ch05::PixelBox range;
   /// The longer side of the snapped vertices' bounding box, in 1/256 pixel: bounds every edge
   /// value near the triangle (step 5 uses it to choose 32-bit lanes).
   std::int64_t vertex_extent;
+  /// The middle one of the snapped vertices' three y, in 1/256 pixel: where two edges on the
+  /// same side of the triangle meet, if any (step 3's walker splits its rows there).
+  std::int64_t middle_y;
 
   /// Whether pixel (x, y) of the range is covered: all three edge values >= 0, each evaluated
   /// directly (the reference the incremental variants are tested against).
