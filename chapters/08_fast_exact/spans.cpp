@@ -35,7 +35,6 @@ constexpr std::int64_t never_binding_right = std::int64_t{1} << 62;
 
 }  // namespace
 
-// [listing span_walker_setup]
 SpanWalker::SpanWalker(const TriangleSetup& setup) noexcept
     : left_{0, 0, 1, 0, 0},
       right_{never_binding_right, 0, 1, 0, 0},
@@ -66,6 +65,7 @@ SpanWalker::SpanWalker(const TriangleSetup& setup) noexcept
   first_row_ = r.min.y + static_cast<int>(first_k);
   last_row_ = r.min.y + static_cast<int>(last_k);
   row_ = first_row_;
+  // [listing span_walker_split]
   // Row y's pixel centres lie at 256 y on the grid. Two sloped edges on one side meet at the
   // vertex with the middle y (the third edge spans all rows): below it (256 y < middle_y, that is
   // y < ceil(middle_y / 256)) the upper edge's line lies outside the lower edge's half-plane, so
@@ -85,9 +85,9 @@ SpanWalker::SpanWalker(const TriangleSetup& setup) noexcept
     const EdgeFunction& e = setup.edges[i];
     if (e.step_x == 0) continue;
     const bool from_left = e.step_x > 0;
-    // The next edge around the triangle (counter-clockwise) on the same side is the edge after
-    // this one at the middle vertex: below it on the left side (edges run down there), above
-    // it on the right (edges run up).
+    // Two edges on one side follow each other around the triangle (counter-clockwise), meeting
+    // at the middle vertex: the first ends there. Left edges run down, so there the first is
+    // the upper one; right edges run up, so there the first is the lower one.
     const EdgeFunction& next = setup.edges[(i + 1) % 3];
     const EdgeFunction& previous = setup.edges[(i + 2) % 3];
     const bool same_side_next = next.step_x != 0 && (next.step_x > 0) == from_left;
@@ -105,8 +105,8 @@ SpanWalker::SpanWalker(const TriangleSetup& setup) noexcept
       side = bound_at(e, first_k);
     }
   }
+  // [/listing]
 }
-// [/listing]
 
 namespace {
 

@@ -67,10 +67,19 @@ TEST_CASE("a horizontal edge limits the rows the walker visits", "[08_fast_exact
 
 namespace {
 
-// The walker's spans against row_span's on every row of the setup's range; rows it skips must be
-// empty.
+// The walker's spans, row by row (span, next_row) and in one pass (for_each_row), against
+// row_span's on every row of the setup's range; rows it skips must be empty.
 void check_walker(const tri::ch08::TriangleSetup& setup) {
   tri::ch08::SpanWalker walker(setup);
+  int expected_y = walker.first_row();
+  walker.for_each_row([&](int y, RowSpan walked) {
+    const RowSpan direct = tri::ch08::row_span(setup, y);
+    INFO("for_each_row, row " << y);
+    REQUIRE(y == expected_y++);
+    REQUIRE(walked.empty() == direct.empty());
+    if (!direct.empty()) REQUIRE(walked == direct);
+  });
+  REQUIRE(expected_y == walker.last_row() + 1);
   for (int y = setup.range.min.y; y <= setup.range.max.y; ++y) {
     if (y < walker.first_row() || y > walker.last_row()) {
       INFO("row " << y << " skipped");
@@ -132,7 +141,7 @@ TEST_CASE("The division-free walker gives the direct span on every row", "[08_fa
                                             });
 }
 
-TEST_CASE("the walker hands a side over exactly at the middle vertex, on a pixel row or off it",
+TEST_CASE("The walker hands a side over exactly at the middle vertex, on a pixel row or off it",
           "[08_fast_exact][step3]") {
   // The middle vertex on a pixel-centre row, 1/256 below or above it, and random; the other two
   // anywhere near (partly off) a 48 x 48 canvas, in every orientation.
@@ -156,7 +165,7 @@ TEST_CASE("the walker hands a side over exactly at the middle vertex, on a pixel
   }
 }
 
-TEST_CASE("the walker is exact on slivers of every orientation and with horizontal edges",
+TEST_CASE("The walker is exact on slivers of every orientation and with horizontal edges",
           "[08_fast_exact][step3]") {
   tri::testing::Random random(24);
   constexpr int size = 64;
