@@ -315,14 +315,6 @@ bool add_band_directly(float* row, int width, const Band& b, Put put) {
 }
 // [/listing]
 
-// The groups of eight floats pass from function to function only inside the AVX2 copy of the row
-// loop (add_summed_rows below), into which every function that takes or returns them is inlined:
-// GCC's warning that such a call's ABI needs AVX concerns calls that never happen.
-#if defined(__x86_64__) && defined(__GNUC__)
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wpsabi"
-#endif
-
 // [listing right_of]
 // A group of pixels at a time. In a band of height H, pixel i's coverage is H (P_left - P_right),
 // where P of a side's piece is the part of the pixel right of it, averaged over the band: the mean
@@ -334,7 +326,7 @@ bool add_band_directly(float* row, int width, const Band& b, Put put) {
 // any pixel of the row: 1 right of the piece, 0 left of it, no test of which cells the piece
 // crosses. A vertical piece (d = 0) gets 1/d = 1e30: ta and tb are 0 or 1, P = clamp(g0, 0, 1).
 // In floats, since g0 is small where it matters: within 1e-6 of the exact area. A group is four
-// floats (SSE2, the portable build) or eight (where the row loop's AVX2 copy runs, below).
+// floats; the AVX2 copy of the row loop (below) adds eight at a time between the sides.
 template <int Width>
 struct LanesOf;
 template <>
@@ -359,15 +351,7 @@ inline Lanes<4> clamp01(Lanes<4> v) {
 template <>
 struct LanesOf<8> {
   typedef float type __attribute__((vector_size(32)));
-  static constexpr type offsets = {0.5f, 1.5f, 2.5f, 3.5f, 4.5f, 5.5f, 6.5f, 7.5f};
 };
-// GCC 12 compiles these comparisons into compares and blends, where _mm256_min_ps and
-// _mm256_max_ps would be one instruction each; but those need the AVX target on every function
-// that inlines them, and in one interleaved run they drew the mixed scenes no faster.
-inline Lanes<8> clamp01(const Lanes<8>& v) {
-  const Lanes<8> zero = {}, one = zero + 1.0f, positive = v > zero ? v : zero;
-  return positive < one ? positive : one;
-}
 #endif
 
 template <int Width>
@@ -408,32 +392,33 @@ template <int Width>
 }
 
 // [listing add_band_lanes]
-// A band summed onto the row a group of Width pixels at a time: a band within four pixels in one
-// group of four (with groups of eight, the small triangles of a mesh drew 1.05 times slower);
-// otherwise groups from the left piece's first column (or the canvas's) until past its last,
-// pairs of groups of H while they end before the right piece, then groups until past the right
-// piece's last column (or the canvas's). A pixel that a group passes outside the triangle gets
-// exactly 0. The band's numbers come as arguments, so that they stay in registers.
+// A band summed onto the row four pixels at a time: a band within four pixels in one step;
+// otherwise groups of four from the left piece's first column (or the canvas's) until past its
+// last, pairs of groups of Width floats of H while they end before the right piece (eight in the
+// AVX2 copy of the row loop, then four), then groups of four until past the right piece's last
+// column (or the canvas's). Only the pixels between the sides take groups of eight: each pixel
+// gets the same bits from both copies (the playground's WebAssembly has only the portable one and
+// draws what raster draws). A pixel that a group passes outside the triangle gets exactly 0. The
+// band's numbers come as arguments, so that they stay in registers.
 template <int Width>
 [[gnu::always_inline]] inline void add_band_lanes(float* row, int width, double y0, double y1,
                                                   double left0, double left1, double right0,
                                                   double right1, int left_first, int left_last,
                                                   int right_first, int right_last) {
   if (right_last < 0 || left_first >= width) return;  // wholly off the canvas
+  const PieceLanes<4> left(left0, left1), right(right0, right1);
   const auto height = static_cast<float>(y1 - y0);
   int column = std::max(left_first, 0);
-  if (right_last < column + 4 && column + 4 <= width) {  // the whole band in one group of four
-    const PieceLanes<4> left(left0, left1), right(right0, right1);
+  if (right_last < column + 4 && column + 4 <= width) {  // the whole band in one group
     return add_group(row + column, height * (left.right_of(column) - right.right_of(column)));
   }
-  const PieceLanes<Width> left(left0, left1), right(right0, right1);
   left_last = std::min(left_last, width - 1);
   // Left of the right piece's first column, P_right is 0; right of the left piece, P_left is 1.
-  for (; column <= left_last && column + Width <= right_first; column += Width) {
-    add_lanes<Width>(row, column, width, height * left.right_of(column));
+  for (; column <= left_last && column + 4 <= right_first; column += 4) {
+    add_lanes<4>(row, column, width, height * left.right_of(column));
   }
-  for (; column <= left_last; column += Width) {
-    add_lanes<Width>(row, column, width, height * (left.right_of(column) - right.right_of(column)));
+  for (; column <= left_last; column += 4) {
+    add_lanes<4>(row, column, width, height * (left.right_of(column) - right.right_of(column)));
   }
   const Lanes<Width> inside = Lanes<Width>{} + height;
   const int inside_end = std::min(right_first, width);  // the pixels wholly inside end here
@@ -445,9 +430,13 @@ template <int Width>
     add_group(row + column, inside);
     column += Width;
   }
+  if (column + 4 <= inside_end) {
+    add_group(row + column, Lanes<4>{} + height);
+    column += 4;
+  }
   const int last = std::min(right_last, width - 1);
-  for (; column <= last; column += Width) {
-    add_lanes<Width>(row, column, width, height * (1.0f - right.right_of(column)));
+  for (; column <= last; column += 4) {
+    add_lanes<4>(row, column, width, height * (1.0f - right.right_of(column)));
   }
 }
 // [/listing]

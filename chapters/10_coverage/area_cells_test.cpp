@@ -119,6 +119,23 @@ TEST_CASE("On a wide canvas, runs of whole groups between the sides get the exac
   }
 }
 
+TEST_CASE("Both copies of the summed row loop give every pixel the same bits",
+          "[10_coverage][step4]") {
+  // The playground's WebAssembly has only the portable copy and must draw what raster draws.
+  for (const Triangle& t : test::random_triangles(500, 47, {-6, -6}, {46, 46})) {
+    INFO(describe(t));
+    CoverageCanvas chosen(40, 40), portable(40, 40);
+    RowCells cells;
+    draw_triangle_area(chosen, t, cells);
+    draw_triangle_area_portable(portable, t);
+    int differing = 0;
+    for (int y = 0; y < 40; ++y) {
+      for (int x = 0; x < 40; ++x) differing += chosen.at(x, y) != portable.at(x, y);
+    }
+    CHECK(differing == 0);
+  }
+}
+
 TEST_CASE("area_lane_floats is 8 on a host with AVX2 and 4 without", "[10_coverage][step4]") {
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
   const int expected = __builtin_cpu_supports("avx2") ? 8 : 4;
