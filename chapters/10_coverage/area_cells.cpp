@@ -207,9 +207,11 @@ enum class Part { whole_row, below_middle, above_middle };
 // triangle, the two short edges through the middle vertex the other. Where a side leaves a row
 // is where it enters the next, so each side's x and column are computed once per row boundary.
 // The row that holds the middle vertex is two bands, below and above it, so that in every band
-// each side is one straight piece.
+// each side is one straight piece. Always inlined, with visit, so that the AVX2 copy of the summed
+// row loop (add_summed_rows below) compiles all of it for AVX2.
 template <class Visit>
-void walk_bands(const ByHeight& v, int first_row, int last_row, Visit&& visit) {
+[[gnu::always_inline]] inline void walk_bands(const ByHeight& v, int first_row, int last_row,
+                                              Visit&& visit) {
   const RisingEdge along(v.low, v.high), lower(v.low, v.middle), upper(v.middle, v.high);
   const glm::dvec2 to_high = v.high - v.low, to_middle = v.middle - v.low;
   const bool short_on_left = to_high.x * to_middle.y - to_high.y * to_middle.x > 0;
@@ -233,7 +235,7 @@ void walk_bands(const ByHeight& v, int first_row, int last_row, Visit&& visit) {
   left.move_to(y0);
   right.move_to(y0);
   Side& short_side = short_on_left ? left : right;
-  const auto band_to = [&](int row, double y1, Part part) {
+  const auto band_to = [&](int row, double y1, Part part) __attribute__((always_inline)) {
     const Side l0 = left, r0 = right;
     left.move_to(y1);
     right.move_to(y1);
@@ -314,29 +316,45 @@ bool add_band_directly(float* row, int width, const Band& b, Put put) {
 // [/listing]
 
 // [listing right_of]
-// Four pixels at a time. In a band of height H, pixel i's coverage is H (P_left - P_right), where
-// P of a side's piece is the part of the pixel right of it, averaged over the band: the mean of
-// clamp(i + 1/2 - x, 0, 1) over the piece's x range [lo, lo + d] (a straight piece passes every
+// A group of pixels at a time. In a band of height H, pixel i's coverage is H (P_left - P_right),
+// where P of a side's piece is the part of the pixel right of it, averaged over the band: the mean
+// of clamp(i + 1/2 - x, 0, 1) over the piece's x range [lo, lo + d] (a straight piece passes every
 // x of its range for the same share of its height). Along the piece, g = i + 1/2 - x falls
 // linearly from g0 = i + 1/2 - lo by d: it is at least 1 (the pixel wholly right of the piece)
 // for the first fraction ta = (g0 - 1) / d of the way, at most 0 from tb = g0 / d on, and in
 // between its mean is g0 - d (ta + tb) / 2. With both fractions clamped to [0, 1], P is right for
 // any pixel of the row: 1 right of the piece, 0 left of it, no test of which cells the piece
 // crosses. A vertical piece (d = 0) gets 1/d = 1e30: ta and tb are 0 or 1, P = clamp(g0, 0, 1).
-// In floats, since g0 is small where it matters: within 1e-6 of the exact area.
-typedef float Lanes __attribute__((vector_size(16)));
-constexpr Lanes lane_offsets = {0.5f, 1.5f, 2.5f, 3.5f};  // i + 1/2 for four pixels from i = 0
+// In floats, since g0 is small where it matters: within 1e-6 of the exact area. A group is four
+// floats; the AVX2 copy of the row loop (below) adds eight at a time between the sides.
+template <int Width>
+struct LanesOf;
+template <>
+struct LanesOf<4> {
+  typedef float type __attribute__((vector_size(16)));
+  static constexpr type offsets = {0.5f, 1.5f, 2.5f, 3.5f};  // i + 1/2 from i = 0
+};
+template <int Width>
+using Lanes = typename LanesOf<Width>::type;
 
-inline Lanes clamp01(Lanes v) {
+inline Lanes<4> clamp01(Lanes<4> v) {
 #if defined(__SSE__)
-  return _mm_min_ps(_mm_max_ps(v, Lanes{}), Lanes{} + 1.0f);  // one instruction each
+  return _mm_min_ps(_mm_max_ps(v, Lanes<4>{}), Lanes<4>{} + 1.0f);  // one instruction each
 #else
-  const Lanes zero = {}, one = zero + 1.0f;
+  const Lanes<4> zero = {}, one = zero + 1.0f;
   v = v > zero ? v : zero;
   return v < one ? v : one;
 #endif
 }
 
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+template <>
+struct LanesOf<8> {
+  typedef float type __attribute__((vector_size(32)));
+};
+#endif
+
+template <int Width>
 struct PieceLanes {
   double lo;              // the piece's least x
   float inverse, half_d;  // 1 / d and d / 2
@@ -344,90 +362,154 @@ struct PieceLanes {
       : lo(std::min(x0, x1)),
         inverse(1.0f / (static_cast<float>(std::abs(x1 - x0)) + 1e-30f)),
         half_d(static_cast<float>(std::abs(x1 - x0)) / 2) {}
-  // P for pixels i .. i + 3.
-  Lanes right_of(int i) const {
-    const Lanes g0 = static_cast<float>(i - lo) + lane_offsets;
-    const Lanes ta = clamp01((g0 - 1.0f) * inverse), tb = clamp01(g0 * inverse);
+  // P for pixels i .. i + Width - 1.
+  [[gnu::always_inline]] Lanes<Width> right_of(int i) const {
+    const Lanes<Width> g0 = static_cast<float>(i - lo) + LanesOf<Width>::offsets;
+    const Lanes<Width> ta = clamp01((g0 - 1.0f) * inverse), tb = clamp01(g0 * inverse);
     return ta + (tb - ta) * (g0 - half_d * (ta + tb));
   }
 };
 // [/listing]
 
-inline void add_four(float* pixels, Lanes values) {
-  Lanes v;
+template <class V>
+[[gnu::always_inline]] inline void add_group(float* pixels, const V& values) {
+  V v;
   std::memcpy(&v, pixels, sizeof v);
   v += values;
   std::memcpy(pixels, &v, sizeof v);
 }
 
-// Adds four values to the pixels from `first` on; at the canvas's right edge, only those on it.
-inline void add_lanes(float* row, int first, int width, Lanes values) {
-  if (first + 4 <= width) [[likely]]
-    return add_four(row + first, values);
-  for (int i = 0; first + i < width; ++i) row[first + i] += values[i];
+// Adds a group's values to the pixels from `first` on; at the canvas's right edge, only those on
+// it.
+template <int Width>
+[[gnu::always_inline]] inline void add_lanes(float* row, int first, int width,
+                                             const Lanes<Width>& values) {
+  if (first + Width <= width) [[likely]]
+    return add_group(row + first, values);
+  float each[Width];  // copied here, so that only this rare path puts the group in memory
+  std::memcpy(each, &values, sizeof each);
+  for (int i = 0; first + i < width; ++i) row[first + i] += each[i];
 }
 
 // [listing add_band_lanes]
 // A band summed onto the row four pixels at a time: a band within four pixels in one step;
 // otherwise groups of four from the left piece's first column (or the canvas's) until past its
-// last, whole groups of H while they end before the right piece, then groups until past the
-// right piece's last column (or the canvas's). A pixel that a group passes outside the triangle
-// gets exactly 0. The band's numbers come as arguments, so that they stay in registers.
-void add_band_lanes(float* row, int width, double y0, double y1, double left0, double left1,
-                    double right0, double right1, int left_first, int left_last, int right_first,
-                    int right_last) {
+// last, pairs of groups of Width floats of H while they end before the right piece (eight in the
+// AVX2 copy of the row loop, then four), then groups of four until past the right piece's last
+// column (or the canvas's). Only the pixels between the sides take groups of eight: each pixel
+// gets the same bits from both copies (the playground's WebAssembly has only the portable one and
+// draws what raster draws). A pixel that a group passes outside the triangle gets exactly 0. The
+// band's numbers come as arguments, so that they stay in registers.
+template <int Width>
+[[gnu::always_inline]] inline void add_band_lanes(float* row, int width, double y0, double y1,
+                                                  double left0, double left1, double right0,
+                                                  double right1, int left_first, int left_last,
+                                                  int right_first, int right_last) {
   if (right_last < 0 || left_first >= width) return;  // wholly off the canvas
-  const PieceLanes left(left0, left1), right(right0, right1);
+  const PieceLanes<4> left(left0, left1), right(right0, right1);
   const auto height = static_cast<float>(y1 - y0);
   int column = std::max(left_first, 0);
   if (right_last < column + 4 && column + 4 <= width) {  // the whole band in one group
-    return add_four(row + column, height * (left.right_of(column) - right.right_of(column)));
+    return add_group(row + column, height * (left.right_of(column) - right.right_of(column)));
   }
   left_last = std::min(left_last, width - 1);
   // Left of the right piece's first column, P_right is 0; right of the left piece, P_left is 1.
   for (; column <= left_last && column + 4 <= right_first; column += 4) {
-    add_lanes(row, column, width, height * left.right_of(column));
+    add_lanes<4>(row, column, width, height * left.right_of(column));
   }
   for (; column <= left_last; column += 4) {
-    add_lanes(row, column, width, height * (left.right_of(column) - right.right_of(column)));
+    add_lanes<4>(row, column, width, height * (left.right_of(column) - right.right_of(column)));
   }
-  const Lanes inside = Lanes{} + height;
+  const Lanes<Width> inside = Lanes<Width>{} + height;
   const int inside_end = std::min(right_first, width);  // the pixels wholly inside end here
-  for (; column + 8 <= inside_end; column += 8) {
-    add_four(row + column, inside);
-    add_four(row + column + 4, inside);
+  for (; column + 2 * Width <= inside_end; column += 2 * Width) {
+    add_group(row + column, inside);
+    add_group(row + column + Width, inside);
+  }
+  if (column + Width <= inside_end) {
+    add_group(row + column, inside);
+    column += Width;
   }
   if (column + 4 <= inside_end) {
-    add_four(row + column, inside);
+    add_group(row + column, Lanes<4>{} + height);
     column += 4;
   }
   const int last = std::min(right_last, width - 1);
   for (; column <= last; column += 4) {
-    add_lanes(row, column, width, height * (1.0f - right.right_of(column)));
+    add_lanes<4>(row, column, width, height * (1.0f - right.right_of(column)));
   }
 }
 // [/listing]
 
+// [listing add_summed_rows]
+// The summed blend's row loop: every band of the triangle's rows onto the canvas, a group of
+// Width pixels at a time (the bands of a row add up).
+template <int Width>
+[[gnu::always_inline]] inline void add_summed_rows_in(CoverageCanvas& canvas, const ByHeight& v,
+                                                      int first_row, int last_row) {
+  const int width = canvas.width();
+  // Inlined, so that the AVX2 copy compiles the bands' groups for AVX2 too.
+  walk_bands(
+      v, first_row, last_row, [&](int row, const Band& band, Part) __attribute__((always_inline)) {
+        add_band_lanes<Width>(canvas.row(row), width, band.y0, band.y1, band.left0, band.left1,
+                              band.right0, band.right1, band.left_first, band.left_last,
+                              band.right_first, band.right_last);
+      });
+}
+
+}  // namespace
+
+// Compiled twice on x86-64 as chapter 08's fill_rows is (GCC's and Clang's function
+// multi-versioning): groups of four floats in the portable copy, eight in the AVX2 one, which the
+// loader binds where the processor has AVX2. Elsewhere (the playground's WebAssembly) only the
+// portable copy. Outside the unnamed namespace: Clang counts the versions there as unused.
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+__attribute__((target("default"))) void add_summed_rows(CoverageCanvas& canvas,
+                                                        const Triangle& sorted, int first_row,
+                                                        int last_row) {
+  add_summed_rows_in<4>(canvas, {sorted[0], sorted[1], sorted[2]}, first_row, last_row);
+}
+__attribute__((target("avx2"))) void add_summed_rows(CoverageCanvas& canvas, const Triangle& sorted,
+                                                     int first_row, int last_row) {
+  add_summed_rows_in<8>(canvas, {sorted[0], sorted[1], sorted[2]}, first_row, last_row);
+}
+__attribute__((target("default"))) int summed_lane_floats() {
+  return 4;
+}
+__attribute__((target("avx2"))) int summed_lane_floats() {
+  return 8;
+}
+#else
+void add_summed_rows(CoverageCanvas& canvas, const Triangle& sorted, int first_row, int last_row) {
+  add_summed_rows_in<4>(canvas, {sorted[0], sorted[1], sorted[2]}, first_row, last_row);
+}
+int summed_lane_floats() {
+  return 4;
+}
+#endif
+// [/listing]
+
+int area_lane_floats() noexcept {
+  return summed_lane_floats();
+}
+
+namespace {
+
 // [listing add_rows]
-template <Blend blend, class Put>
-void add_rows(CoverageCanvas& canvas, const ByHeight& v, RowCells& cells, int first_row,
-              int last_row, Put put) {
+// Composited, a pixel takes its coverage at once: through the cells where the sides meet and in
+// the row of the middle vertex.
+template <class Put>
+void add_rows_over(CoverageCanvas& canvas, const ByHeight& v, RowCells& cells, int first_row,
+                   int last_row, Put put) {
   bool cells_started = false;
   walk_bands(v, first_row, last_row, [&](int row, const Band& band, Part part) {
-    float* const pixels = canvas.row(row);
-    if constexpr (blend == Blend::sum) {
-      add_band_lanes(pixels, canvas.width(), band.y0, band.y1, band.left0, band.left1, band.right0,
-                     band.right1, band.left_first, band.left_last, band.right_first,
-                     band.right_last);  // summed, the bands of a row add up
-    } else {
-      // Composited, a pixel takes its coverage at once: through the cells where the sides meet
-      // and in the row of the middle vertex.
-      if (part == Part::whole_row && add_band_directly(pixels, canvas.width(), band, put)) return;
-      if (!cells_started) cells.start_row(canvas.width());  // once per triangle, if at all
-      cells_started = true;
-      add_band(cells, band);
-      if (part != Part::below_middle) cells.add_to_canvas(canvas, row, blend);
+    if (part == Part::whole_row && add_band_directly(canvas.row(row), canvas.width(), band, put)) {
+      return;
     }
+    if (!cells_started) cells.start_row(canvas.width());  // once per triangle, if at all
+    cells_started = true;
+    add_band(cells, band);
+    if (part != Part::below_middle) cells.add_to_canvas(canvas, row, Blend::over);
   });
 }
 // [/listing]
@@ -447,9 +529,13 @@ void add_edges_in_row(RowCells& cells, const Triangle& triangle, int row) {
   walk_bands(v, row, row, [&](int, const Band& band, Part) { add_band(cells, band); });
 }
 
+namespace {
+
 // [listing draw_triangle_area]
-void draw_triangle_area(CoverageCanvas& canvas, const Triangle& triangle, RowCells& cells,
-                        Blend blend) {
+// Calls add_rows(sorted, first_row, last_row) with the triangle's vertices sorted by height and
+// the canvas rows it reaches, if any; a zero-area or non-finite triangle reaches none.
+template <class AddRows>
+void with_rows(const CoverageCanvas& canvas, const Triangle& triangle, AddRows add_rows) {
   const double doubled = doubled_area(triangle);
   if (!std::isfinite(doubled) || doubled == 0) return;
   const ByHeight sorted = sorted_by_height(triangle);
@@ -457,17 +543,30 @@ void draw_triangle_area(CoverageCanvas& canvas, const Triangle& triangle, RowCel
   int last_row = column_of(sorted.high.y);
   if (last_row - 0.5 >= sorted.high.y) --last_row;  // a row that the top only touches
   last_row = std::min(canvas.height() - 1, last_row);
-  if (first_row > last_row) return;
-  // One loop per blend, so the rows do not decide the blend at every pixel.
-  if (blend == Blend::sum) {
-    add_rows<Blend::sum>(canvas, sorted, cells, first_row, last_row,
-                         [](float& v, float c) { v += c; });
-  } else {
-    add_rows<Blend::over>(canvas, sorted, cells, first_row, last_row,
-                          [](float& v, float c) { v += c * (1.0f - v); });
-  }
+  if (first_row <= last_row) add_rows(sorted, first_row, last_row);
+}
+
+}  // namespace
+
+void draw_triangle_area(CoverageCanvas& canvas, const Triangle& triangle, RowCells& cells,
+                        Blend blend) {
+  with_rows(canvas, triangle, [&](const ByHeight& sorted, int first_row, int last_row) {
+    // One loop per blend, so the rows do not decide the blend at every pixel.
+    if (blend == Blend::sum) {
+      add_summed_rows(canvas, {sorted.low, sorted.middle, sorted.high}, first_row, last_row);
+    } else {
+      add_rows_over(canvas, sorted, cells, first_row, last_row,
+                    [](float& v, float c) { v += c * (1.0f - v); });
+    }
+  });
 }
 // [/listing]
+
+void draw_triangle_area_portable(CoverageCanvas& canvas, const Triangle& triangle) {
+  with_rows(canvas, triangle, [&](const ByHeight& sorted, int first_row, int last_row) {
+    add_summed_rows_in<4>(canvas, sorted, first_row, last_row);
+  });
+}
 
 void draw_triangle_area_over(CoverageCanvas& canvas, const Triangle& triangle, RowCells& cells) {
   draw_triangle_area(canvas, triangle, cells, Blend::over);
