@@ -270,11 +270,7 @@ void draw_triangle_batched(Canvas& canvas, const Triangle& triangle, Color color
 }
 
 void draw_batch_batched(Canvas& canvas, std::span<const SceneTriangle> triangles) {
-  if (canvas.write_counts_enabled()) {
-    draw_groups<CountingWriter>(canvas, triangles);
-  } else {
-    draw_groups<RowWriter>(canvas, triangles);
-  }
+  with_writer_type(canvas, [&]<class Writer>() { draw_groups<Writer>(canvas, triangles); });
 }
 
 }  // namespace tri::ch08

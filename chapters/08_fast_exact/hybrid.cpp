@@ -39,11 +39,7 @@ void draw_triangle_hybrid(Canvas& canvas, const Triangle& triangle, Color color)
 }
 
 void draw_batch_hybrid(Canvas& canvas, std::span<const SceneTriangle> triangles) {
-  if (canvas.write_counts_enabled()) {
-    draw_batch_with<CountingWriter>(canvas, triangles);
-  } else {
-    draw_batch_with<RowWriter>(canvas, triangles);
-  }
+  with_writer_type(canvas, [&]<class Writer>() { draw_batch_with<Writer>(canvas, triangles); });
 }
 
 }  // namespace tri::ch08

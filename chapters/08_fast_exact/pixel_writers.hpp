@@ -131,6 +131,17 @@ concept PixelWriter = requires(Writer writer, int x, int y) {
 
 static_assert(PixelWriter<RowWriter> && PixelWriter<CountingWriter>);
 
+/// Calls `draw.template operator()<Writer>()` with the writer type that suits the canvas (counting
+/// when it counts writes), for batch loops that make a writer per triangle themselves.
+template <class Draw>
+void with_writer_type(const Canvas& canvas, Draw&& draw) {
+  if (canvas.write_counts_enabled()) {
+    draw.template operator()<CountingWriter>();
+  } else {
+    draw.template operator()<RowWriter>();
+  }
+}
+
 /// Calls draw(writer) with the writer that suits the canvas: counting when it counts writes.
 template <class Draw>
 void with_writer(Canvas& canvas, Color color, Draw&& draw) {

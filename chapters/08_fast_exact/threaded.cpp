@@ -69,11 +69,8 @@ void draw_bands(Canvas& canvas, std::span<const SceneTriangle> triangles, int th
 
 void draw_bands_of_thread(Canvas& canvas, std::span<const SceneTriangle> triangles, int thread,
                           int threads) noexcept {
-  if (canvas.write_counts_enabled()) {
-    draw_bands<CountingWriter>(canvas, triangles, thread, threads);
-  } else {
-    draw_bands<RowWriter>(canvas, triangles, thread, threads);
-  }
+  with_writer_type(canvas,
+                   [&]<class Writer>() { draw_bands<Writer>(canvas, triangles, thread, threads); });
 }
 
 // [listing draw_batch_on_threads]

@@ -183,11 +183,7 @@ void TileBins::draw_tile_with(Canvas& canvas, int tile) const noexcept {
 // [/listing]
 
 void TileBins::draw_tile(Canvas& canvas, int tile) const noexcept {
-  if (canvas.write_counts_enabled()) {
-    draw_tile_with<CountingWriter>(canvas, tile);
-  } else {
-    draw_tile_with<RowWriter>(canvas, tile);
-  }
+  with_writer_type(canvas, [&]<class Writer>() { draw_tile_with<Writer>(canvas, tile); });
 }
 
 TiledRenderer::TiledRenderer(int threads) {
