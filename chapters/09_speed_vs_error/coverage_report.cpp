@@ -244,6 +244,7 @@ std::string coverage_svg(std::span<const CoverageSummary> summaries, const std::
     }
   }
   std::vector<std::pair<double, double>> labelled;  // points already labelled
+  double floor_labels_end = 0;  // right end of the labels of points at the exact floor
   for (std::size_t i = 0; i < summaries.size(); ++i) {
     const CoverageSummary& s = summaries[i];
     const bool grid = s.algorithm.starts_with("samples_grid_");
@@ -272,9 +273,15 @@ std::string coverage_svg(std::span<const CoverageSummary> summaries, const std::
               escape_xml(text));
     } else {
       element(svg, "text", {{"x", px + 8}, {"y", py + 4}}, escape_xml(text));
+      if (px == x.zero_position) {
+        floor_labels_end =
+            std::max(floor_labels_end, px + 8 + 6.4 * static_cast<double>(text.size()));
+      }
     }
   }
-  // The legend, in the plot's empty upper left (fast and exact: only the cell method gets near).
+  // The legend, in the plot's empty upper left (fast and exact: only the cell method gets near),
+  // right of the labels of the points at the exact floor, so that it hides none of them.
+  const double legend_x = std::max(left + floor_gap, floor_labels_end + 12);
   const std::pair<const char*, const char*> legend[] = {
       {"#4e79a7", "regular n × n grid (1 to 256 samples)"},
       {"#f28e2b", "Vulkan standard pattern (2 to 16 samples)"},
@@ -282,21 +289,20 @@ std::string coverage_svg(std::span<const CoverageSummary> summaries, const std::
       {"#e15759", "external peer"}};
   double ly = top + 24;
   element(svg, "rect",
-          {{"x", left + floor_gap},
+          {{"x", legend_x},
            {"y", ly - 16},
            {"width", "290"},
            {"height", "100"},
            {"fill", "white"},
            {"stroke", "#ccc"}});
   for (const auto& [colour, text] : legend) {
-    element(svg, "circle",
-            {{"cx", left + floor_gap + 14}, {"cy", ly - 4}, {"r", "4.5"}, {"fill", colour}});
-    element(svg, "text", {{"x", left + floor_gap + 26}, {"y", ly}}, text);
+    element(svg, "circle", {{"cx", legend_x + 14}, {"cy", ly - 4}, {"r", "4.5"}, {"fill", colour}});
+    element(svg, "text", {{"x", legend_x + 26}, {"y", ly}}, text);
     ly += 18;
   }
-  line(svg, left + floor_gap + 6, ly - 4, left + floor_gap + 22, ly - 4,
+  line(svg, legend_x + 6, ly - 4, legend_x + 22, ly - 4,
        {{"stroke", "#999"}, {"stroke-dasharray", "5 4"}});
-  element(svg, "text", {{"x", left + floor_gap + 26}, {"y", ly}}, "error ∝ 1/n, cost ∝ n² (guide)");
+  element(svg, "text", {{"x", legend_x + 26}, {"y", ly}}, "error ∝ 1/n, cost ∝ n² (guide)");
   svg << "</svg>\n";
   return svg.str();
 }

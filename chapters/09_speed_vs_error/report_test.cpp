@@ -5,6 +5,7 @@
 #include <fstream>
 #include <map>
 #include <random>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -482,6 +483,25 @@ TEST_CASE("The coverage section and plot show every summary, the grids' slope an
   CHECK(occurrences(svg, "<polyline ") == 3);
   CHECK(svg.find("error ∝ 1/n, cost ∝ n² (guide)") != std::string::npos);
   CHECK(tri::ch09::coverage_markdown({}, {}, "none").empty());
+}
+
+TEST_CASE("The coverage plot's legend starts right of the labels of the points at the exact floor",
+          "[09_speed_vs_error][coverage]") {
+  const std::string& svg = tiny_run().files.coverage_svg;
+  const std::regex legend_box(R"re(<rect x="([0-9.]+)" y="[0-9.]+" width="290")re");
+  std::smatch legend;
+  const bool found = std::regex_search(svg, legend, legend_box);
+  REQUIRE(found);
+  const double legend_left = std::stod(legend[1].str());
+  // Labels at the floor start 8 pixels right of it, about 6.4 pixels per character.
+  const std::regex floor_label(R"re(<text x="([0-9.]+)" y="[0-9.]+">(area_cells[a-z_, ]*)<)re");
+  int labels = 0;
+  for (auto it = std::sregex_iterator(svg.begin(), svg.end(), floor_label);
+       it != std::sregex_iterator(); ++it, ++labels) {
+    const double right = std::stod((*it)[1].str()) + 6.4 * static_cast<double>((*it)[2].length());
+    CHECK(right < legend_left);
+  }
+  CHECK(labels >= 1);
 }
 
 TEST_CASE("Every line of the coverage CSV has as many fields as its header, peers included",
