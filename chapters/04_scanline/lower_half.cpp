@@ -1,6 +1,7 @@
 #include "chapters/04_scanline/lower_half.hpp"
 
 #include "chapters/04_scanline/clip.hpp"
+#include "common/pixel_diagram.hpp"
 
 namespace tri::ch04 {
 
@@ -21,8 +22,8 @@ void draw_lower_half_boundary_points(Canvas& canvas, glm::ivec2 a, glm::ivec2 b,
   const RowsOnCanvas rows = rows_on_canvas(canvas, t.p0.y, t.p1.y);
   for (std::int64_t y = rows.first; y <= rows.last; ++y) {
     const SpanEnds ends = lower_half_ends(t, y);
-    put_pixel_if_on_canvas(canvas, ends.a, y, colors::red);
-    put_pixel_if_on_canvas(canvas, ends.b, y, colors::green);
+    put_pixel_if_on_canvas(canvas, ends.a, y, diagram_colors::vermillion);
+    put_pixel_if_on_canvas(canvas, ends.b, y, diagram_colors::blue);
   }
 }
 // [/listing]

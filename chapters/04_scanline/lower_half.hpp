@@ -25,8 +25,8 @@ struct SpanEnds {
 /// Preconditions: t0.y < t2.y and t0.y <= y <= t1.y.
 SpanEnds lower_half_ends(const SortedTriangle& t, std::int64_t y) noexcept;
 
-/// Step 3: for every row of the lower half, only the point on boundary A (red) and the point on
-/// boundary B (green). Rows are one pixel apart but the points are not, so a shallow boundary
+/// Step 3: for every row of the lower half, only the point on boundary A (vermillion) and the point
+/// on boundary B (blue). Rows are one pixel apart but the points are not, so a shallow boundary
 /// shows gaps. Draws nothing when all three vertices share a row (the article divides 0 by 0).
 void draw_lower_half_boundary_points(Canvas& canvas, glm::ivec2 a, glm::ivec2 b, glm::ivec2 c);
 

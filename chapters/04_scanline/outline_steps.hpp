@@ -14,7 +14,8 @@ namespace tri::ch04 {
 void draw_outline(Canvas& canvas, glm::ivec2 a, glm::ivec2 b, glm::ivec2 c, Color color);
 
 /// Step 2: sorts the vertices by y into t0, t1, t2, then draws boundary B (t0 -> t1 -> t2, the
-/// two short edges) in green and boundary A (t0 -> t2, the long edge) in red on top of it.
+/// two short edges) in blue and boundary A (t0 -> t2, the long edge) in vermillion on top of it
+/// (diagram_colors, as the figures show them).
 void draw_sorted_boundaries(Canvas& canvas, glm::ivec2 a, glm::ivec2 b, glm::ivec2 c);
 
 }  // namespace tri::ch04

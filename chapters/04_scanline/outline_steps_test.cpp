@@ -5,12 +5,15 @@
 #include "chapters/01_lines/lines.hpp"
 #include "chapters/04_scanline/boundaries.hpp"
 #include "chapters/04_scanline/scanline_test_support.hpp"
+#include "common/pixel_diagram.hpp"
 
 namespace {
 
 using tri::Canvas;
 using tri::ch04::testing::red_triangle;
 using tri::ch04::testing::tinyrenderer_triangles;
+using tri::diagram_colors::blue;
+using tri::diagram_colors::vermillion;
 using tri::testing::PixelSet;
 using tri::testing::written_pixels;
 
@@ -64,7 +67,7 @@ TEST_CASE("Step 1 draws the same pixels for all six vertex orders", "[04_scanlin
   }
 }
 
-TEST_CASE("Step 2 draws boundary A from t0 to t2 in red over boundary B in green",
+TEST_CASE("Step 2 draws boundary A from t0 to t2 in vermillion over boundary B in blue",
           "[04_scanline][step2]") {
   for (const auto& triangle : tinyrenderer_triangles) {
     const auto [a, b, c] = triangle.vertices;
@@ -74,16 +77,15 @@ TEST_CASE("Step 2 draws boundary A from t0 to t2 in red over boundary B in green
     const PixelSet boundary_a = line_pixels(t.p0, t.p2);
     PixelSet boundary_b = line_pixels(t.p0, t.p1);
     boundary_b.merge(line_pixels(t.p1, t.p2));
-    CHECK(pixels_coloured(canvas, tri::colors::red) == boundary_a);
-    CHECK(pixels_coloured(canvas, tri::colors::green) ==
-          tri::testing::minus(boundary_b, boundary_a));
+    CHECK(pixels_coloured(canvas, vermillion) == boundary_a);
+    CHECK(pixels_coloured(canvas, blue) == tri::testing::minus(boundary_b, boundary_a));
   }
   // The red triangle: A is the long edge on the left, rising from (10,70) to (50,160).
   Canvas canvas(200, 200);
   tri::ch04::draw_sorted_boundaries(canvas, red_triangle[0], red_triangle[1], red_triangle[2]);
-  CHECK(canvas.pixel(10, 70) == tri::colors::red);
-  CHECK(canvas.pixel(50, 160) == tri::colors::red);
-  CHECK(canvas.pixel(70, 80) == tri::colors::green);
+  CHECK(canvas.pixel(10, 70) == vermillion);
+  CHECK(canvas.pixel(50, 160) == vermillion);
+  CHECK(canvas.pixel(70, 80) == blue);
 }
 
 TEST_CASE("Steps 1 and 2 draw a triangle lying on one row as a segment",
@@ -94,8 +96,8 @@ TEST_CASE("Steps 1 and 2 draw a triangle lying on one row as a segment",
   // Equal y: nothing swaps, so t0 = (0,2), t1 = (5,2), t2 = (3,2) and A covers x = 0..3.
   Canvas canvas(200, 200);
   tri::ch04::draw_sorted_boundaries(canvas, {0, 2}, {5, 2}, {3, 2});
-  CHECK(pixels_coloured(canvas, tri::colors::red) == PixelSet{{0, 2}, {1, 2}, {2, 2}, {3, 2}});
-  CHECK(pixels_coloured(canvas, tri::colors::green) == PixelSet{{4, 2}, {5, 2}});
+  CHECK(pixels_coloured(canvas, vermillion) == PixelSet{{0, 2}, {1, 2}, {2, 2}, {3, 2}});
+  CHECK(pixels_coloured(canvas, blue) == PixelSet{{4, 2}, {5, 2}});
 }
 
 TEST_CASE("Outline steps far off the canvas stay bounded and write nothing outside it",

@@ -30,12 +30,12 @@ void fill_written(PixelDiagram& diagram, const Canvas& drawn, Color color) {
   }
 }
 
-// Fills the pixels the step painted red as boundary A and those painted green as boundary B.
+// Fills every pixel the step wrote in the colour it wrote: vermillion for A, blue for B.
 void fill_boundaries(PixelDiagram& diagram, const Canvas& drawn) {
   for (int y = 0; y < drawn.height(); ++y) {
     for (int x = 0; x < drawn.width(); ++x) {
       if (drawn.write_count(x, y) == 0) continue;
-      diagram.fill({x, y}, drawn.pixel(x, y) == colors::red ? boundary_a : boundary_b);
+      diagram.fill({x, y}, drawn.pixel(x, y));
     }
   }
 }
