@@ -129,6 +129,9 @@ TEST_CASE("Zero-area triangles draw the pixel centres lying exactly on their seg
   CHECK(filled({5, 5}, {5, 5}, {15, 10}, 32, 32) ==
         PixelSet{{5, 5}, {7, 6}, {9, 7}, {11, 8}, {13, 9}, {15, 10}});
   CHECK(filled({0, 12}, {10, 15}, {20, 18}, 32, 32) == PixelSet{{0, 12}, {10, 15}, {20, 18}});
+  // The chapter's figure (05_zero_area, 24x30): direction (10, 3), only the vertices; one point.
+  CHECK(filled({2, 22}, {12, 25}, {22, 28}, 24, 30) == PixelSet{{2, 22}, {12, 25}, {22, 28}});
+  CHECK(filled({20, 4}, {20, 4}, {20, 4}, 24, 30) == PixelSet{{20, 4}});
   CHECK(filled({2, 3}, {9, 3}, {5, 3}, 32, 32).size() == 8);    // horizontal
   CHECK(filled({4, 9}, {4, 1}, {4, 40}, 32, 32).size() == 31);  // vertical, clipped above y = 31
 
