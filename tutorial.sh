@@ -6,8 +6,9 @@
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")"
 
-# The Debian packages the tutorial needs: compiler and build tools, then the four libraries.
-PACKAGES=(g++ make cmake libglm-dev libstb-dev catch2 doxygen)
+# The Debian packages the tutorial needs: compiler and build tools, the four libraries, and the
+# docs site (Doxygen, and Python 3 for its Markdown filter).
+PACKAGES=(g++ make cmake libglm-dev libstb-dev catch2 doxygen python3)
 # The run command also builds the docs site's playground: the chapters' C++ compiled to
 # WebAssembly (docs/playground/README.md).
 DOCS_PACKAGES=(emscripten)

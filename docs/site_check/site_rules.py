@@ -160,7 +160,7 @@ def _linked_pages(site, links):
 def source_problems(pages, chapters):
     """Every chapter with a README.md in the sources must have its page on the site."""
     return [f"chapter {number:02d} ({folder}/README.md) has no page chapter{number:02d}.html: "
-            f"its title must end with {{#chapter{number:02d}}}"
+            f"its title must end with <!-- doxygen: {{#chapter{number:02d}}} -->"
             for number, folder in chapters.items() if number not in pages]
 
 

@@ -36,8 +36,10 @@ std::string unbroken(const std::string& text) {
   return out;
 }
 
+// The anchor GitHub gives the case's heading: its name, which is lower case, digits and '_'.
+// The site's Markdown filter gives the heading an id of its own and rewrites the links.
 std::string anchor(const HardCase& c) {
-  return "hard_case_" + c.name;
+  return c.name;
 }
 
 }  // namespace
@@ -91,7 +93,7 @@ std::string to_markdown(const std::vector<Outcome>& outcomes, const std::vector<
     table[{o.case_name, o.algorithm}] = &o;
   }
   std::ostringstream md;
-  md << "# Hard cases × algorithms {#hard_cases}\n\n"
+  md << "# Hard cases × algorithms <!-- doxygen: {#hard_cases} -->\n\n"
      << "Every registered algorithm on every hard case of the shared suite "
         "(`tests/hard_cases/hard_cases.cpp`), measured against the exact oracle of chapter 07 on "
         "a 32×32 canvas. The matrix gives the whole picture at a glance; below it, each case has "
@@ -101,7 +103,7 @@ std::string to_markdown(const std::vector<Outcome>& outcomes, const std::vector<
         "input drawn), demand **exact** from every `top-left` algorithm, and pin every other "
         "number in `tests/hard_cases_expected.csv`.\n\n";
 
-  md << "## The matrix {#hard_cases_matrix}\n\n"
+  md << "## The matrix\n\n"
      << "How to read a cell:\n\n"
      << "- **exact**: the same pixels as the oracle, in every vertex order.\n"
      << "- **refused**: NaN or infinite input rejected, nothing drawn.\n"
@@ -140,13 +142,13 @@ std::string to_markdown(const std::vector<Outcome>& outcomes, const std::vector<
     md << "\n";
   }
 
-  md << "\n## The cases {#hard_cases_list}\n\n"
+  md << "\n## The cases\n\n"
      << "Each diagram shows the pixels around the case's triangles (the whole canvas when a "
         "vertex lies beyond it): grey pixels are the ones the exact oracle covers, the blue lines "
         "the ideal edges, and a red ring marks a pixel centre exactly on an edge, where only a "
         "tie rule can decide.\n";
   for (const auto& c : cases) {
-    md << "\n### " << c.name << " {#" << anchor(c) << "}\n\n"
+    md << "\n### " << c.name << "\n\n"
        << "**Why it is hard:** " << c.reason << ".\n\n";
     const auto named = named_vertices(c);
     if (!named.empty()) {
