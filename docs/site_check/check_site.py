@@ -77,6 +77,7 @@ def check(html_dir, chapters_dir, chromium, timeout_s):
     missing = [name for name in to_visit if not (html_dir / name).is_file()]
     problems += [f"the site has no {name}" for name in missing]
     to_visit = [name for name in to_visit if name not in missing]
+    to_visit += [name for name in site_rules.OTHER_PAGES if (html_dir / name).is_file()]
 
     deadline = Deadline(timeout_s)
     facts_script = (HERE / "page_facts.js").read_text(encoding="utf-8")

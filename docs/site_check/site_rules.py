@@ -13,6 +13,8 @@ CHAPTER_PAGE = re.compile(r"^chapter(\d{2})\.html$")
 CHAPTER_FOLDER = re.compile(r"^(\d{2})_\w+$")
 MAIN_PAGE = "index.html"
 HARD_CASES_PAGE = "hard_cases.html"
+# The other Markdown pages: opened, and their figures and links checked, where the site has them.
+OTHER_PAGES = ("design.html", "playground.html", "fuzzing.html")
 # The report chapter's plot, which the main page shows once that chapter exists.
 SPEED_VS_ERROR_CHAPTER = 9
 SPEED_VS_ERROR_PLOT = "09_speed_vs_error.svg"
