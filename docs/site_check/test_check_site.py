@@ -181,6 +181,12 @@ class CheckerTest(unittest.TestCase):
             "chapter02.html: broken link to chapter02.html#step9, "
             'no such anchor ("to step 1")')
 
+    def test_a_broken_link_on_the_design_page_fails(self):
+        files = {**correct_site(), "design.html": page(
+            "Design", '<p><a href="chapter01.html#step9">step 9</a></p>')}
+        self.assert_fails_with(files, "design.html: broken link to chapter01.html#step9, "
+                               'no such anchor ("step 9")')
+
     def test_a_chapter_missing_from_the_navigation_tree_fails(self):
         self.assert_edit_fails_with(
             ("navtreedata.js", '["Chapter 02", "chapter02.html", null], ', ""),
