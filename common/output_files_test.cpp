@@ -14,18 +14,12 @@
 #include <vector>
 
 #include "common/cli.hpp"
+#include "tests/support/scratch_folder.hpp"
 
 namespace tri {
 namespace {
 
 namespace fs = std::filesystem;
-
-fs::path fresh_folder(const std::string& name) {
-  const fs::path folder = fs::current_path() / "output_files_test_output" / name;
-  fs::remove_all(folder);
-  fs::create_directories(folder);
-  return folder;
-}
 
 void put(const fs::path& path, const std::string& text) {
   std::ofstream(path, std::ios::binary) << text;
@@ -53,7 +47,8 @@ bool running_as_root() {
 
 TEST_CASE("A failing second output leaves the first output's earlier file exactly as it was",
           "[common][output_files]") {
-  const fs::path folder = fresh_folder("second_fails");
+  const testing::ScratchFolder scratch("second_fails");
+  const fs::path& folder = scratch.path();
   put(folder / "picture.png", "the earlier picture");
   fs::create_directory(folder / "counts.pgm");  // a folder: this output cannot be written
   {
@@ -69,7 +64,8 @@ TEST_CASE("A failing second output leaves the first output's earlier file exactl
 
 TEST_CASE("Staged outputs replace nothing and leave nothing behind until they are committed",
           "[common][output_files]") {
-  const fs::path folder = fresh_folder("uncommitted");
+  const testing::ScratchFolder scratch("uncommitted");
+  const fs::path& folder = scratch.path();
   put(folder / "a.txt", "old a");
   {
     OutputTransaction outputs;
@@ -92,7 +88,8 @@ TEST_CASE("Staged outputs replace nothing and leave nothing behind until they ar
 
 TEST_CASE("The temporary is a new regular file named .NAME.XXXXXX.tmp beside the output",
           "[common][output_files]") {
-  const fs::path folder = fresh_folder("temporary_name");
+  const testing::ScratchFolder scratch("temporary_name");
+  const fs::path& folder = scratch.path();
   OutputTransaction outputs;
   outputs.stage(folder / "render.png", bytes_of_text("png"));
   const auto names = names_in(folder);
@@ -104,7 +101,8 @@ TEST_CASE("The temporary is a new regular file named .NAME.XXXXXX.tmp beside the
 
 TEST_CASE("Symlinks planted at temporary-looking names beside the output are not followed",
           "[common][output_files][links]") {
-  const fs::path folder = fresh_folder("planted_links");
+  const testing::ScratchFolder scratch("planted_links");
+  const fs::path& folder = scratch.path();
   put(folder / "victim", "precious");
   for (const char* name : {"render.png.tmp", ".render.png.tmp", ".render.png.tmp.tmp"}) {
     fs::create_symlink(folder / "victim", folder / name);
@@ -119,7 +117,8 @@ TEST_CASE("Symlinks planted at temporary-looking names beside the output are not
 
 TEST_CASE("A symlinked output is written through: the link stays, its file gets the new bytes",
           "[common][output_files][links]") {
-  const fs::path folder = fresh_folder("write_through");
+  const testing::ScratchFolder scratch("write_through");
+  const fs::path& folder = scratch.path();
   fs::create_directory(folder / "real");
   put(folder / "real" / "picture.png", "old");
   fs::create_symlink("real/picture.png", folder / "link.png");
@@ -131,7 +130,8 @@ TEST_CASE("A symlinked output is written through: the link stays, its file gets 
 
 TEST_CASE("An output with several hard links is refused and every link keeps its content",
           "[common][output_files][links]") {
-  const fs::path folder = fresh_folder("hard_links");
+  const testing::ScratchFolder scratch("hard_links");
+  const fs::path& folder = scratch.path();
   put(folder / "a.png", "shared");
   fs::create_hard_link(folder / "a.png", folder / "b.png");
   CHECK_THROWS_WITH(write_file_safely(folder / "a.png", bytes_of_text("new")),
@@ -142,7 +142,8 @@ TEST_CASE("An output with several hard links is refused and every link keeps its
 
 TEST_CASE("An output that is an input is refused, also through a hard link or a symlink",
           "[common][output_files][identity]") {
-  const fs::path folder = fresh_folder("input_as_output");
+  const testing::ScratchFolder scratch("input_as_output");
+  const fs::path& folder = scratch.path();
   put(folder / "s.scene", "canvas 4 4\n");
   fs::create_hard_link(folder / "s.scene", folder / "hard.scene");
   fs::create_symlink(folder / "s.scene", folder / "soft.scene");
@@ -159,7 +160,8 @@ TEST_CASE("An output that is an input is refused, also through a hard link or a 
 
 TEST_CASE("Two outputs naming one file are refused, whether it exists or not",
           "[common][output_files][identity]") {
-  const fs::path folder = fresh_folder("same_file");
+  const testing::ScratchFolder scratch("same_file");
+  const fs::path& folder = scratch.path();
   const std::vector<fs::path> new_file{folder / "x.png", folder / "." / "x.png"};
   CHECK_THROWS_WITH(check_outputs(new_file), Catch::Contains("two outputs name one file"));
   put(folder / "y.png", "old");
@@ -187,7 +189,8 @@ TEST_CASE("A device or a FIFO as output is refused with a reason and never repla
                     Catch::Contains("/dev/null") && Catch::Contains("never replaced"));
   CHECK(fs::is_character_file("/dev/null"));
 
-  const fs::path folder = fresh_folder("fifo");
+  const testing::ScratchFolder scratch("fifo");
+  const fs::path& folder = scratch.path();
   REQUIRE(::mkfifo((folder / "pipe").c_str(), 0666) == 0);
   CHECK_THROWS_WITH(write_file_safely(folder / "pipe", bytes_of_text("x")),
                     Catch::Contains("FIFO"));
@@ -202,7 +205,8 @@ TEST_CASE("A read-only existing output is refused with Permission denied and kep
     SUCCEED();
     return;
   }
-  const fs::path folder = fresh_folder("read_only");
+  const testing::ScratchFolder scratch("read_only");
+  const fs::path& folder = scratch.path();
   put(folder / "keep.png", "keep me");
   fs::permissions(folder / "keep.png", fs::perms::owner_read | fs::perms::group_read);
   const std::vector<fs::path> outputs{folder / "keep.png"};
@@ -215,7 +219,8 @@ TEST_CASE("A read-only existing output is refused with Permission denied and kep
 
 TEST_CASE("A new output gets mode 0666 less the umask, a replaced one keeps its mode",
           "[common][output_files]") {
-  const fs::path folder = fresh_folder("modes");
+  const testing::ScratchFolder scratch("modes");
+  const fs::path& folder = scratch.path();
   const mode_t previous = ::umask(022);
   write_file_safely(folder / "new.txt", bytes_of_text("x"));
   ::umask(previous);
@@ -232,7 +237,8 @@ TEST_CASE("A new output gets mode 0666 less the umask, a replaced one keeps its 
 
 TEST_CASE("An output name of 255 characters is written, its temporary name is shortened",
           "[common][output_files]") {
-  const fs::path folder = fresh_folder("long_name");
+  const testing::ScratchFolder scratch("long_name");
+  const fs::path& folder = scratch.path();
   const std::string name(255, 'n');
   write_file_safely(folder / name, bytes_of_text("long"));
   CHECK(read(folder / name) == "long");
@@ -241,7 +247,8 @@ TEST_CASE("An output name of 255 characters is written, its temporary name is sh
 
 TEST_CASE("An output below a regular file fails, names the system's reason and writes nothing",
           "[common][output_files]") {
-  const fs::path folder = fresh_folder("below_file");
+  const testing::ScratchFolder scratch("below_file");
+  const fs::path& folder = scratch.path();
   put(folder / "blocker", "a file");
   const std::vector<fs::path> outputs{folder / "blocker" / "sub" / "x.png"};
   CHECK_THROWS_WITH(check_outputs(outputs), Catch::Contains("Not a directory"));
