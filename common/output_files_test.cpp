@@ -1,6 +1,10 @@
 #include "common/output_files.hpp"
 
+#include <fcntl.h>
+#include <grp.h>
+#include <signal.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <catch2/catch.hpp>
@@ -41,6 +45,38 @@ std::vector<std::string> names_in(const fs::path& folder) {
 
 bool running_as_root() {
   return ::geteuid() == 0;
+}
+
+struct stat status_of(const fs::path& path) {
+  struct stat info {};
+  REQUIRE(::lstat(path.c_str(), &info) == 0);
+  return info;
+}
+
+// Whether this folder's file system gives unnamed temporary files (Linux O_TMPFILE).
+bool has_unnamed_temporaries(const fs::path& folder) {
+  const int descriptor = ::open(folder.c_str(), O_TMPFILE | O_WRONLY | O_CLOEXEC, 0600);
+  if (descriptor < 0) return false;
+  ::close(descriptor);
+  return true;
+}
+
+// Runs body in a child process whose signals are at their defaults, as in a program (Catch2
+// handles them in the test process), and returns the signal that ended it (0: it exited).
+template <class Body>
+int signal_ending(Body body) {
+  const pid_t child = ::fork();
+  REQUIRE(child >= 0);
+  if (child == 0) {
+    for (const int signal_number : {SIGINT, SIGTERM, SIGHUP, SIGPIPE, SIGXFSZ}) {
+      ::signal(signal_number, SIG_DFL);
+    }
+    body();
+    ::_exit(0);
+  }
+  int status = 0;
+  REQUIRE(::waitpid(child, &status, 0) == child);
+  return WIFSIGNALED(status) ? WTERMSIG(status) : 0;
 }
 
 }  // namespace
@@ -86,11 +122,11 @@ TEST_CASE("Staged outputs replace nothing and leave nothing behind until they ar
   CHECK(names_in(folder) == std::vector<std::string>{"a.txt", "b.txt"});
 }
 
-TEST_CASE("The temporary is a new regular file named .NAME.XXXXXX.tmp beside the output",
+TEST_CASE("A named temporary is a new regular file named .NAME.XXXXXX.tmp beside the output",
           "[common][output_files]") {
   const testing::ScratchFolder scratch("temporary_name");
   const fs::path& folder = scratch.path();
-  OutputTransaction outputs;
+  OutputTransaction outputs(nullptr, TemporaryFiles::named);
   outputs.stage(folder / "render.png", bytes_of_text("png"));
   const auto names = names_in(folder);
   REQUIRE(names.size() == 1);
@@ -270,6 +306,188 @@ TEST_CASE("The output - goes to the given standard output, and is refused withou
   CHECK(standard_output.str() == "bytes");
   CHECK_THROWS_AS(write_file_safely("-", bytes_of_text("x")), OutputError);
   CHECK_FALSE(fs::exists("-"));
+}
+
+TEST_CASE("Staged outputs leave no name in their folder where unnamed temporaries exist",
+          "[common][output_files][interrupts]") {
+  const testing::ScratchFolder scratch("unnamed");
+  const fs::path& folder = scratch.path();
+  if (!has_unnamed_temporaries(folder)) {
+    WARN("skipped: the file system of " << folder << " has no O_TMPFILE");
+    return;
+  }
+  put(folder / "a.txt", "old a");
+  OutputTransaction outputs;
+  outputs.stage(folder / "a.txt", bytes_of_text("new a"));
+  outputs.stage(folder / "b.txt", bytes_of_text("new b"));
+  CHECK(names_in(folder) == std::vector<std::string>{"a.txt"});
+  outputs.commit();
+  CHECK(read(folder / "a.txt") == "new a");
+  CHECK(read(folder / "b.txt") == "new b");
+  CHECK(names_in(folder) == std::vector<std::string>{"a.txt", "b.txt"});
+}
+
+TEST_CASE("A signal while named temporaries are staged removes them and the folders made for them",
+          "[common][output_files][interrupts]") {
+  for (const int signal_number : {SIGINT, SIGTERM, SIGHUP, SIGPIPE, SIGXFSZ}) {
+    const testing::ScratchFolder scratch("signalled");
+    const fs::path& folder = scratch.path();
+    put(folder / "a.txt", "old a");
+    const int ended_by = signal_ending([&] {
+      OutputTransaction outputs(nullptr, TemporaryFiles::named);
+      outputs.stage(folder / "a.txt", bytes_of_text("new a"));
+      outputs.stage(folder / "made" / "deeper" / "b.txt", bytes_of_text("new b"));
+      ::raise(signal_number);
+    });
+    CHECK(ended_by == signal_number);
+    CHECK(names_in(folder) == std::vector<std::string>{"a.txt"});
+    CHECK(read(folder / "a.txt") == "old a");
+  }
+}
+
+TEST_CASE("A failed run removes the folders it made for its outputs and keeps those it found",
+          "[common][output_files]") {
+  const testing::ScratchFolder scratch("made_folders");
+  const fs::path& folder = scratch.path();
+  fs::create_directory(folder / "found");
+  fs::create_directory(folder / "taken");
+  {
+    OutputTransaction outputs;
+    outputs.stage(folder / "found" / "made" / "deeper" / "a.txt", bytes_of_text("a"));
+    CHECK(fs::is_directory(folder / "found" / "made" / "deeper"));
+    CHECK_THROWS_AS(outputs.stage(folder / "taken", bytes_of_text("b")), OutputError);
+  }
+  CHECK(names_in(folder) == std::vector<std::string>{"found", "taken"});
+  CHECK(names_in(folder / "found").empty());
+  write_file_safely(folder / "kept" / "a.txt", bytes_of_text("a"));  // a committed run keeps it
+  CHECK(read(folder / "kept" / "a.txt") == "a");
+}
+
+TEST_CASE("An output name ending in a slash is a usage error and creates nothing",
+          "[common][output_files]") {
+  const testing::ScratchFolder scratch("trailing_slash");
+  const fs::path& folder = scratch.path();
+  for (const fs::path& name : {folder / "x.png/", folder / "x.png" / ".", folder / "x" / ".."}) {
+    const std::vector<fs::path> outputs{name};
+    CHECK_THROWS_AS(check_outputs(outputs), UsageError);
+    CHECK_THROWS_WITH(check_outputs(outputs), Catch::Contains("trailing slash"));
+    CHECK_THROWS_AS(write_file_safely(name, bytes_of_text("x")), OutputError);
+  }
+  CHECK(names_in(folder).empty());
+}
+
+TEST_CASE("A replaced file keeps its owner, group and permission bits but never setuid or setgid",
+          "[common][output_files][permissions]") {
+  const testing::ScratchFolder scratch("owner");
+  const fs::path& folder = scratch.path();
+  put(folder / "tool", "old");
+  ::chmod((folder / "tool").c_str(), 06750);
+  write_file_safely(folder / "tool", bytes_of_text("new"));
+  CHECK((status_of(folder / "tool").st_mode & 07777) == 0750);
+
+  put(folder / "theirs", "old");
+  uid_t owner = ::geteuid();
+  gid_t group = ::getegid();
+  if (running_as_root()) {
+    owner = 4321;  // any ids will do: root may give a file to anyone
+    group = 4322;
+  } else {
+    std::vector<gid_t> groups(static_cast<std::size_t>(::getgroups(0, nullptr)));
+    ::getgroups(static_cast<int>(groups.size()), groups.data());
+    const auto other =
+        std::find_if(groups.begin(), groups.end(), [](gid_t g) { return g != ::getegid(); });
+    if (other == groups.end()) {
+      WARN("skipped: not root and in one group only, so no file here can belong to another");
+      return;
+    }
+    group = *other;
+  }
+  REQUIRE(::chown((folder / "theirs").c_str(), owner, group) == 0);
+  ::chmod((folder / "theirs").c_str(), 0640);
+  write_file_safely(folder / "theirs", bytes_of_text("new"));
+  const struct stat info = status_of(folder / "theirs");
+  CHECK(read(folder / "theirs") == "new");
+  CHECK(info.st_uid == owner);
+  CHECK(info.st_gid == group);
+  CHECK((info.st_mode & 07777) == 0640);
+}
+
+TEST_CASE(
+    "A link in a sticky world-writable folder is followed only if its folder's owner or the "
+    "user owns it",
+    "[common][output_files][links]") {
+  const testing::ScratchFolder scratch("sticky");
+  const fs::path shared = scratch / "shared";
+  fs::create_directory(shared);
+  REQUIRE(::chmod(shared.c_str(), 01777) == 0);
+  put(scratch / "victim", "precious");
+  fs::create_symlink(scratch / "victim", shared / "mine.png");
+  write_file_safely(shared / "mine.png", bytes_of_text("mine"));  // the user's own link
+  CHECK(read(scratch / "victim") == "mine");
+  CHECK(fs::is_symlink(shared / "mine.png"));
+  if (!running_as_root()) {
+    WARN("skipped the planted link: only root can make a link owned by another user");
+    return;
+  }
+  put(scratch / "victim", "precious");
+  fs::create_symlink(scratch / "victim", shared / "planted.png");
+  REQUIRE(::lchown((shared / "planted.png").c_str(), 4321, 4321) == 0);
+  const std::vector<fs::path> outputs{shared / "planted.png"};
+  CHECK_THROWS_WITH(check_outputs(outputs), Catch::Contains("sticky world-writable"));
+  CHECK_THROWS_WITH(write_file_safely(shared / "planted.png", bytes_of_text("x")),
+                    Catch::Contains("sticky world-writable"));
+  CHECK(read(scratch / "victim") == "precious");
+  REQUIRE(::chown(shared.c_str(), 4321, 4321) == 0);  // now the folder's owner owns the link
+  write_file_safely(shared / "planted.png", bytes_of_text("theirs"));
+  CHECK(read(scratch / "victim") == "theirs");
+}
+
+TEST_CASE("Descriptor names write to the descriptor and never replace the file behind it",
+          "[common][output_files][standard_output]") {
+  const testing::ScratchFolder scratch("descriptors");
+  put(scratch / "run.log", "earlier\n");
+  const int log = ::open((scratch / "run.log").c_str(), O_WRONLY | O_APPEND | O_CLOEXEC);
+  REQUIRE(log >= 0);
+  const ino_t inode = status_of(scratch / "run.log").st_ino;
+  std::ostringstream standard_output;
+  {
+    OutputTransaction outputs(&standard_output);
+    outputs.stage("/dev/fd/" + std::to_string(log), bytes_of_text("one "));
+    outputs.stage("/dev/stdout", bytes_of_text("to standard output"));
+    CHECK(read(scratch / "run.log") == "earlier\n");
+    outputs.commit();
+  }
+  write_file_safely("/proc/self/fd/" + std::to_string(log), bytes_of_text("two"));
+  ::close(log);
+  CHECK(read(scratch / "run.log") == "earlier\none two");
+  CHECK(status_of(scratch / "run.log").st_ino == inode);
+  CHECK(standard_output.str() == "to standard output");
+  CHECK(names_in(scratch.path()) == std::vector<std::string>{"run.log"});
+
+  CHECK(output_descriptor("-") == 1);
+  CHECK(output_descriptor("/dev/stderr") == 2);
+  CHECK(output_descriptor(scratch / "run.log") == std::nullopt);
+  const std::vector<fs::path> both_standard_output{"-", "/dev/stdout"};
+  CHECK_THROWS_WITH(check_outputs(both_standard_output), Catch::Contains("name one file"));
+  const std::vector<fs::path> closed{"/dev/fd/999"};
+  CHECK_THROWS_WITH(check_outputs(closed), Catch::Contains("descriptor 999 is not open"));
+  CHECK_THROWS_WITH(write_file_safely("/dev/stdout", bytes_of_text("x")),
+                    Catch::Contains("cannot go to standard output"));
+}
+
+TEST_CASE("A failed write to standard output replaces no file",
+          "[common][output_files][standard_output]") {
+  const testing::ScratchFolder scratch("full_standard_output");
+  put(scratch / "counts.pgm", "earlier counts");
+  std::ofstream full("/dev/full");
+  {
+    OutputTransaction outputs(&full);
+    outputs.stage("-", bytes_of_text("a picture"));
+    outputs.stage(scratch / "counts.pgm", bytes_of_text("new counts"));
+    CHECK_THROWS_WITH(outputs.commit(), Catch::Contains("No space left on device"));
+  }
+  CHECK(read(scratch / "counts.pgm") == "earlier counts");
+  CHECK(names_in(scratch.path()) == std::vector<std::string>{"counts.pgm"});
 }
 
 }  // namespace tri

@@ -16,8 +16,8 @@ namespace fs = std::filesystem;
 ScratchFolder::ScratchFolder(const std::string& name) {
   std::string safe = name;
   std::replace_if(
-      safe.begin(), safe.end(),
-      [](unsigned char c) { return std::isalnum(c) == 0 && c != '_'; }, '_');
+      safe.begin(), safe.end(), [](unsigned char c) { return std::isalnum(c) == 0 && c != '_'; },
+      '_');
   const std::string pattern = (fs::temp_directory_path() / ("tri_" + safe + "_XXXXXX")).string();
   std::vector<char> text(pattern.begin(), pattern.end());
   text.push_back('\0');
