@@ -24,24 +24,10 @@ namespace tri {
 namespace {
 
 namespace fs = std::filesystem;
-
-void put(const fs::path& path, const std::string& text) {
-  std::ofstream(path, std::ios::binary) << text;
-}
-
-std::string read(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-std::vector<std::string> names_in(const fs::path& folder) {
-  std::vector<std::string> names;
-  for (const auto& entry : fs::directory_iterator(folder)) {
-    names.push_back(entry.path().filename().string());
-  }
-  std::sort(names.begin(), names.end());
-  return names;
-}
+using testing::has_unnamed_temporaries;
+using testing::names_in;
+using testing::read_text;
+using testing::write_text;
 
 bool running_as_root() {
   return ::geteuid() == 0;
@@ -51,14 +37,6 @@ struct stat status_of(const fs::path& path) {
   struct stat info {};
   REQUIRE(::lstat(path.c_str(), &info) == 0);
   return info;
-}
-
-// Whether this folder's file system gives unnamed temporary files (Linux O_TMPFILE).
-bool has_unnamed_temporaries(const fs::path& folder) {
-  const int descriptor = ::open(folder.c_str(), O_TMPFILE | O_WRONLY | O_CLOEXEC, 0600);
-  if (descriptor < 0) return false;
-  ::close(descriptor);
-  return true;
 }
 
 // Runs body in a child process whose signals are at their defaults, as in a program (Catch2
@@ -85,7 +63,7 @@ TEST_CASE("A failing second output leaves the first output's earlier file exactl
           "[common][output_files]") {
   const testing::ScratchFolder scratch("second_fails");
   const fs::path& folder = scratch.path();
-  put(folder / "picture.png", "the earlier picture");
+  write_text(folder / "picture.png", "the earlier picture");
   fs::create_directory(folder / "counts.pgm");  // a folder: this output cannot be written
   {
     OutputTransaction outputs;
@@ -94,7 +72,7 @@ TEST_CASE("A failing second output leaves the first output's earlier file exactl
         outputs.stage(folder / "counts.pgm", bytes_of_text("counts")),
         Catch::Contains((folder / "counts.pgm").string()) && Catch::Contains("Is a directory"));
   }
-  CHECK(read(folder / "picture.png") == "the earlier picture");
+  CHECK(read_text(folder / "picture.png") == "the earlier picture");
   CHECK(names_in(folder) == std::vector<std::string>{"counts.pgm", "picture.png"});
 }
 
@@ -102,12 +80,12 @@ TEST_CASE("Staged outputs replace nothing and leave nothing behind until they ar
           "[common][output_files]") {
   const testing::ScratchFolder scratch("uncommitted");
   const fs::path& folder = scratch.path();
-  put(folder / "a.txt", "old a");
+  write_text(folder / "a.txt", "old a");
   {
     OutputTransaction outputs;
     outputs.stage(folder / "a.txt", bytes_of_text("new a"));
     outputs.stage(folder / "b.txt", bytes_of_text("new b"));
-    CHECK(read(folder / "a.txt") == "old a");
+    CHECK(read_text(folder / "a.txt") == "old a");
     CHECK_FALSE(fs::exists(folder / "b.txt"));
   }
   CHECK(names_in(folder) == std::vector<std::string>{"a.txt"});
@@ -117,8 +95,8 @@ TEST_CASE("Staged outputs replace nothing and leave nothing behind until they ar
     outputs.stage(folder / "b.txt", bytes_of_text("new b"));
     outputs.commit();
   }
-  CHECK(read(folder / "a.txt") == "new a");
-  CHECK(read(folder / "b.txt") == "new b");
+  CHECK(read_text(folder / "a.txt") == "new a");
+  CHECK(read_text(folder / "b.txt") == "new b");
   CHECK(names_in(folder) == std::vector<std::string>{"a.txt", "b.txt"});
 }
 
@@ -132,20 +110,20 @@ TEST_CASE("A named temporary is a new regular file named .NAME.XXXXXX.tmp beside
   REQUIRE(names.size() == 1);
   CHECK(std::regex_match(names[0], std::regex(R"(\.render\.png\.[A-Za-z0-9]{6}\.tmp)")));
   CHECK(fs::is_regular_file(fs::symlink_status(folder / names[0])));
-  CHECK(read(folder / names[0]) == "png");
+  CHECK(read_text(folder / names[0]) == "png");
 }
 
 TEST_CASE("Symlinks planted at temporary-looking names beside the output are not followed",
           "[common][output_files][links]") {
   const testing::ScratchFolder scratch("planted_links");
   const fs::path& folder = scratch.path();
-  put(folder / "victim", "precious");
+  write_text(folder / "victim", "precious");
   for (const char* name : {"render.png.tmp", ".render.png.tmp", ".render.png.tmp.tmp"}) {
     fs::create_symlink(folder / "victim", folder / name);
   }
   write_file_safely(folder / "render.png", bytes_of_text("png"));
-  CHECK(read(folder / "victim") == "precious");
-  CHECK(read(folder / "render.png") == "png");
+  CHECK(read_text(folder / "victim") == "precious");
+  CHECK(read_text(folder / "render.png") == "png");
   CHECK(fs::is_symlink(folder / "render.png.tmp"));
   CHECK(fs::is_symlink(folder / ".render.png.tmp"));
   CHECK(names_in(folder).size() == 5);  // victim, three links, render.png: no temporary left
@@ -156,11 +134,11 @@ TEST_CASE("A symlinked output is written through: the link stays, its file gets 
   const testing::ScratchFolder scratch("write_through");
   const fs::path& folder = scratch.path();
   fs::create_directory(folder / "real");
-  put(folder / "real" / "picture.png", "old");
+  write_text(folder / "real" / "picture.png", "old");
   fs::create_symlink("real/picture.png", folder / "link.png");
   write_file_safely(folder / "link.png", bytes_of_text("new"));
   CHECK(fs::is_symlink(folder / "link.png"));
-  CHECK(read(folder / "real" / "picture.png") == "new");
+  CHECK(read_text(folder / "real" / "picture.png") == "new");
   CHECK(names_in(folder / "real") == std::vector<std::string>{"picture.png"});
 }
 
@@ -168,11 +146,11 @@ TEST_CASE("An output with several hard links is refused and every link keeps its
           "[common][output_files][links]") {
   const testing::ScratchFolder scratch("hard_links");
   const fs::path& folder = scratch.path();
-  put(folder / "a.png", "shared");
+  write_text(folder / "a.png", "shared");
   fs::create_hard_link(folder / "a.png", folder / "b.png");
   CHECK_THROWS_WITH(write_file_safely(folder / "a.png", bytes_of_text("new")),
                     Catch::Contains("hard links"));
-  CHECK(read(folder / "a.png") == "shared");
+  CHECK(read_text(folder / "a.png") == "shared");
   CHECK(fs::hard_link_count(folder / "b.png") == 2);
 }
 
@@ -180,7 +158,7 @@ TEST_CASE("An output that is an input is refused, also through a hard link or a 
           "[common][output_files][identity]") {
   const testing::ScratchFolder scratch("input_as_output");
   const fs::path& folder = scratch.path();
-  put(folder / "s.scene", "canvas 4 4\n");
+  write_text(folder / "s.scene", "canvas 4 4\n");
   fs::create_hard_link(folder / "s.scene", folder / "hard.scene");
   fs::create_symlink(folder / "s.scene", folder / "soft.scene");
   const std::vector<fs::path> inputs{folder / "s.scene"};
@@ -189,7 +167,7 @@ TEST_CASE("An output that is an input is refused, also through a hard link or a 
     CHECK_THROWS_AS(check_outputs(outputs, inputs), UsageError);
     CHECK_THROWS_WITH(check_outputs(outputs, inputs), Catch::Contains("is the input"));
   }
-  CHECK(read(folder / "s.scene") == "canvas 4 4\n");
+  CHECK(read_text(folder / "s.scene") == "canvas 4 4\n");
   const std::vector<fs::path> other{folder / "picture.png"};
   CHECK_NOTHROW(check_outputs(other, inputs));
 }
@@ -200,7 +178,7 @@ TEST_CASE("Two outputs naming one file are refused, whether it exists or not",
   const fs::path& folder = scratch.path();
   const std::vector<fs::path> new_file{folder / "x.png", folder / "." / "x.png"};
   CHECK_THROWS_WITH(check_outputs(new_file), Catch::Contains("two outputs name one file"));
-  put(folder / "y.png", "old");
+  write_text(folder / "y.png", "old");
   fs::create_symlink("y.png", folder / "alias.png");
   const std::vector<fs::path> linked{folder / "y.png", folder / "alias.png"};
   CHECK_THROWS_AS(check_outputs(linked), UsageError);
@@ -243,13 +221,13 @@ TEST_CASE("A read-only existing output is refused with Permission denied and kep
   }
   const testing::ScratchFolder scratch("read_only");
   const fs::path& folder = scratch.path();
-  put(folder / "keep.png", "keep me");
+  write_text(folder / "keep.png", "keep me");
   fs::permissions(folder / "keep.png", fs::perms::owner_read | fs::perms::group_read);
   const std::vector<fs::path> outputs{folder / "keep.png"};
   CHECK_THROWS_WITH(check_outputs(outputs), Catch::Contains("Permission denied"));
   CHECK_THROWS_WITH(write_file_safely(folder / "keep.png", bytes_of_text("x")),
                     Catch::Contains("Permission denied"));
-  CHECK(read(folder / "keep.png") == "keep me");
+  CHECK(read_text(folder / "keep.png") == "keep me");
   fs::permissions(folder / "keep.png", fs::perms::owner_all);
 }
 
@@ -264,7 +242,7 @@ TEST_CASE("A new output gets mode 0666 less the umask, a replaced one keeps its 
   REQUIRE(::stat((folder / "new.txt").c_str(), &info) == 0);
   CHECK((info.st_mode & 0777) == 0644);
 
-  put(folder / "script.sh", "old");
+  write_text(folder / "script.sh", "old");
   fs::permissions(folder / "script.sh", static_cast<fs::perms>(0750));
   write_file_safely(folder / "script.sh", bytes_of_text("new"));
   REQUIRE(::stat((folder / "script.sh").c_str(), &info) == 0);
@@ -277,7 +255,7 @@ TEST_CASE("An output name of 255 characters is written, its temporary name is sh
   const fs::path& folder = scratch.path();
   const std::string name(255, 'n');
   write_file_safely(folder / name, bytes_of_text("long"));
-  CHECK(read(folder / name) == "long");
+  CHECK(read_text(folder / name) == "long");
   CHECK(names_in(folder) == std::vector<std::string>{name});
 }
 
@@ -285,7 +263,7 @@ TEST_CASE("An output below a regular file fails, names the system's reason and w
           "[common][output_files]") {
   const testing::ScratchFolder scratch("below_file");
   const fs::path& folder = scratch.path();
-  put(folder / "blocker", "a file");
+  write_text(folder / "blocker", "a file");
   const std::vector<fs::path> outputs{folder / "blocker" / "sub" / "x.png"};
   CHECK_THROWS_WITH(check_outputs(outputs), Catch::Contains("Not a directory"));
   CHECK_THROWS_WITH(check_output_folder(folder / "blocker"), Catch::Contains("is not a folder"));
@@ -316,14 +294,14 @@ TEST_CASE("Staged outputs leave no name in their folder where unnamed temporarie
     WARN("skipped: the file system of " << folder << " has no O_TMPFILE");
     return;
   }
-  put(folder / "a.txt", "old a");
+  write_text(folder / "a.txt", "old a");
   OutputTransaction outputs;
   outputs.stage(folder / "a.txt", bytes_of_text("new a"));
   outputs.stage(folder / "b.txt", bytes_of_text("new b"));
   CHECK(names_in(folder) == std::vector<std::string>{"a.txt"});
   outputs.commit();
-  CHECK(read(folder / "a.txt") == "new a");
-  CHECK(read(folder / "b.txt") == "new b");
+  CHECK(read_text(folder / "a.txt") == "new a");
+  CHECK(read_text(folder / "b.txt") == "new b");
   CHECK(names_in(folder) == std::vector<std::string>{"a.txt", "b.txt"});
 }
 
@@ -332,7 +310,7 @@ TEST_CASE("A signal while named temporaries are staged removes them and the fold
   for (const int signal_number : {SIGINT, SIGTERM, SIGHUP, SIGPIPE, SIGXFSZ}) {
     const testing::ScratchFolder scratch("signalled");
     const fs::path& folder = scratch.path();
-    put(folder / "a.txt", "old a");
+    write_text(folder / "a.txt", "old a");
     const int ended_by = signal_ending([&] {
       OutputTransaction outputs(nullptr, TemporaryFiles::named);
       outputs.stage(folder / "a.txt", bytes_of_text("new a"));
@@ -341,7 +319,7 @@ TEST_CASE("A signal while named temporaries are staged removes them and the fold
     });
     CHECK(ended_by == signal_number);
     CHECK(names_in(folder) == std::vector<std::string>{"a.txt"});
-    CHECK(read(folder / "a.txt") == "old a");
+    CHECK(read_text(folder / "a.txt") == "old a");
   }
 }
 
@@ -360,7 +338,7 @@ TEST_CASE("A failed run removes the folders it made for its outputs and keeps th
   CHECK(names_in(folder) == std::vector<std::string>{"found", "taken"});
   CHECK(names_in(folder / "found").empty());
   write_file_safely(folder / "kept" / "a.txt", bytes_of_text("a"));  // a committed run keeps it
-  CHECK(read(folder / "kept" / "a.txt") == "a");
+  CHECK(read_text(folder / "kept" / "a.txt") == "a");
 }
 
 TEST_CASE("An output name ending in a slash is a usage error and creates nothing",
@@ -380,12 +358,12 @@ TEST_CASE("A replaced file keeps its owner, group and permission bits but never 
           "[common][output_files][permissions]") {
   const testing::ScratchFolder scratch("owner");
   const fs::path& folder = scratch.path();
-  put(folder / "tool", "old");
+  write_text(folder / "tool", "old");
   ::chmod((folder / "tool").c_str(), 06750);
   write_file_safely(folder / "tool", bytes_of_text("new"));
   CHECK((status_of(folder / "tool").st_mode & 07777) == 0750);
 
-  put(folder / "theirs", "old");
+  write_text(folder / "theirs", "old");
   uid_t owner = ::geteuid();
   gid_t group = ::getegid();
   if (running_as_root()) {
@@ -406,7 +384,7 @@ TEST_CASE("A replaced file keeps its owner, group and permission bits but never 
   ::chmod((folder / "theirs").c_str(), 0640);
   write_file_safely(folder / "theirs", bytes_of_text("new"));
   const struct stat info = status_of(folder / "theirs");
-  CHECK(read(folder / "theirs") == "new");
+  CHECK(read_text(folder / "theirs") == "new");
   CHECK(info.st_uid == owner);
   CHECK(info.st_gid == group);
   CHECK((info.st_mode & 07777) == 0640);
@@ -420,32 +398,32 @@ TEST_CASE(
   const fs::path shared = scratch / "shared";
   fs::create_directory(shared);
   REQUIRE(::chmod(shared.c_str(), 01777) == 0);
-  put(scratch / "victim", "precious");
+  write_text(scratch / "victim", "precious");
   fs::create_symlink(scratch / "victim", shared / "mine.png");
   write_file_safely(shared / "mine.png", bytes_of_text("mine"));  // the user's own link
-  CHECK(read(scratch / "victim") == "mine");
+  CHECK(read_text(scratch / "victim") == "mine");
   CHECK(fs::is_symlink(shared / "mine.png"));
   if (!running_as_root()) {
     WARN("skipped the planted link: only root can make a link owned by another user");
     return;
   }
-  put(scratch / "victim", "precious");
+  write_text(scratch / "victim", "precious");
   fs::create_symlink(scratch / "victim", shared / "planted.png");
   REQUIRE(::lchown((shared / "planted.png").c_str(), 4321, 4321) == 0);
   const std::vector<fs::path> outputs{shared / "planted.png"};
   CHECK_THROWS_WITH(check_outputs(outputs), Catch::Contains("sticky world-writable"));
   CHECK_THROWS_WITH(write_file_safely(shared / "planted.png", bytes_of_text("x")),
                     Catch::Contains("sticky world-writable"));
-  CHECK(read(scratch / "victim") == "precious");
+  CHECK(read_text(scratch / "victim") == "precious");
   REQUIRE(::chown(shared.c_str(), 4321, 4321) == 0);  // now the folder's owner owns the link
   write_file_safely(shared / "planted.png", bytes_of_text("theirs"));
-  CHECK(read(scratch / "victim") == "theirs");
+  CHECK(read_text(scratch / "victim") == "theirs");
 }
 
 TEST_CASE("Descriptor names write to the descriptor and never replace the file behind it",
           "[common][output_files][standard_output]") {
   const testing::ScratchFolder scratch("descriptors");
-  put(scratch / "run.log", "earlier\n");
+  write_text(scratch / "run.log", "earlier\n");
   const int log = ::open((scratch / "run.log").c_str(), O_WRONLY | O_APPEND | O_CLOEXEC);
   REQUIRE(log >= 0);
   const ino_t inode = status_of(scratch / "run.log").st_ino;
@@ -454,12 +432,12 @@ TEST_CASE("Descriptor names write to the descriptor and never replace the file b
     OutputTransaction outputs(&standard_output);
     outputs.stage("/dev/fd/" + std::to_string(log), bytes_of_text("one "));
     outputs.stage("/dev/stdout", bytes_of_text("to standard output"));
-    CHECK(read(scratch / "run.log") == "earlier\n");
+    CHECK(read_text(scratch / "run.log") == "earlier\n");
     outputs.commit();
   }
   write_file_safely("/proc/self/fd/" + std::to_string(log), bytes_of_text("two"));
   ::close(log);
-  CHECK(read(scratch / "run.log") == "earlier\none two");
+  CHECK(read_text(scratch / "run.log") == "earlier\none two");
   CHECK(status_of(scratch / "run.log").st_ino == inode);
   CHECK(standard_output.str() == "to standard output");
   CHECK(names_in(scratch.path()) == std::vector<std::string>{"run.log"});
@@ -478,7 +456,7 @@ TEST_CASE("Descriptor names write to the descriptor and never replace the file b
 TEST_CASE("A failed write to standard output replaces no file",
           "[common][output_files][standard_output]") {
   const testing::ScratchFolder scratch("full_standard_output");
-  put(scratch / "counts.pgm", "earlier counts");
+  write_text(scratch / "counts.pgm", "earlier counts");
   std::ofstream full("/dev/full");
   {
     OutputTransaction outputs(&full);
@@ -486,7 +464,7 @@ TEST_CASE("A failed write to standard output replaces no file",
     outputs.stage(scratch / "counts.pgm", bytes_of_text("new counts"));
     CHECK_THROWS_WITH(outputs.commit(), Catch::Contains("No space left on device"));
   }
-  CHECK(read(scratch / "counts.pgm") == "earlier counts");
+  CHECK(read_text(scratch / "counts.pgm") == "earlier counts");
   CHECK(names_in(scratch.path()) == std::vector<std::string>{"counts.pgm"});
 }
 

@@ -25,27 +25,13 @@
 namespace {
 
 namespace fs = std::filesystem;
+using tri::testing::has_unnamed_temporaries;
+using tri::testing::names_in;
+using tri::testing::read_text;
 using tri::testing::ScratchFolder;
+using tri::testing::write_text;
 
 constexpr const char* scene_text = "canvas 8 8\nline 0 0 7 7\ntri 1 1 6 1 1 6\n";
-
-std::string read(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-void put(const fs::path& path, const std::string& text) {
-  std::ofstream(path, std::ios::binary) << text;
-}
-
-std::vector<std::string> names_in(const fs::path& folder) {
-  std::vector<std::string> names;
-  for (const auto& entry : fs::directory_iterator(folder)) {
-    names.push_back(entry.path().filename().string());
-  }
-  std::sort(names.begin(), names.end());
-  return names;
-}
 
 // What raster writes for the scene, run in this process: the PNG and the write counts.
 struct Expected {
@@ -55,7 +41,7 @@ struct Expected {
 
 Expected expected_outputs() {
   const ScratchFolder scratch("expected");
-  put(scratch / "s.scene", scene_text);
+  write_text(scratch / "s.scene", scene_text);
   const std::string scene = (scratch / "s.scene").string();
   const std::string png = (scratch / "a.png").string();
   const std::string pgm = (scratch / "c.pgm").string();
@@ -63,7 +49,7 @@ Expected expected_outputs() {
                         "--out",  png.c_str(), "--counts",      pgm.c_str()};
   std::ostringstream out, err;
   REQUIRE(tri::run_raster(9, argv, out, err) == 0);
-  return {read(png), read(pgm)};
+  return {read_text(png), read_text(pgm)};
 }
 
 // Where the child's standard streams go; -1 leaves one as it is in the test.
@@ -116,13 +102,6 @@ class OpenFile {
   int descriptor_;
 };
 
-bool has_unnamed_temporaries(const fs::path& folder) {
-  const int descriptor = ::open(folder.c_str(), O_TMPFILE | O_WRONLY | O_CLOEXEC, 0600);
-  if (descriptor < 0) return false;
-  ::close(descriptor);
-  return true;
-}
-
 // Whether /proc/locks shows process pid waiting for a lock (a line "N: -> FLOCK ... pid ...").
 bool waits_for_a_lock(pid_t pid) {
   std::ifstream locks("/proc/locks");
@@ -143,8 +122,8 @@ bool waits_for_a_lock(pid_t pid) {
 TEST_CASE("raster replaces no file when standard output cannot be written, and says so once",
           "[raster][process]") {
   const ScratchFolder scratch("full");
-  put(scratch / "s.scene", scene_text);
-  put(scratch / "c.pgm", "earlier counts");
+  write_text(scratch / "s.scene", scene_text);
+  write_text(scratch / "c.pgm", "earlier counts");
   const OpenFile full("/dev/full", O_WRONLY);
   const OpenFile log(scratch / "log", O_WRONLY | O_CREAT);
   const pid_t child =
@@ -154,16 +133,16 @@ TEST_CASE("raster replaces no file when standard output cannot be written, and s
   const int status = wait_for(child);
   CHECK(WIFEXITED(status));
   CHECK(WEXITSTATUS(status) == 1);
-  CHECK(read(scratch / "c.pgm") == "earlier counts");
-  CHECK(read(scratch / "log") ==
+  CHECK(read_text(scratch / "c.pgm") == "earlier counts");
+  CHECK(read_text(scratch / "log") ==
         "raster: error: cannot write the results to standard output: No space left on device\n");
   CHECK(names_in(scratch.path()) == std::vector<std::string>{"c.pgm", "log", "s.scene"});
 }
 
 TEST_CASE("raster replaces no file when standard output is a closed pipe", "[raster][process]") {
   const ScratchFolder scratch("closed_pipe");
-  put(scratch / "s.scene", scene_text);
-  put(scratch / "c.pgm", "earlier counts");
+  write_text(scratch / "s.scene", scene_text);
+  write_text(scratch / "c.pgm", "earlier counts");
   int pipe_ends[2];
   REQUIRE(::pipe2(pipe_ends, O_CLOEXEC) == 0);
   ::close(pipe_ends[0]);  // nobody reads: the first write raises SIGPIPE
@@ -175,15 +154,15 @@ TEST_CASE("raster replaces no file when standard output is a closed pipe", "[ras
   const int status = wait_for(child);
   CHECK(WIFSIGNALED(status));
   CHECK(WTERMSIG(status) == SIGPIPE);
-  CHECK(read(scratch / "c.pgm") == "earlier counts");
+  CHECK(read_text(scratch / "c.pgm") == "earlier counts");
   CHECK(names_in(scratch.path()) == std::vector<std::string>{"c.pgm", "s.scene"});
 }
 
 TEST_CASE("raster --out /dev/stderr appends the PNG to the log standard error goes to",
           "[raster][process]") {
   const ScratchFolder scratch("stderr_log");
-  put(scratch / "s.scene", scene_text);
-  put(scratch / "run.log", "earlier log line\n");
+  write_text(scratch / "s.scene", scene_text);
+  write_text(scratch / "run.log", "earlier log line\n");
   struct stat before {};
   REQUIRE(::stat((scratch / "run.log").c_str(), &before) == 0);
   const OpenFile log(scratch / "run.log", O_WRONLY | O_APPEND);
@@ -193,11 +172,11 @@ TEST_CASE("raster --out /dev/stderr appends the PNG to the log standard error go
                                    {summary.get(), log.get()});
   REQUIRE(wait_for(child) == 0);
   const std::string png = expected_outputs().png;
-  CHECK(read(scratch / "run.log") == "earlier log line\n" + png);
+  CHECK(read_text(scratch / "run.log") == "earlier log line\n" + png);
   struct stat after {};
   REQUIRE(::stat((scratch / "run.log").c_str(), &after) == 0);
   CHECK(after.st_ino == before.st_ino);
-  CHECK(read(scratch / "summary") ==
+  CHECK(read_text(scratch / "summary") ==
         "drew 1 triangle(s) and 1 line(s) on 8x8 with edge_function\n");
 
   // /dev/stdout into a pipe is standard output, as '-' is.
@@ -223,9 +202,9 @@ TEST_CASE("raster interrupted between its two outputs leaves no temporary and th
     for (const int signal_number : {SIGINT, SIGTERM, SIGKILL}) {
       CAPTURE(stops, signal_number);
       const ScratchFolder scratch("interrupted");
-      put(scratch / "s.scene", scene_text);
-      put(scratch / "a.png", "earlier picture");
-      put(scratch / "c.pgm", "earlier counts");
+      write_text(scratch / "s.scene", scene_text);
+      write_text(scratch / "a.png", "earlier picture");
+      write_text(scratch / "c.pgm", "earlier counts");
       const OpenFile quiet("/dev/null", O_WRONLY);
       const pid_t child = start_raster(
           {"--algo", "edge_function", "--scene", (scratch / "s.scene").string(), "--out",
@@ -241,8 +220,8 @@ TEST_CASE("raster interrupted between its two outputs leaves no temporary and th
       const int status = wait_for(child);
       CHECK(WIFSIGNALED(status));
       CHECK(WTERMSIG(status) == signal_number);
-      CHECK(read(scratch / "a.png") == "earlier picture");
-      CHECK(read(scratch / "c.pgm") == "earlier counts");
+      CHECK(read_text(scratch / "a.png") == "earlier picture");
+      CHECK(read_text(scratch / "c.pgm") == "earlier counts");
       const auto names = names_in(scratch.path());
       if (signal_number == SIGKILL && !has_unnamed_temporaries(scratch.path())) {
         WARN("no O_TMPFILE in " << scratch.path() << ": SIGKILL may leave named temporaries");
@@ -258,7 +237,7 @@ TEST_CASE("raster interrupted after its first output removes the folder it made 
           "[raster][process][interrupts]") {
   for (const int signal_number : {SIGINT, SIGTERM, SIGHUP}) {
     const ScratchFolder scratch("interrupted_folder");
-    put(scratch / "s.scene", scene_text);
+    write_text(scratch / "s.scene", scene_text);
     const OpenFile quiet("/dev/null", O_WRONLY);
     const pid_t child =
         start_raster({"--algo", "edge_function", "--scene", (scratch / "s.scene").string(), "--out",
@@ -280,9 +259,9 @@ TEST_CASE("raster waits for a lock on its outputs' folder and then writes its pa
           "[raster][process][lock]") {
   const Expected expected = expected_outputs();
   const ScratchFolder scratch("locked");
-  put(scratch / "s.scene", scene_text);
-  put(scratch / "a.png", "earlier picture");
-  put(scratch / "c.pgm", "earlier counts");
+  write_text(scratch / "s.scene", scene_text);
+  write_text(scratch / "a.png", "earlier picture");
+  write_text(scratch / "c.pgm", "earlier counts");
   std::optional<OpenFile> lock;
   lock.emplace(scratch.path(), O_RDONLY | O_DIRECTORY);
   REQUIRE(::flock(lock->get(), LOCK_EX) == 0);  // as a parallel run holds it while it commits
@@ -298,11 +277,11 @@ TEST_CASE("raster waits for a lock on its outputs' folder and then writes its pa
   }
   REQUIRE(waits_for_a_lock(child));
   CHECK(::waitpid(child, nullptr, WNOHANG) == 0);
-  CHECK(read(scratch / "a.png") == "earlier picture");
-  CHECK(read(scratch / "c.pgm") == "earlier counts");
+  CHECK(read_text(scratch / "a.png") == "earlier picture");
+  CHECK(read_text(scratch / "c.pgm") == "earlier counts");
   lock.reset();
   CHECK(wait_for(child) == 0);
-  CHECK(read(scratch / "a.png") == expected.png);
-  CHECK(read(scratch / "c.pgm") == expected.pgm);
+  CHECK(read_text(scratch / "a.png") == expected.png);
+  CHECK(read_text(scratch / "c.pgm") == expected.pgm);
   CHECK(names_in(scratch.path()) == std::vector<std::string>{"a.png", "c.pgm", "s.scene"});
 }

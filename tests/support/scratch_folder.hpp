@@ -5,6 +5,8 @@
 
 #include <filesystem>
 #include <string>
+#include <string_view>
+#include <vector>
 
 namespace tri::testing {
 
@@ -24,5 +26,17 @@ class ScratchFolder {
  private:
   std::filesystem::path path_;
 };
+
+/// The bytes of a file as a string (empty when it cannot be read).
+std::string read_text(const std::filesystem::path& path);
+
+/// Writes text to a file as it is, replacing it.
+void write_text(const std::filesystem::path& path, std::string_view text);
+
+/// The names in a folder, sorted, hidden ones included: a leftover temporary shows up.
+std::vector<std::string> names_in(const std::filesystem::path& folder);
+
+/// Whether the folder's file system gives unnamed temporary files (Linux O_TMPFILE).
+bool has_unnamed_temporaries(const std::filesystem::path& folder);
 
 }  // namespace tri::testing
