@@ -443,15 +443,13 @@ void OutputTransaction::name_unnamed(Staged& staged) {
   const std::string by_proc = "/proc/self/fd/" + std::to_string(staged.descriptor);
   staged.temporary =
       at_fresh_temporary_name(staged.target, staged.destination, [&](const fs::path& name) {
-        staged.cleanup = InterruptCleanup(name, LeftoverKind::file);
-        if (::linkat(AT_FDCWD, by_proc.c_str(), AT_FDCWD, name.c_str(), AT_SYMLINK_FOLLOW) == 0 ||
-            (errno == ENOENT &&  // no /proc: a privileged process may link the descriptor itself
-             ::linkat(staged.descriptor, "", AT_FDCWD, name.c_str(), AT_EMPTY_PATH) == 0)) {
-          return true;
-        }
-        staged.cleanup.release();
-        return false;
+        return ::linkat(AT_FDCWD, by_proc.c_str(), AT_FDCWD, name.c_str(), AT_SYMLINK_FOLLOW) ==
+                   0 ||
+               (errno == ENOENT &&  // no /proc: a privileged process may link the descriptor
+                ::linkat(staged.descriptor, "", AT_FDCWD, name.c_str(), AT_EMPTY_PATH) == 0);
       });
+  // Registered once it is ours: a name taken by another file must never be removed.
+  staged.cleanup = InterruptCleanup(staged.temporary, LeftoverKind::file);
 }
 
 void OutputTransaction::commit() {

@@ -119,8 +119,10 @@ bool waits_for_a_lock(pid_t pid) {
 
 }  // namespace
 
-TEST_CASE("raster replaces no file when standard output cannot be written, and says so once",
-          "[raster][process]") {
+TEST_CASE(
+    "The raster executable replaces no file when standard output cannot be written, and says so "
+    "once",
+    "[raster][process]") {
   const ScratchFolder scratch("full");
   write_text(scratch / "s.scene", scene_text);
   write_text(scratch / "c.pgm", "earlier counts");
@@ -139,7 +141,8 @@ TEST_CASE("raster replaces no file when standard output cannot be written, and s
   CHECK(names_in(scratch.path()) == std::vector<std::string>{"c.pgm", "log", "s.scene"});
 }
 
-TEST_CASE("raster replaces no file when standard output is a closed pipe", "[raster][process]") {
+TEST_CASE("The raster executable replaces no file when standard output is a closed pipe",
+          "[raster][process]") {
   const ScratchFolder scratch("closed_pipe");
   write_text(scratch / "s.scene", scene_text);
   write_text(scratch / "c.pgm", "earlier counts");
@@ -158,8 +161,10 @@ TEST_CASE("raster replaces no file when standard output is a closed pipe", "[ras
   CHECK(names_in(scratch.path()) == std::vector<std::string>{"c.pgm", "s.scene"});
 }
 
-TEST_CASE("raster --out /dev/stderr appends the PNG to the log standard error goes to",
-          "[raster][process]") {
+TEST_CASE(
+    "The raster executable with --out /dev/stderr appends the PNG to the log standard error goes "
+    "to",
+    "[raster][process]") {
   const ScratchFolder scratch("stderr_log");
   write_text(scratch / "s.scene", scene_text);
   write_text(scratch / "run.log", "earlier log line\n");
@@ -196,8 +201,10 @@ TEST_CASE("raster --out /dev/stderr appends the PNG to the log standard error go
   CHECK(received == png);
 }
 
-TEST_CASE("raster interrupted between its two outputs leaves no temporary and the earlier files",
-          "[raster][process][interrupts]") {
+TEST_CASE(
+    "The raster executable interrupted between its two outputs leaves no temporary and the "
+    "earlier files",
+    "[raster][process][interrupts]") {
   for (const int stops : {1, 2}) {
     for (const int signal_number : {SIGINT, SIGTERM, SIGKILL}) {
       CAPTURE(stops, signal_number);
@@ -233,8 +240,10 @@ TEST_CASE("raster interrupted between its two outputs leaves no temporary and th
   }
 }
 
-TEST_CASE("raster interrupted after its first output removes the folder it made for its outputs",
-          "[raster][process][interrupts]") {
+TEST_CASE(
+    "The raster executable interrupted after its first output removes the folder it made for its "
+    "outputs",
+    "[raster][process][interrupts]") {
   for (const int signal_number : {SIGINT, SIGTERM, SIGHUP}) {
     const ScratchFolder scratch("interrupted_folder");
     write_text(scratch / "s.scene", scene_text);
@@ -255,8 +264,10 @@ TEST_CASE("raster interrupted after its first output removes the folder it made 
   }
 }
 
-TEST_CASE("raster waits for a lock on its outputs' folder and then writes its pair together",
-          "[raster][process][lock]") {
+TEST_CASE(
+    "The raster executable waits for a lock on its outputs' folder and then writes its pair "
+    "together",
+    "[raster][process][lock]") {
   const Expected expected = expected_outputs();
   const ScratchFolder scratch("locked");
   write_text(scratch / "s.scene", scene_text);
