@@ -7,6 +7,8 @@
 #include <exception>
 #include <sstream>
 
+#include "common/output_files.hpp"
+
 namespace tri {
 
 std::optional<std::string> CliArguments::value(std::string_view name) const {
@@ -130,7 +132,8 @@ int finish_standard_output(std::string_view program, std::ostream& out, std::ost
 int run_command_line(const CommandLine& command_line, int argc, const char* const* argv,
                      std::ostream& out, std::ostream& err,
                      const std::function<int(const CliArguments&)>& body) {
-  return finish_standard_output(command_line.program(), out, err, [&] {
+  bool standard_output_failed = false;
+  const int status = [&] {
     try {
       const CliArguments args = command_line.parse(argc, argv);
       if (args.help_requested()) {
@@ -143,9 +146,13 @@ int run_command_line(const CommandLine& command_line, int argc, const char* cons
       return exit_usage;
     } catch (const std::exception& e) {
       err << command_line.program() << ": error: " << e.what() << "\n";
+      standard_output_failed = dynamic_cast<const StandardOutputError*>(&e) != nullptr;
       return exit_failure;
     }
-  }());
+  }();
+  // A failed write to standard output that the run reported is not reported a second time.
+  return standard_output_failed ? status
+                                : finish_standard_output(command_line.program(), out, err, status);
 }
 
 }  // namespace tri

@@ -1,5 +1,7 @@
 #include "common/figures.hpp"
 
+#include "tests/support/scratch_folder.hpp"
+
 #include <catch2/catch.hpp>
 
 #include <filesystem>
@@ -26,8 +28,8 @@ SvgFigure second_figure() {
 
 TEST_CASE("A chapter program saves each SVG figure under the name its function gives",
           "[common][figures]") {
-  const fs::path folder = fs::current_path() / "figures_test_output";
-  fs::remove_all(folder);
+  const testing::ScratchFolder scratch("figures");
+  const fs::path folder = scratch / "figures";  // made by the program
   const std::string out = folder.string();
   const char* argv[] = {"01_test", "--out", out.c_str()};
   REQUIRE(run_chapter_program(3, argv, "01_test", "Two test figures.",

@@ -18,6 +18,7 @@
 
 #include "common/canvas.hpp"
 #include "common/image_io.hpp"
+#include "tests/support/scratch_folder.hpp"
 
 namespace tri {
 namespace {
@@ -46,14 +47,6 @@ std::vector<std::string> files_below(const fs::path& folder) {
   }
   std::sort(names.begin(), names.end());
   return names;
-}
-
-// A fresh, empty folder for one test case, below the test's working directory (the build tree).
-fs::path fresh_folder(const std::string& name) {
-  const fs::path folder = fs::current_path() / "image_io_test_output" / name;
-  fs::remove_all(folder);
-  fs::create_directories(folder);
-  return folder;
 }
 
 // A 5x3 canvas whose every pixel has a different colour, so a flip or a shift shows.
@@ -172,18 +165,19 @@ TEST_CASE("A one-pixel canvas encodes as a valid PNG", "[common][image_io][png]"
 
 TEST_CASE("write_file_atomically creates the missing folders and leaves only the file",
           "[common][image_io][files]") {
-  const fs::path folder = fresh_folder("creates_folders");
+  const testing::ScratchFolder scratch("creates_folders");
+  const fs::path& folder = scratch.path();
   const fs::path path = folder / "a" / "b" / "figure.bin";
   const std::vector<std::uint8_t> bytes = {0, 1, 2, 255, '\n', '\r', 0};
   write_file_atomically(path, bytes);
   CHECK(read_file(path) == bytes);
   CHECK(files_below(folder) == std::vector<std::string>{"a", "a/b", "a/b/figure.bin"});
-  fs::remove_all(folder);
 }
 
 TEST_CASE("write_file_atomically replaces an existing file and writes empty files",
           "[common][image_io][files]") {
-  const fs::path folder = fresh_folder("replaces");
+  const testing::ScratchFolder scratch("replaces");
+  const fs::path& folder = scratch.path();
   const fs::path path = folder / "data.txt";
   write_file_atomically(path, bytes_of("the old, longer content"));
   write_file_atomically(path, bytes_of("new"));
@@ -192,12 +186,12 @@ TEST_CASE("write_file_atomically replaces an existing file and writes empty file
   CHECK(fs::exists(path));
   CHECK(fs::file_size(path) == 0);
   CHECK(files_below(folder) == std::vector<std::string>{"data.txt"});
-  fs::remove_all(folder);
 }
 
 TEST_CASE("write_file_atomically below a regular file fails, names the path, writes nothing",
           "[common][image_io][files]") {
-  const fs::path folder = fresh_folder("below_a_file");
+  const testing::ScratchFolder scratch("below_a_file");
+  const fs::path& folder = scratch.path();
   const fs::path blocker = folder / "blocker";
   std::ofstream(blocker) << "not a folder";
   const fs::path path = blocker / "sub" / "figure.png";
@@ -206,12 +200,12 @@ TEST_CASE("write_file_atomically below a regular file fails, names the path, wri
   CHECK_THROWS_WITH(write_file_atomically(path, bytes_of("png")), Catch::Contains(path.string()));
   CHECK(files_below(folder) == std::vector<std::string>{"blocker"});
   CHECK(read_file(blocker) == bytes_of("not a folder"));
-  fs::remove_all(folder);
 }
 
 TEST_CASE("write_file_atomically onto an existing folder fails, names the path, leaves no .tmp",
           "[common][image_io][files]") {
-  const fs::path folder = fresh_folder("onto_a_folder");
+  const testing::ScratchFolder scratch("onto_a_folder");
+  const fs::path& folder = scratch.path();
   const fs::path path = folder / "taken";
   fs::create_directory(path);
 
@@ -219,12 +213,12 @@ TEST_CASE("write_file_atomically onto an existing folder fails, names the path, 
   CHECK_THROWS_WITH(write_file_atomically(path, bytes_of("png")), Catch::Contains(path.string()));
   CHECK(fs::is_directory(path));
   CHECK(files_below(folder) == std::vector<std::string>{"taken"});
-  fs::remove_all(folder);
 }
 
 TEST_CASE("write_png and write_counts_pgm write exactly the encoded bytes",
           "[common][image_io][files]") {
-  const fs::path folder = fresh_folder("write_png");
+  const testing::ScratchFolder scratch("write_png");
+  const fs::path& folder = scratch.path();
   Canvas canvas = numbered_canvas();
   canvas.enable_write_counts();
   canvas.put_pixel(4, 2, colors::red);
@@ -233,15 +227,14 @@ TEST_CASE("write_png and write_counts_pgm write exactly the encoded bytes",
   CHECK(read_file(folder / "picture.png") == encode_png(canvas));
   CHECK(read_file(folder / "counts.pgm") == encode_counts_pgm(canvas));
   CHECK(files_below(folder) == std::vector<std::string>{"counts.pgm", "picture.png"});
-  fs::remove_all(folder);
 }
 
 TEST_CASE("write_counts_pgm without write counts fails and writes nothing",
           "[common][image_io][files]") {
-  const fs::path folder = fresh_folder("no_counts");
+  const testing::ScratchFolder scratch("no_counts");
+  const fs::path& folder = scratch.path();
   CHECK_THROWS_AS(write_counts_pgm(Canvas(2, 2), folder / "counts.pgm"), std::logic_error);
   CHECK(files_below(folder).empty());
-  fs::remove_all(folder);
 }
 
 }  // namespace tri

@@ -11,6 +11,7 @@
 #include <variant>
 
 #include "common/scene.hpp"
+#include "tests/support/scratch_folder.hpp"
 
 namespace tri {
 namespace {
@@ -304,9 +305,8 @@ TEST_CASE("Scene errors are runtime errors, so callers may catch either",
 
 TEST_CASE("load_scene reads a scene file and names the file in its errors",
           "[common][scene][files]") {
-  const fs::path folder = fs::current_path() / "scene_test_output";
-  fs::remove_all(folder);
-  fs::create_directories(folder);
+  const testing::ScratchFolder scratch("load_scene");
+  const fs::path& folder = scratch.path();
 
   const fs::path good = folder / "good.scene";
   std::ofstream(good) << "canvas 20 10 1 2 3\ntri 0 0 19 0 0 9 255 0 0\n";
@@ -331,7 +331,6 @@ TEST_CASE("load_scene reads a scene file and names the file in its errors",
   CHECK_THROWS_WITH(load_scene(folder),
                     folder.string() + ": cannot read the scene file: Is a directory");
 
-  fs::remove_all(folder);
 }
 
 }  // namespace tri

@@ -40,7 +40,8 @@ CommandLine raster_command_line() {
       "Limits: lines of at most 65536 bytes, at most 2000000 triangles and lines.\n"
       "Outputs replace their files only when all were written; an output that is the scene,\n"
       "two outputs naming one file, devices, FIFOs, read-only and hard-linked files are\n"
-      "refused; a symlinked output is written through to its file. '-' is standard output.\n"
+      "refused; a symlinked output is written through to its file. '-' is standard output;\n"
+      "/dev/stdout, /dev/stderr and /dev/fd/N are written to, never replaced as files.\n"
       "Work that runs for more than 2 s prints its progress on standard error.",
       {
           {"list", "", "print every algorithm: NAME, CHAPTER, RULE, summary (tab-separated)"},
@@ -142,7 +143,7 @@ int run_coverage(const CliArguments& args, const Scene& scene, const ch10::AreaA
   const std::string path = *args.value("coverage");
   files.stage(path, canvas.pgm_16());
   files.commit();
-  std::ostream& report = path == standard_output_name ? err : out;
+  std::ostream& report = output_descriptor(path) == STDOUT_FILENO ? err : out;
   report << "drew the coverage of " << triangles.size() << " triangle(s) on " << scene.width << "x"
          << scene.height << " with " << area.name;
   const std::size_t lines = scene.primitives.size() - triangles.size();
@@ -259,10 +260,16 @@ int run(const CliArguments& args, std::ostream& out, std::ostream& err) {
   }
   const std::vector<std::filesystem::path> inputs{*scene_path};
   check_outputs(outputs, inputs);
-  const bool to_standard_output =
-      std::find(outputs.begin(), outputs.end(), standard_output_name) != outputs.end();
-  if (to_standard_output && &out == &std::cout && ::isatty(STDOUT_FILENO) == 1) {
-    throw UsageError("'-' would write a binary image to the terminal; redirect standard output");
+  // '-', /dev/stdout, /dev/stderr and /dev/fd/N are descriptors: written to, never replaced.
+  bool to_standard_output = false;
+  for (const auto& output : outputs) {
+    const std::optional<int> descriptor = output_descriptor(output);
+    if (!descriptor) continue;
+    to_standard_output = to_standard_output || *descriptor == STDOUT_FILENO;
+    if ((*descriptor != STDOUT_FILENO || &out == &std::cout) && ::isatty(*descriptor) == 1) {
+      throw UsageError("'" + output.string() +
+                       "' would write a binary image to the terminal; redirect it");
+    }
   }
 
   const Scene scene = load_scene(*scene_path);

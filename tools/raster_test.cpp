@@ -268,6 +268,25 @@ TEST_CASE("raster refuses two outputs naming one file and empty output paths", "
   CHECK(dir.file_count() == 1);
 }
 
+TEST_CASE("raster refuses an output ending in a slash before reading the scene and makes nothing",
+          "[raster]") {
+  TempFolder dir;
+  // A malformed scene: the refusal comes first, so no work was done before it.
+  const auto scene = dir.write("s.scene", "canvas 8 8\nbogus\n");
+  const std::string folder_like = (dir / "x.png").string() + "/";
+  for (const std::vector<std::string>& options :
+       {std::vector<std::string>{"--out", folder_like},
+        std::vector<std::string>{"--counts", folder_like},
+        std::vector<std::string>{"--algo", "area_cells", "--coverage", folder_like}}) {
+    std::vector<std::string> args{"--scene", scene.string()};
+    args.insert(args.end(), options.begin(), options.end());
+    const Run run = raster(args);
+    check_fails(run, 2, "drop the trailing slash");
+    CHECK(is_one_line(run.err));
+  }
+  CHECK(dir.file_count() == 1);
+}
+
 TEST_CASE("raster refuses to replace a device and leaves it a device", "[raster]") {
   TempFolder dir;
   const auto scene = dir.write("s.scene", "canvas 8 8\n");
