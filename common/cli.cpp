@@ -7,6 +7,8 @@
 #include <exception>
 #include <sstream>
 
+#include "common/printable_text.hpp"
+
 namespace tri {
 
 std::optional<std::string> CliArguments::value(std::string_view name) const {
@@ -120,7 +122,8 @@ int finish_standard_output(std::string_view program, std::ostream& out, std::ost
                            int status) {
   errno = 0;
   out.flush();
-  if (out) return status;
+  // A run that failed has said why in its one line; a failed flush adds no second one.
+  if (out || status != exit_success) return status;
   const int error = errno;
   err << program << ": error: cannot write the results to standard output: "
       << (error != 0 ? std::strerror(error) : "write failed") << "\n";
@@ -139,10 +142,10 @@ int run_command_line(const CommandLine& command_line, int argc, const char* cons
       }
       return body(args);
     } catch (const UsageError& e) {
-      err << command_line.program() << ": error: " << e.what() << " (see --help)\n";
+      err << command_line.program() << ": error: " << printable_text(e.what()) << " (see --help)\n";
       return exit_usage;
     } catch (const std::exception& e) {
-      err << command_line.program() << ": error: " << e.what() << "\n";
+      err << command_line.program() << ": error: " << printable_text(e.what()) << "\n";
       return exit_failure;
     }
   }());
