@@ -11,6 +11,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <random>
 #include <regex>
 #include <sstream>
@@ -321,22 +322,14 @@ TEST_CASE("raster escapes control, format and separator characters of paths and 
 
 namespace {
 
-// Runs body in a child process whose address space is limited to `limit` bytes more than the
-// test's; returns what the child wrote to the pipe.
-template <class Body>
-std::string in_child_with_memory_limit(std::size_t limit, Body body) {
+// Runs body in a child process and returns the text it returned there.
+std::string in_child(const std::function<std::string()>& body) {
   int pipe_ends[2];
   REQUIRE(::pipe(pipe_ends) == 0);
   const pid_t child = ::fork();
   REQUIRE(child >= 0);
   if (child == 0) {
     ::close(pipe_ends[0]);
-    std::ifstream status("/proc/self/statm");
-    std::size_t pages = 0;
-    status >> pages;
-    const rlim_t bytes = pages * static_cast<std::size_t>(::sysconf(_SC_PAGESIZE)) + limit;
-    const rlimit cap{bytes, bytes};
-    ::setrlimit(RLIMIT_AS, &cap);
     const std::string said = body();
     [[maybe_unused]] const auto written = ::write(pipe_ends[1], said.data(), said.size());
     ::_exit(0);
@@ -350,6 +343,21 @@ std::string in_child_with_memory_limit(std::size_t limit, Body body) {
   ::waitpid(child, &status, 0);
   CHECK(WIFEXITED(status));
   return said;
+}
+
+// Runs body in a child process whose address space is limited to `limit` bytes more than the
+// test's; returns what body returned.
+std::string in_child_with_memory_limit(std::size_t limit,
+                                       const std::function<std::string()>& body) {
+  return in_child([&] {
+    std::ifstream status("/proc/self/statm");
+    std::size_t pages = 0;
+    status >> pages;
+    const rlim_t bytes = pages * static_cast<std::size_t>(::sysconf(_SC_PAGESIZE)) + limit;
+    const rlimit cap{bytes, bytes};
+    ::setrlimit(RLIMIT_AS, &cap);
+    return body();
+  });
 }
 
 // An endless scene: a canvas, then the same triangle line again and again, never held in memory.
@@ -445,29 +453,15 @@ long status_kib(const std::string& field) {
 // How far this process's resident memory rises above where it was while body runs: in a child
 // process that first returns its free memory to the system and resets its peak (VmHWM), so that
 // earlier tests count neither way.
-template <class Body>
-long peak_growth_kib(Body body) {
-  int pipe_ends[2];
-  REQUIRE(::pipe(pipe_ends) == 0);
-  const pid_t child = ::fork();
-  REQUIRE(child >= 0);
-  if (child == 0) {
-    ::close(pipe_ends[0]);
+long peak_growth_kib(const std::function<void()>& body) {
+  const std::string growth = in_child([&] {
     ::malloc_trim(0);  // memory the test freed earlier would hide new allocations
     std::ofstream("/proc/self/clear_refs") << "5";
     const long before = status_kib("VmRSS");
     body();
-    const long growth = status_kib("VmHWM") - before;
-    [[maybe_unused]] const auto written = ::write(pipe_ends[1], &growth, sizeof growth);
-    ::_exit(0);
-  }
-  ::close(pipe_ends[1]);
-  long growth = -1;
-  CHECK(::read(pipe_ends[0], &growth, sizeof growth) == sizeof growth);
-  ::close(pipe_ends[0]);
-  int status = 0;
-  ::waitpid(child, &status, 0);
-  return growth;
+    return std::to_string(status_kib("VmHWM") - before);
+  });
+  return growth.empty() ? -1 : std::stol(growth);
 }
 
 }  // namespace
