@@ -323,7 +323,7 @@ TEST_CASE("raster escapes control, format and separator characters of paths and 
 namespace {
 
 // Runs body in a child process and returns the text it returned there.
-std::string in_child(const std::function<std::string()>& body) {
+[[maybe_unused]] std::string in_child(const std::function<std::string()>& body) {
   int pipe_ends[2];
   REQUIRE(::pipe(pipe_ends) == 0);
   const pid_t child = ::fork();
@@ -347,8 +347,8 @@ std::string in_child(const std::function<std::string()>& body) {
 
 // Runs body in a child process whose address space is limited to `limit` bytes more than the
 // test's; returns what body returned.
-std::string in_child_with_memory_limit(std::size_t limit,
-                                       const std::function<std::string()>& body) {
+[[maybe_unused]] std::string in_child_with_memory_limit(std::size_t limit,
+                                                        const std::function<std::string()>& body) {
   return in_child([&] {
     std::ifstream status("/proc/self/statm");
     std::size_t pages = 0;
@@ -442,7 +442,7 @@ TEST_CASE("Reading a scene names the primitives read and the limit to lower when
 namespace {
 
 // A field of /proc/self/status in KiB ("VmRSS", "VmHWM").
-long status_kib(const std::string& field) {
+[[maybe_unused]] long status_kib(const std::string& field) {
   std::ifstream status("/proc/self/status");
   for (std::string line; std::getline(status, line);) {
     if (line.starts_with(field + ":")) return std::stol(line.substr(field.size() + 1));
@@ -453,7 +453,7 @@ long status_kib(const std::string& field) {
 // How far this process's resident memory rises above where it was while body runs: in a child
 // process that first returns its free memory to the system and resets its peak (VmHWM), so that
 // earlier tests count neither way.
-long peak_growth_kib(const std::function<void()>& body) {
+[[maybe_unused]] long peak_growth_kib(const std::function<void()>& body) {
   const std::string growth = in_child([&] {
     ::malloc_trim(0);  // memory the test freed earlier would hide new allocations
     std::ofstream("/proc/self/clear_refs") << "5";
