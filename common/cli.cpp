@@ -7,7 +7,7 @@
 #include <exception>
 #include <sstream>
 
-#include "common/output_files.hpp"
+#include "common/printable_text.hpp"
 
 namespace tri {
 
@@ -122,7 +122,8 @@ int finish_standard_output(std::string_view program, std::ostream& out, std::ost
                            int status) {
   errno = 0;
   out.flush();
-  if (out) return status;
+  // A run that failed has said why in its one line; a failed flush adds no second one.
+  if (out || status != exit_success) return status;
   const int error = errno;
   err << program << ": error: cannot write the results to standard output: "
       << (error != 0 ? std::strerror(error) : "write failed") << "\n";
@@ -132,7 +133,6 @@ int finish_standard_output(std::string_view program, std::ostream& out, std::ost
 int run_command_line(const CommandLine& command_line, int argc, const char* const* argv,
                      std::ostream& out, std::ostream& err,
                      const std::function<int(const CliArguments&)>& body) {
-  bool standard_output_failed = false;
   const int status = [&] {
     try {
       const CliArguments args = command_line.parse(argc, argv);
@@ -142,17 +142,14 @@ int run_command_line(const CommandLine& command_line, int argc, const char* cons
       }
       return body(args);
     } catch (const UsageError& e) {
-      err << command_line.program() << ": error: " << e.what() << " (see --help)\n";
+      err << command_line.program() << ": error: " << printable_text(e.what()) << " (see --help)\n";
       return exit_usage;
     } catch (const std::exception& e) {
-      err << command_line.program() << ": error: " << e.what() << "\n";
-      standard_output_failed = dynamic_cast<const StandardOutputError*>(&e) != nullptr;
+      err << command_line.program() << ": error: " << printable_text(e.what()) << "\n";
       return exit_failure;
     }
   }();
-  // A failed write to standard output that the run reported is not reported a second time.
-  return standard_output_failed ? status
-                                : finish_standard_output(command_line.program(), out, err, status);
+  return finish_standard_output(command_line.program(), out, err, status);
 }
 
 }  // namespace tri

@@ -77,14 +77,17 @@ class CommandLine {
 std::vector<std::string> parse_name_list(std::string_view option, std::string_view list,
                                          const std::vector<std::string>& valid);
 
-/// Flushes out (standard output) and checks it: when the results could not be written, says so
-/// on err with the system's reason and returns exit_failure, else returns status.
+/// Flushes out (standard output) and checks it: when the results of a successful run could not be
+/// written, says so on err with the system's reason and returns exit_failure; a failed run has
+/// said why already and keeps its status without a second line.
 int finish_standard_output(std::string_view program, std::ostream& out, std::ostream& err,
                            int status);
 
 /// Runs a program body with uniform error handling: prints help and returns 0 for --help, and
-/// turns exceptions into one line on err ("program: error: ...") with exit status 2 for usage
-/// errors and 1 for everything else. Checks out at the end (finish_standard_output).
+/// turns exceptions into one line on err ("program: error: ...", the message escaped by
+/// printable_text, so paths and words of the command line cannot break the line or drive the
+/// terminal) with exit status 2 for usage errors and 1 for everything else. Checks out at the end
+/// (finish_standard_output).
 int run_command_line(const CommandLine& command_line, int argc, const char* const* argv,
                      std::ostream& out, std::ostream& err,
                      const std::function<int(const CliArguments&)>& body);

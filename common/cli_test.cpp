@@ -278,16 +278,59 @@ TEST_CASE("run_command_line fails with status 1 and the reason when standard out
         "raster: error: cannot write the results to standard output: No space left on device\n");
 }
 
-TEST_CASE("run_command_line keeps a usage error's status when standard output also fails",
-          "[common][cli][run][standard_output]") {
+namespace {
+
+// The status and the error lines of a run whose standard output is full.
+std::pair<int, std::string> run_into_full_output(
+    std::initializer_list<const char*> words,
+    const std::function<int(std::ostream& out, const CliArguments&)>& body) {
   std::ofstream full("/dev/full");
   std::ostringstream err;
-  const Argv args({"--bogus"});
+  const Argv args(words);
   full << "partial";
   const int status = run_command_line(raster_like(), args.argc(), args.argv(), full, err,
-                                      [](const CliArguments&) { return 0; });
+                                      [&](const CliArguments& a) { return body(full, a); });
+  return {status, err.str()};
+}
+
+}  // namespace
+
+TEST_CASE(
+    "run_command_line keeps a usage error's status and its one line when standard output also "
+    "fails",
+    "[common][cli][run][standard_output]") {
+  const auto [status, err] =
+      run_into_full_output({"--bogus"}, [](std::ostream&, const CliArguments&) { return 0; });
   CHECK(status == exit_usage);
-  CHECK_THAT(err.str(), Catch::Contains("No space left on device"));
+  CHECK(err == "raster: error: unknown option '--bogus' (see --help)\n");
+}
+
+TEST_CASE(
+    "run_command_line prints one error line for a failure that also leaves standard output "
+    "unwritten",
+    "[common][cli][run][standard_output]") {
+  const auto [status, err] =
+      run_into_full_output({"--list"}, [](std::ostream& out, const CliArguments&) -> int {
+        out << std::string(1 << 16, 'x') << std::flush;
+        throw std::runtime_error("-: cannot write the picture: No space left on device");
+      });
+  CHECK(status == exit_failure);
+  CHECK(err == "raster: error: -: cannot write the picture: No space left on device\n");
+}
+
+TEST_CASE("run_command_line escapes control, format and separator characters of a message",
+          "[common][cli][run]") {
+  std::ostringstream out, err;
+  const Argv args({"--\x1b]0;title\x07\n", "x"});
+  CHECK(run_command_line(raster_like(), args.argc(), args.argv(), out, err,
+                         [](const CliArguments&) { return 0; }) == exit_usage);
+  CHECK(err.str() == "raster: error: unknown option '--\\x1B]0;title\\x07\\x0A' (see --help)\n");
+  std::ostringstream err2;
+  const Argv none({"--list"});
+  run_command_line(
+      raster_like(), none.argc(), none.argv(), out, err2,
+      [](const CliArguments&) -> int { throw std::runtime_error("a\u2028b\u202Ec\u061Cd"); });
+  CHECK(err2.str() == "raster: error: a\\xE2\\x80\\xA8b\\xE2\\x80\\xAEc\\xD8\\x9Cd\n");
 }
 
 }  // namespace tri

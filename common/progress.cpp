@@ -38,12 +38,13 @@ Progress::Progress(std::string label, std::uint64_t total, std::ostream& err, Cl
       next_report_(start_ + quiet),
       interval_(interval) {}
 
-void Progress::advance(std::uint64_t done) {
+void Progress::advance(double done) {
   const auto now = Clock::now();
-  if (now < next_report_ || total_ == 0 || done == 0 || done >= total_) return;
+  const auto total = static_cast<double>(total_);
+  if (now < next_report_ || total_ == 0 || done <= 0 || done >= total) return;
   next_report_ = now + interval_;
   const double elapsed = std::chrono::duration<double>(now - start_).count();
-  const double fraction = static_cast<double>(done) / static_cast<double>(total_);
+  const double fraction = done / total;
   const double left = elapsed / fraction - elapsed;
   err_ << label_ << ": " << std::lround(100 * fraction) << "% done, about " << human_duration(left)
        << " left\n";

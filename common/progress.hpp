@@ -30,8 +30,9 @@ class Progress {
            Clock::duration quiet = std::chrono::seconds(2),
            Clock::duration interval = std::chrono::seconds(2));
 
-  /// Says that done of total units are finished; prints a line when one is due.
-  void advance(std::uint64_t done);
+  /// Says that done of total units are finished (a fraction of a unit counts too); prints a line
+  /// when one is due.
+  void advance(double done);
   /// How many lines were printed so far.
   int lines_printed() const noexcept { return lines_; }
 

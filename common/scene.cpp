@@ -8,6 +8,7 @@
 #include <fstream>
 #include <limits>
 #include <locale>
+#include <new>
 #include <sstream>
 
 #include "common/canvas.hpp"
@@ -47,7 +48,7 @@ class LineReader {
       : source_(source), line_(line_number) {}
 
   [[noreturn]] void fail(const std::string& problem) const {
-    throw SceneError(std::string(source_) + ":" + std::to_string(line_) + ": " + problem);
+    throw SceneError(printable_text(source_) + ":" + std::to_string(line_) + ": " + problem);
   }
 
   double coordinate(std::string_view word, std::string_view what) const {
@@ -116,11 +117,14 @@ class LineReader {
 enum class LineStatus { line, too_long, end };
 
 // Reads one line into buffer (sized max_line_bytes + 1) without ever holding more than that: a
-// longer line is reported as soon as its first max_line_bytes bytes are read.
-LineStatus read_line(std::istream& in, std::string& buffer, std::string_view& line) {
+// longer line is reported as soon as its first max_line_bytes bytes are read. Adds the bytes it
+// read to bytes_read.
+LineStatus read_line(std::istream& in, std::string& buffer, std::string_view& line,
+                     std::uint64_t& bytes_read) {
   errno = 0;
   in.getline(buffer.data(), static_cast<std::streamsize>(buffer.size()));
   const auto count = static_cast<std::size_t>(in.gcount());
+  bytes_read += count;
   if (in.bad()) return LineStatus::end;
   if (in.fail()) {
     if (in.eof() && count == 0) return LineStatus::end;
@@ -152,16 +156,23 @@ Primitive read_primitive(const LineReader& reader, const std::vector<std::string
 
 }  // namespace
 
-Scene parse_scene(std::istream& in, std::string_view source_name, const SceneLimits& limits) {
+Scene parse_scene(std::istream& in, std::string_view source_name, const SceneLimits& limits,
+                  const SceneReadProgress& on_progress) {
   Scene scene;
   bool have_canvas = false;
   std::string buffer(limits.max_line_bytes + 1, '\0');
   std::uint64_t line_number = 0;
+  std::uint64_t bytes_read = 0;
+  std::uint64_t next_report = scene_progress_bytes;
   std::string_view line;
   while (true) {
-    const LineStatus status = read_line(in, buffer, line);
+    const LineStatus status = read_line(in, buffer, line, bytes_read);
     if (status == LineStatus::end) break;
     ++line_number;
+    if (bytes_read >= next_report && on_progress) {
+      on_progress(bytes_read);
+      next_report = bytes_read + scene_progress_bytes;
+    }
     if (status == LineStatus::too_long) {
       LineReader(source_name, line_number)
           .fail("line longer than " + std::to_string(limits.max_line_bytes) +
@@ -190,12 +201,19 @@ Scene parse_scene(std::istream& in, std::string_view source_name, const SceneLim
         reader.fail("more than " + std::to_string(limits.max_primitives) +
                     " primitives, the limit of a scene");
       }
-      if (directive == "tri") {
-        scene.primitives.emplace_back(read_primitive(reader, words, "tri x0 y0 x1 y1 x2 y2 [r g b]",
-                                                     &SceneTriangle::vertices));
-      } else {
-        scene.primitives.emplace_back(
-            read_primitive(reader, words, "line x0 y0 x1 y1 [r g b]", &SceneLine::ends));
+      const ScenePrimitive primitive =
+          directive == "tri"
+              ? ScenePrimitive(read_primitive(reader, words, "tri x0 y0 x1 y1 x2 y2 [r g b]",
+                                              &SceneTriangle::vertices))
+              : ScenePrimitive(
+                    read_primitive(reader, words, "line x0 y0 x1 y1 [r g b]", &SceneLine::ends));
+      try {
+        scene.primitives.push_back(primitive);
+      } catch (const std::bad_alloc&) {
+        reader.fail("out of memory while storing the scene's primitives (" +
+                    std::to_string(scene.primitives.size()) + " read, " +
+                    std::to_string(scene.primitives.capacity() * sizeof(ScenePrimitive) >> 20) +
+                    " MiB held); lower the number of triangles and lines");
       }
     } else {
       reader.fail("unknown directive '" + printable_excerpt(directive) +
@@ -204,29 +222,30 @@ Scene parse_scene(std::istream& in, std::string_view source_name, const SceneLim
   }
   if (in.bad()) {
     const int error = errno;
-    throw SceneError(std::string(source_name) + ": read error" +
+    throw SceneError(printable_text(source_name) + ": read error" +
                      (error != 0 ? std::string(": ") + std::strerror(error) : std::string()));
   }
   if (!have_canvas) {
-    throw SceneError(std::string(source_name) + ": missing 'canvas W H' directive");
+    throw SceneError(printable_text(source_name) + ": missing 'canvas W H' directive");
   }
   return scene;
 }
 
-Scene load_scene(const std::filesystem::path& path) {
+Scene load_scene(const std::filesystem::path& path, const SceneReadProgress& on_progress) {
   // A folder opens as a stream on Linux and fails only when read: name the reason up front.
   std::error_code ignored;
   if (std::filesystem::is_directory(path, ignored)) {
-    throw SceneError(path.string() + ": cannot read the scene file: " + std::strerror(EISDIR));
+    throw SceneError(printable_text(path.string()) +
+                     ": cannot read the scene file: " + std::strerror(EISDIR));
   }
   errno = 0;
   std::ifstream in(path, std::ios::binary);
   if (!in) {
     const int error = errno;
-    throw SceneError(path.string() + ": cannot open the scene file" +
+    throw SceneError(printable_text(path.string()) + ": cannot open the scene file" +
                      (error != 0 ? std::string(": ") + std::strerror(error) : std::string()));
   }
-  return parse_scene(in, path.string());
+  return parse_scene(in, path.string(), {}, on_progress);
 }
 
 }  // namespace tri

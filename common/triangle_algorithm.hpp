@@ -35,6 +35,12 @@ std::string_view rule_name(CoverageRule rule) noexcept;
 /// Draws one triangle in one colour. Called only with finite vertices within the scene limits.
 using DrawTriangleFunction = void (*)(Canvas& canvas, const Triangle& triangle, Color color);
 
+/// Draws only the pixels of rows first_row..last_row (0 <= first_row <= last_row < height) that
+/// DrawTriangleFunction writes there: drawing every band of a partition of the canvas's rows in
+/// turn writes the same pixels, as often. Lets a caller split one huge triangle's work into bands.
+using DrawTriangleRowsFunction = void (*)(Canvas& canvas, const Triangle& triangle, Color color,
+                                          int first_row, int last_row);
+
 /// Draws many triangles as if one after the other (later ones paint over earlier ones), for
 /// algorithms that work on a whole batch at once, e.g. by splitting the canvas among threads.
 /// Called only with triangles that passed validate_triangle.
@@ -69,6 +75,9 @@ struct TriangleAlgorithm {
   /// "barycentric"); empty for the others. The report joins a family's points into a line.
   std::string_view precision_family = {};
   int precision_bits = 0;  ///< fractional bits of a fixed point, or significand bits of a float
+  /// Optional: draw restricted to a band of rows (`raster` reports progress inside a huge
+  /// triangle).
+  DrawTriangleRowsFunction draw_rows = nullptr;
 };
 
 /// Whether a triangle was drawn or refused before reaching the algorithm.
@@ -100,6 +109,8 @@ class BatchDrawer {
 
   /// Draws the triangles in order; returns how many were refused. One batch at a time.
   std::size_t draw(Canvas& canvas, std::span<const SceneTriangle> triangles);
+  /// The algorithm it draws with.
+  const TriangleAlgorithm& algorithm() const noexcept { return *algorithm_; }
 
  private:
   const TriangleAlgorithm* algorithm_;

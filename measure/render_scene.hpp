@@ -3,9 +3,11 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <vector>
 
+#include "chapters/10_coverage/area_algorithms.hpp"
 #include "common/canvas.hpp"
 #include "common/scene.hpp"
 #include "common/triangle_algorithm.hpp"
@@ -19,6 +21,13 @@ struct RenderStats {
   std::size_t rejected_triangles = 0;  ///< triangles refused by draw_triangle (NaN, range)
 };
 
+/// Hears how many primitives are done; within a triangle drawn in bands the count has a fraction.
+using ProgressFunction = std::function<void(double done)>;
+
+/// A triangle whose bounding box on the canvas holds more pixels than this is drawn in bands of
+/// rows of about this many pixels when progress is reported (and its algorithm has draw_rows).
+inline constexpr std::int64_t band_pixels = std::int64_t{1} << 20;
+
 /// A canvas of the scene's size and background.
 Canvas make_canvas(const Scene& scene);
 
@@ -26,14 +35,33 @@ Canvas make_canvas(const Scene& scene);
 /// non-finite input is refused and batch algorithms get whole runs), lines with chapter 01's
 /// Bresenham between the nearest pixel centres. The drawer may be null when the scene has no
 /// triangles. With on_progress, runs are drawn in pieces sized to take about a tenth of a second,
-/// and on_progress hears how many primitives are done after each piece. A caller that draws the
-/// scene many times keeps one drawer for all of them.
+/// and on_progress hears how many primitives are done after each piece; a huge triangle (more than
+/// band_pixels) whose algorithm has draw_rows is drawn alone in bands of rows, with a report after
+/// each band, and the same pixels. A caller that draws the scene many times keeps one drawer.
 RenderStats render_scene(const Scene& scene, BatchDrawer* drawer, Canvas& canvas,
-                         const std::function<void(std::size_t done)>& on_progress = {});
+                         const ProgressFunction& on_progress = {});
 
 /// The same with a drawer of the algorithm made for this one scene (null: no triangles).
 RenderStats render_scene(const Scene& scene, const TriangleAlgorithm* algorithm, Canvas& canvas,
-                         const std::function<void(std::size_t done)>& on_progress = {});
+                         const ProgressFunction& on_progress = {});
+
+/// Adds the coverage of the scene's triangles (lines have no area) to the canvas in pieces, so
+/// no copy of all the triangles is made, with progress as render_scene's (bands through the
+/// algorithm's draw_rows). Returns how many triangles were refused (non-finite or out of range).
+std::size_t render_coverage(const Scene& scene, const ch10::AreaAlgorithm& algorithm,
+                            ch10::CoverageCanvas& canvas, const ProgressFunction& on_progress = {});
+
+/// Rows per band for a triangle whose bounding box on a width x height canvas holds more than
+/// band_pixels pixels, so that a band holds about band_pixels; 0 for a smaller one (drawn whole).
+int band_rows_for(const Triangle& triangle, int width, int height);
+
+/// Calls draw_rows(first_row, last_row) for bands of `rows` rows that partition the canvas's rows
+/// 0..height-1 in order: the first band ends `rows` rows into the triangle's bounding box, the last
+/// takes the rest. after_band hears the share of the box's rows done. With an algorithm's
+/// draw_rows entry this draws what its draw does, pixel for pixel and write for write.
+void for_each_band(const Triangle& triangle, int width, int height, int rows,
+                   const std::function<void(int first_row, int last_row)>& draw_rows,
+                   const std::function<void(double share)>& after_band = {});
 
 /// The scene's triangles in order, without its lines.
 std::vector<SceneTriangle> scene_triangles(const Scene& scene);

@@ -96,17 +96,32 @@ NarrowRender::NarrowRender(const Scene& scene, PixelFormat format)
 
 NarrowRender::~NarrowRender() = default;
 
-std::size_t NarrowRender::draw() {
+std::size_t NarrowRender::draw(const ProgressFunction& on_progress) {
   std::size_t refused = 0;
+  const int width = scene_.width, height = scene_.height;
   for (std::size_t i = 0; i < state_->triangles.size(); ++i) {
     const Triangle& t = state_->triangles[i].vertices;
+    const std::uint8_t index = state_->index_of[i];
+    const int rows = on_progress ? band_rows_for(t, width, height) : 0;
     if (validate_triangle(t) != DrawResult::drawn) {
       ++refused;
+    } else if (rows > 0) {  // a huge triangle in bands of rows, a report after each
+      for_each_band(
+          t, width, height, rows,
+          [&](int first, int last) {
+            if (format_ == PixelFormat::index8) {
+              ch08::draw_triangle_spans_index8_rows(state_->indices, t, index, first, last);
+            } else {
+              ch08::draw_triangle_spans_mask1_rows(state_->mask, t, first, last);
+            }
+          },
+          [&](double share) { on_progress(static_cast<double>(i) + share); });
     } else if (format_ == PixelFormat::index8) {
-      ch08::draw_triangle_spans_index8(state_->indices, t, state_->index_of[i]);
+      ch08::draw_triangle_spans_index8(state_->indices, t, index);
     } else {
       ch08::draw_triangle_spans_mask1(state_->mask, t);
     }
+    if (on_progress && (i + 1) % progress_every == 0) on_progress(static_cast<double>(i + 1));
   }
   return refused;
 }

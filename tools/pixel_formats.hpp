@@ -13,6 +13,7 @@
 #include "common/canvas.hpp"
 #include "common/scene.hpp"
 #include "common/triangle_algorithm.hpp"
+#include "measure/render_scene.hpp"
 
 namespace tri {
 
@@ -51,7 +52,10 @@ class NarrowRender {
   NarrowRender& operator=(const NarrowRender&) = delete;
 
   /// Draws every valid triangle; returns how many were refused (non-finite or out of range).
-  std::size_t draw();
+  /// on_progress hears how many triangles are done every progress_every triangles and after each
+  /// band of rows of a huge triangle (render_scene's band_rows_for), which is then drawn in bands.
+  std::size_t draw(const ProgressFunction& on_progress = {});
+  static constexpr std::size_t progress_every = 4096;
   /// The RGBA8 picture: the background where no triangle drew, else the triangle's colour.
   Canvas expanded() const;
 

@@ -1,6 +1,7 @@
 #include "tools/raster_app.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cstdint>
 #include <filesystem>
 #include <functional>
@@ -21,6 +22,7 @@
 #include "measure/registry.hpp"
 #include "measure/render_scene.hpp"
 #include "measure/timing.hpp"
+#include "tools/out_of_memory.hpp"
 #include "tools/pixel_formats.hpp"
 
 namespace tri {
@@ -42,7 +44,7 @@ CommandLine raster_command_line() {
       "two outputs naming one file, devices, FIFOs, read-only and hard-linked files are\n"
       "refused; a symlinked output is written through to its file. '-' is standard output;\n"
       "/dev/stdout, /dev/stderr and /dev/fd/N are written to, never replaced as files.\n"
-      "Work that runs for more than 2 s prints its progress on standard error.",
+      "Work that runs for more than 2 s (--progress-after) prints its progress on standard error.",
       {
           {"list", "", "print every algorithm: NAME, CHAPTER, RULE, summary (tab-separated)"},
           {"algo", "NAME", "the triangle algorithm to draw with (see --list)"},
@@ -56,6 +58,9 @@ CommandLine raster_command_line() {
           {"bench", "N",
            "time N draws of the scene after a warm-up; print the median frame's speed"},
           {"force", "", "run a --bench estimated to take more than 10 minutes anyway"},
+          {"progress-after", "S",
+           "report progress on standard error after S seconds of work and then every S seconds "
+           "(default 2; 0 reports every step)"},
           {"format", "F",
            "draw into rgba8 (default), index8 (a byte per pixel: a palette of at most 255 "
            "colours), mask1 (a bit per pixel: one colour) or auto (the narrowest that holds the "
@@ -72,6 +77,49 @@ void print_list(const std::vector<Algorithm>& algorithms, std::ostream& out) {
 
 // Roughly how long stb takes per pixel to encode a PNG (16384x16384 took 40-53 s).
 constexpr double png_seconds_per_pixel = 170e-9;
+
+// How long work runs before its progress is reported, and between reports (--progress-after).
+std::chrono::seconds progress_after(const CliArguments& args) {
+  return std::chrono::seconds(args.integer("progress-after", 0, 86'400).value_or(2));
+}
+
+Progress progress_of(const CliArguments& args, std::string label, std::uint64_t total,
+                     std::ostream& err) {
+  const auto after = progress_after(args);
+  return Progress(std::move(label), total, err, after, after);
+}
+
+// The PNG encoder has no callback: a long encoding is announced with its estimate instead.
+std::vector<std::uint8_t> encode_png_saying_so(const CliArguments& args, const Canvas& canvas,
+                                               std::ostream& err) {
+  const double pixels = static_cast<double>(canvas.width()) * canvas.height();
+  const double seconds = pixels * png_seconds_per_pixel;
+  if (seconds > std::chrono::duration<double>(progress_after(args)).count()) {
+    err << "raster: encoding a " << canvas.width() << "x" << canvas.height() << " PNG, about "
+        << human_duration(seconds) << "\n";
+  }
+  return allocating("the PNG of the " + std::to_string(canvas.width()) + "x" +
+                        std::to_string(canvas.height()) + " canvas",
+                    pixels * 4, "the scene's canvas size", [&] { return encode_png(canvas); });
+}
+
+// "the 16384x16384 canvas", for messages about memory.
+std::string canvas_words(const Scene& scene) {
+  return "the " + std::to_string(scene.width) + "x" + std::to_string(scene.height) + " canvas";
+}
+
+double pixel_count(const Scene& scene) {
+  return static_cast<double>(scene.width) * static_cast<double>(scene.height);
+}
+
+// The scene, read with progress by bytes read when its size is known.
+Scene load_scene_saying_so(const CliArguments& args, const std::string& path, std::ostream& err) {
+  std::error_code unknown;
+  const std::uintmax_t size = std::filesystem::file_size(path, unknown);
+  Progress reading = progress_of(args, "raster: reading the scene", unknown ? 0 : size, err);
+  return load_scene(path,
+                    [&](std::uint64_t bytes) { reading.advance(static_cast<double>(bytes)); });
+}
 
 // How many pixels one frame of the scene writes, from one draw with write counts.
 std::uint64_t pixels_per_frame(const Scene& scene, const TriangleAlgorithm* algorithm) {
@@ -121,9 +169,11 @@ void benchmark(const Scene& scene, const TriangleAlgorithm* algorithm, long long
 // left out), benchmarked or written as a 16-bit PGM (docs/DESIGN.md section 9).
 int run_coverage(const CliArguments& args, const Scene& scene, const ch10::AreaAlgorithm& area,
                  std::optional<long long> frames, std::ostream& out, std::ostream& err) {
-  const std::vector<SceneTriangle> triangles = scene_triangles(scene);
-  ch10::CoverageCanvas canvas(scene.width, scene.height);
+  ch10::CoverageCanvas canvas = allocating(
+      "the coverage values of " + canvas_words(scene), pixel_count(scene) * sizeof(float),
+      "the scene's canvas size", [&] { return ch10::CoverageCanvas(scene.width, scene.height); });
   if (frames) {
+    const std::vector<SceneTriangle> triangles = scene_triangles(scene);
     benchmark(
         [&] {
           canvas.clear();
@@ -134,19 +184,23 @@ int run_coverage(const CliArguments& args, const Scene& scene, const ch10::AreaA
         args.has("force"), out, err);
     return 0;
   }
-  const std::size_t refused = ch10::draw_coverage(area, canvas, triangles);
+  Progress drawing = progress_of(args, "raster: coverage", scene.primitives.size(), err);
+  const std::size_t refused =
+      render_coverage(scene, area, canvas, [&](double done) { drawing.advance(done); });
   if (refused > 0) {
     throw std::runtime_error(std::to_string(refused) +
                              " triangle(s) have non-finite or out-of-range vertices");
   }
   OutputTransaction files(&out);
   const std::string path = *args.value("coverage");
-  files.stage(path, canvas.pgm_16());
+  files.stage(path, allocating("the PGM of " + canvas_words(scene), pixel_count(scene) * 2,
+                               "the scene's canvas size", [&] { return canvas.pgm_16(); }));
   files.commit();
   std::ostream& report = output_descriptor(path) == STDOUT_FILENO ? err : out;
-  report << "drew the coverage of " << triangles.size() << " triangle(s) on " << scene.width << "x"
+  const std::size_t triangles = count_triangles(scene);
+  report << "drew the coverage of " << triangles << " triangle(s) on " << scene.width << "x"
          << scene.height << " with " << area.name;
-  const std::size_t lines = scene.primitives.size() - triangles.size();
+  const std::size_t lines = scene.primitives.size() - triangles;
   if (lines > 0) report << " (" << lines << " line(s) left out: a line has no area)";
   report << '\n';
   return 0;
@@ -184,20 +238,29 @@ int run_narrow(const CliArguments& args, const Scene& scene, const TriangleAlgor
                PixelFormat format, std::optional<long long> frames, bool to_standard_output,
                std::ostream& out, std::ostream& err) {
   if (const auto refusal = format_refusal(scene, format)) throw std::runtime_error(*refusal);
-  NarrowRender render(scene, format);
+  NarrowRender render =
+      allocating("the " + std::string(format_name(format)) + " pixels of " + canvas_words(scene),
+                 pixel_count(scene) / (format == PixelFormat::mask1 ? 8 : 1),
+                 "the scene's canvas size", [&] { return NarrowRender(scene, format); });
   if (frames) {
     benchmark([&] { render.draw(); }, count_triangles(scene),
               [&] { return pixels_per_frame(scene, &algorithm); }, *frames, args.has("force"), out,
               err);
     return 0;
   }
-  const std::size_t refused = render.draw();
+  Progress drawing = progress_of(args, "raster: drawing", count_triangles(scene), err);
+  const std::size_t refused = render.draw([&](double done) { drawing.advance(done); });
   if (refused > 0) {
     throw std::runtime_error(std::to_string(refused) +
                              " triangle(s) have non-finite or out-of-range vertices");
   }
   OutputTransaction files(&out);
-  if (const auto path = args.value("out")) files.stage(*path, encode_png(render.expanded()));
+  if (const auto path = args.value("out")) {
+    const Canvas expanded =
+        allocating("the RGBA8 picture of " + canvas_words(scene), pixel_count(scene) * 4,
+                   "the scene's canvas size", [&] { return render.expanded(); });
+    files.stage(*path, encode_png_saying_so(args, expanded, err));
+  }
   files.commit();
   std::ostream& report = to_standard_output ? err : out;
   report << "drew " << count_triangles(scene) << " triangle(s) and 0 line(s) on " << scene.width
@@ -220,6 +283,7 @@ int run(const CliArguments& args, std::ostream& out, std::ostream& err) {
   }
   const auto scene_path = args.value("scene");
   if (!scene_path) throw UsageError("--scene FILE is required (or --list)");
+  progress_after(args);  // a bad value is a usage error before any work
   const TriangleAlgorithm* algorithm = nullptr;
   const ch10::AreaAlgorithm* area = nullptr;
   if (const auto name = args.value("algo")) {
@@ -272,7 +336,7 @@ int run(const CliArguments& args, std::ostream& out, std::ostream& err) {
     }
   }
 
-  const Scene scene = load_scene(*scene_path);
+  const Scene scene = load_scene_saying_so(args, *scene_path, err);
   if (area != nullptr) return run_coverage(args, scene, *area, frames, out, err);
   if (algorithm == nullptr && count_triangles(scene) > 0) {
     throw UsageError(*scene_path + " has triangles: choose an algorithm with --algo NAME");
@@ -288,26 +352,28 @@ int run(const CliArguments& args, std::ostream& out, std::ostream& err) {
     return 0;
   }
 
-  Canvas canvas = make_canvas(scene);
-  if (args.has("counts")) canvas.enable_write_counts();
-  Progress drawing("raster: drawing", scene.primitives.size(), err);
+  Canvas canvas = allocating(canvas_words(scene), pixel_count(scene) * 4, "the scene's canvas size",
+                             [&] { return make_canvas(scene); });
+  if (args.has("counts")) {
+    allocating("the write counts of " + canvas_words(scene), pixel_count(scene) * 4,
+               "the scene's canvas size or drop --counts", [&] { canvas.enable_write_counts(); });
+  }
+  Progress drawing = progress_of(args, "raster: drawing", scene.primitives.size(), err);
   const RenderStats stats =
-      render_scene(scene, algorithm, canvas, [&](std::size_t done) { drawing.advance(done); });
+      render_scene(scene, algorithm, canvas, [&](double done) { drawing.advance(done); });
   if (stats.rejected_triangles > 0) {
     throw std::runtime_error(std::to_string(stats.rejected_triangles) +
                              " triangle(s) have non-finite or out-of-range vertices");
   }
   // Both outputs replace their files together, or neither does.
   OutputTransaction files(&out);
-  if (const auto path = args.value("out")) {
-    const double pixels = static_cast<double>(canvas.width()) * canvas.height();
-    if (pixels * png_seconds_per_pixel > 2.0) {
-      err << "raster: encoding a " << canvas.width() << "x" << canvas.height() << " PNG, about "
-          << human_duration(pixels * png_seconds_per_pixel) << "\n";
-    }
-    files.stage(*path, encode_png(canvas));
+  if (const auto path = args.value("out"))
+    files.stage(*path, encode_png_saying_so(args, canvas, err));
+  if (const auto path = args.value("counts")) {
+    files.stage(*path, allocating("the counts PGM of " + canvas_words(scene), pixel_count(scene),
+                                  "the scene's canvas size or drop --counts",
+                                  [&] { return encode_counts_pgm(canvas); }));
   }
-  if (const auto path = args.value("counts")) files.stage(*path, encode_counts_pgm(canvas));
   files.commit();
   // With an image on standard output, the summary goes with the other messages.
   std::ostream& report = to_standard_output ? err : out;

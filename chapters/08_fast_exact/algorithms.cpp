@@ -31,28 +31,44 @@ constexpr TriangleAlgorithm variant(std::string_view name, std::string_view summ
           .make_renderer = make_renderer};
 }
 
+// A variant with a band-limited entry, so a huge triangle's work can be split into bands of rows.
+constexpr TriangleAlgorithm with_rows(TriangleAlgorithm algorithm, DrawTriangleRowsFunction rows) {
+  algorithm.draw_rows = rows;
+  return algorithm;
+}
+
 }  // namespace
 
 std::span<const TriangleAlgorithm> triangle_algorithms() {
   static constexpr std::array<TriangleAlgorithm, 9> algorithms{{
-      variant("fast_incremental",
-              "fixed_point_8 with edge values updated by one addition per pixel and edge",
-              draw_triangle_incremental),
-      variant("fast_all_edges",
-              "fast_incremental testing the OR of the three edge values: one branch per pixel",
-              draw_triangle_all_edges),
-      variant("fast_spans",
-              "exact first and last covered pixel per row (division-free walker), spans filled",
-              draw_triangle_spans),
-      variant("fast_blocks_8x8",
-              "8x8 blocks: outside skipped, inside filled, partial ones tested per pixel",
-              draw_triangle_blocks_8x8),
-      variant("fast_simd",
-              "fast_blocks_8x8 testing eight pixels of a row at once in vectorizable lanes",
-              draw_triangle_simd),
-      variant("fast_hybrid",
-              "per triangle: fast_simd's eight-lane test within one 8x8 block, else fast_spans",
-              draw_triangle_hybrid, draw_batch_hybrid),
+      with_rows(variant("fast_incremental",
+                        "fixed_point_8 with edge values updated by one addition per pixel and edge",
+                        draw_triangle_incremental),
+                draw_triangle_incremental_rows),
+      with_rows(
+          variant("fast_all_edges",
+                  "fast_incremental testing the OR of the three edge values: one branch per pixel",
+                  draw_triangle_all_edges),
+          draw_triangle_all_edges_rows),
+      with_rows(
+          variant("fast_spans",
+                  "exact first and last covered pixel per row (division-free walker), spans filled",
+                  draw_triangle_spans),
+          draw_triangle_spans_rows),
+      with_rows(variant("fast_blocks_8x8",
+                        "8x8 blocks: outside skipped, inside filled, partial ones tested per pixel",
+                        draw_triangle_blocks_8x8),
+                draw_triangle_blocks_8x8_rows),
+      with_rows(
+          variant("fast_simd",
+                  "fast_blocks_8x8 testing eight pixels of a row at once in vectorizable lanes",
+                  draw_triangle_simd),
+          draw_triangle_simd_rows),
+      with_rows(
+          variant("fast_hybrid",
+                  "per triangle: fast_simd's eight-lane test within one 8x8 block, else fast_spans",
+                  draw_triangle_hybrid, draw_batch_hybrid),
+          draw_triangle_hybrid_rows),
       variant("fast_threaded",
               "fast_hybrid on bands of rows dealt to hardware_concurrency threads per batch",
               draw_triangle_hybrid, draw_batch_threaded, true),
@@ -60,10 +76,12 @@ std::span<const TriangleAlgorithm> triangle_algorithms() {
               "fast_hybrid per tile: the batch binned into tiles, which hardware_concurrency "
               "threads (started once, kept between batches) take one at a time",
               draw_triangle_hybrid, nullptr, true, make_tiled_renderer),
-      variant("fast_batched",
-              "fast_hybrid with the setup of eight triangles at once in vector lanes, then "
-              "each filled in order",
-              draw_triangle_batched, draw_batch_batched),
+      with_rows(
+          variant("fast_batched",
+                  "fast_hybrid with the setup of eight triangles at once in vector lanes, then "
+                  "each filled in order",
+                  draw_triangle_batched, draw_batch_batched),
+          draw_triangle_hybrid_rows),
   }};
   return algorithms;
 }

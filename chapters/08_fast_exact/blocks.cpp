@@ -26,4 +26,11 @@ void draw_triangle_blocks_8x8(Canvas& canvas, const Triangle& triangle, Color co
                   [](const TriangleSetup& setup, auto& writer) { fill_blocks(setup, writer); });
 }
 
+void draw_triangle_blocks_8x8_rows(Canvas& canvas, const Triangle& triangle, Color color,
+                                   int first_row, int last_row) {
+  set_up_and_fill_rows(
+      canvas, triangle, color, first_row, last_row,
+      [](const TriangleSetup& setup, auto& writer) { fill_blocks(setup, writer); });
+}
+
 }  // namespace tri::ch08

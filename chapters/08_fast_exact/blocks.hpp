@@ -111,5 +111,8 @@ void fill_block_pixels(const TriangleSetup& setup, const ch05::PixelBox& block, 
 /// Step 4 · 8x8 blocks: skip the outside ones, fill runs of inside ones span by span, and test
 /// the pixels of the partial ones with step 2's incremental one-branch test.
 void draw_triangle_blocks_8x8(Canvas& canvas, const Triangle& triangle, Color color);
+/// The same restricted to rows first_row..last_row (the registry's draw_rows entry).
+void draw_triangle_blocks_8x8_rows(Canvas& canvas, const Triangle& triangle, Color color,
+                                   int first_row, int last_row);
 
 }  // namespace tri::ch08

@@ -38,6 +38,13 @@ void draw_triangle_hybrid(Canvas& canvas, const Triangle& triangle, Color color)
                   [](const TriangleSetup& setup, auto& writer) { fill_hybrid(setup, writer); });
 }
 
+void draw_triangle_hybrid_rows(Canvas& canvas, const Triangle& triangle, Color color, int first_row,
+                               int last_row) {
+  set_up_and_fill_rows(
+      canvas, triangle, color, first_row, last_row,
+      [](const TriangleSetup& setup, auto& writer) { fill_hybrid(setup, writer); });
+}
+
 void draw_batch_hybrid(Canvas& canvas, std::span<const SceneTriangle> triangles) {
   with_writer_type(canvas, [&]<class Writer>() { draw_batch_with<Writer>(canvas, triangles); });
 }

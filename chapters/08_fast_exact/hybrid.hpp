@@ -23,6 +23,9 @@ extern template void fill_hybrid(const TriangleSetup&, CountingWriter&);
 
 /// Step 6 · one triangle: setup, then fill_hybrid.
 void draw_triangle_hybrid(Canvas& canvas, const Triangle& triangle, Color color);
+/// The same restricted to rows first_row..last_row (the registry's draw_rows entry).
+void draw_triangle_hybrid_rows(Canvas& canvas, const Triangle& triangle, Color color, int first_row,
+                               int last_row);
 
 /// Step 6 · a whole batch on the calling thread: draw_triangle_hybrid for each triangle in order,
 /// with the writer chosen once instead of per triangle.

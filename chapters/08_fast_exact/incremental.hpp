@@ -46,6 +46,9 @@ void walk_incremental(const TriangleSetup& setup, Visit&& visit) {
 /// Step 1 · incremental edge functions: chapter 07's rasterizer (same snapping, same bias, same
 /// candidate pixels) with walk_incremental, three comparisons per pixel.
 void draw_triangle_incremental(Canvas& canvas, const Triangle& triangle, Color color);
+/// The same restricted to rows first_row..last_row (the registry's draw_rows entry).
+void draw_triangle_incremental_rows(Canvas& canvas, const Triangle& triangle, Color color,
+                                    int first_row, int last_row);
 
 // [listing inside_all_edges]
 /// Step 2's test: all three values are >= 0 exactly when their bitwise OR is, because a two's
@@ -58,5 +61,8 @@ constexpr bool inside_all_edges(std::int64_t w0, std::int64_t w1, std::int64_t w
 
 /// Step 2 · testing all three edges at once: step 1 with inside_all_edges, one branch per pixel.
 void draw_triangle_all_edges(Canvas& canvas, const Triangle& triangle, Color color);
+/// The same restricted to rows first_row..last_row (the registry's draw_rows entry).
+void draw_triangle_all_edges_rows(Canvas& canvas, const Triangle& triangle, Color color,
+                                  int first_row, int last_row);
 
 }  // namespace tri::ch08

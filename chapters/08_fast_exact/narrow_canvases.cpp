@@ -16,6 +16,20 @@ MaskCanvas::MaskCanvas(int width, int height)
       words_per_row_((width + 63) / 64),
       words_(static_cast<std::size_t>(words_per_row_) * static_cast<std::size_t>(height), 0) {}
 
+namespace {
+
+// fill_spans over the triangle's setup clipped to rows first_row..last_row of the canvas.
+template <class NarrowCanvas, class Writer>
+void fill_rows(NarrowCanvas& canvas, const Triangle& triangle, int first_row, int last_row,
+               Writer writer) {
+  const auto setup = setup_triangle(triangle, canvas.width(), canvas.height());
+  if (!setup) return;
+  const auto part = clip_setup(*setup, {{0, first_row}, {canvas.width() - 1, last_row}});
+  if (part) fill_spans(*part, writer);
+}
+
+}  // namespace
+
 void draw_triangle_spans_index8(IndexCanvas& canvas, const Triangle& triangle, std::uint8_t index) {
   const auto setup = setup_triangle(triangle, canvas.width(), canvas.height());
   if (!setup) return;
@@ -28,6 +42,16 @@ void draw_triangle_spans_mask1(MaskCanvas& canvas, const Triangle& triangle) {
   if (!setup) return;
   MaskWriter writer(canvas);
   fill_spans(*setup, writer);
+}
+
+void draw_triangle_spans_index8_rows(IndexCanvas& canvas, const Triangle& triangle,
+                                     std::uint8_t index, int first_row, int last_row) {
+  fill_rows(canvas, triangle, first_row, last_row, IndexWriter(canvas, index));
+}
+
+void draw_triangle_spans_mask1_rows(MaskCanvas& canvas, const Triangle& triangle, int first_row,
+                                    int last_row) {
+  fill_rows(canvas, triangle, first_row, last_row, MaskWriter(canvas));
 }
 
 }  // namespace tri::ch08

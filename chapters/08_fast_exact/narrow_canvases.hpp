@@ -114,4 +114,10 @@ void draw_triangle_spans_index8(IndexCanvas& canvas, const Triangle& triangle, s
 /// Step 8 · step 3's spans into one bit per pixel: the triangle's pixels set to 1.
 void draw_triangle_spans_mask1(MaskCanvas& canvas, const Triangle& triangle);
 
+/// The two restricted to rows first_row..last_row, so a huge triangle can be drawn in bands.
+void draw_triangle_spans_index8_rows(IndexCanvas& canvas, const Triangle& triangle,
+                                     std::uint8_t index, int first_row, int last_row);
+void draw_triangle_spans_mask1_rows(MaskCanvas& canvas, const Triangle& triangle, int first_row,
+                                    int last_row);
+
 }  // namespace tri::ch08

@@ -163,4 +163,16 @@ void set_up_and_fill(Canvas& canvas, const Triangle& triangle, Color color, Fill
   with_writer(canvas, color, [&](auto& writer) { fill(*setup, writer); });
 }
 
+/// set_up_and_fill restricted to rows first_row..last_row: the setup clipped to them (clip_setup),
+/// so the traversal writes exactly the pixels of those rows that it writes unclipped.
+template <class Fill>
+void set_up_and_fill_rows(Canvas& canvas, const Triangle& triangle, Color color, int first_row,
+                          int last_row, Fill&& fill) {
+  const auto setup = setup_triangle(triangle, canvas.width(), canvas.height());
+  if (!setup) return;
+  const auto part = clip_setup(*setup, {{0, first_row}, {canvas.width() - 1, last_row}});
+  if (!part) return;
+  with_writer(canvas, color, [&](auto& writer) { fill(*part, writer); });
+}
+
 }  // namespace tri::ch08

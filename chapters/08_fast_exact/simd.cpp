@@ -203,4 +203,10 @@ void draw_triangle_simd(Canvas& canvas, const Triangle& triangle, Color color) {
                   [](const TriangleSetup& setup, auto& writer) { fill_simd(setup, writer); });
 }
 
+void draw_triangle_simd_rows(Canvas& canvas, const Triangle& triangle, Color color, int first_row,
+                             int last_row) {
+  set_up_and_fill_rows(canvas, triangle, color, first_row, last_row,
+                       [](const TriangleSetup& setup, auto& writer) { fill_simd(setup, writer); });
+}
+
 }  // namespace tri::ch08

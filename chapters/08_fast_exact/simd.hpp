@@ -55,5 +55,8 @@ extern template void fill_simd(const TriangleSetup&, CountingWriter&);
 /// written with one read-blend-write of eight pixels; a triangle within one block skips the
 /// blocks altogether.
 void draw_triangle_simd(Canvas& canvas, const Triangle& triangle, Color color);
+/// The same restricted to rows first_row..last_row (the registry's draw_rows entry).
+void draw_triangle_simd_rows(Canvas& canvas, const Triangle& triangle, Color color, int first_row,
+                             int last_row);
 
 }  // namespace tri::ch08

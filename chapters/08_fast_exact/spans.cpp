@@ -191,4 +191,10 @@ void draw_triangle_spans(Canvas& canvas, const Triangle& triangle, Color color) 
                   [](const TriangleSetup& setup, auto& writer) { fill_spans(setup, writer); });
 }
 
+void draw_triangle_spans_rows(Canvas& canvas, const Triangle& triangle, Color color, int first_row,
+                              int last_row) {
+  set_up_and_fill_rows(canvas, triangle, color, first_row, last_row,
+                       [](const TriangleSetup& setup, auto& writer) { fill_spans(setup, writer); });
+}
+
 }  // namespace tri::ch08

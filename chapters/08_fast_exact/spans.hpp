@@ -155,5 +155,8 @@ extern template void fill_spans(const TriangleSetup&, MaskWriter&);
 /// Step 3 · span traversal: setup, then one filled span per row from SpanWalker. A sliver costs
 /// its rows, not its bounding box.
 void draw_triangle_spans(Canvas& canvas, const Triangle& triangle, Color color);
+/// The same restricted to rows first_row..last_row (the registry's draw_rows entry).
+void draw_triangle_spans_rows(Canvas& canvas, const Triangle& triangle, Color color, int first_row,
+                              int last_row);
 
 }  // namespace tri::ch08

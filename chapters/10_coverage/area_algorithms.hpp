@@ -18,6 +18,11 @@ namespace tri::ch10 {
 using DrawCoverageFunction = void (*)(CoverageCanvas& canvas,
                                       std::span<const SceneTriangle> triangles);
 
+/// Adds one triangle's coverage to the pixels of rows first_row..last_row only, exactly what
+/// DrawCoverageFunction adds there, so a huge triangle's work can be split into bands of rows.
+using DrawCoverageRowsFunction = void (*)(CoverageCanvas& canvas, const Triangle& triangle,
+                                          int first_row, int last_row);
+
 /// A registered coverage algorithm.
 struct AreaAlgorithm {
   std::string_view name;     ///< stable name, e.g. "area_cells"
@@ -26,6 +31,7 @@ struct AreaAlgorithm {
   std::string_view summary;  ///< one line for `raster --list`
   DrawCoverageFunction draw;
   int samples = 0;  ///< samples per pixel; 0 for an algorithm that computes the area itself
+  DrawCoverageRowsFunction draw_rows = nullptr;  ///< optional: the draw restricted to rows
 };
 
 /// Chapter 10's algorithms: the exact area by cells (summed, and composited "over" as a 2-D

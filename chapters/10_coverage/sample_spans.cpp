@@ -6,13 +6,16 @@
 namespace tri::ch10 {
 
 // [listing draw_triangle_samples]
-void draw_triangle_samples(CoverageCanvas& canvas, const Triangle& triangle,
-                           const SamplePattern& pattern) {
+void draw_triangle_samples_rows(CoverageCanvas& canvas, const Triangle& triangle,
+                                const SamplePattern& pattern, int first_row, int last_row) {
   const float weight = 1.0f / static_cast<float>(pattern.offsets.size());
+  const ch05::PixelBox rows{{0, first_row}, {canvas.width() - 1, last_row}};
   for (const glm::ivec2 offset : pattern.offsets) {
     const glm::dvec2 o = glm::dvec2(offset) / double{sample_units};
     const Triangle moved = {{triangle[0] - o, triangle[1] - o, triangle[2] - o}};
-    const auto setup = ch08::setup_triangle(moved, canvas.width(), canvas.height());
+    const auto whole = ch08::setup_triangle(moved, canvas.width(), canvas.height());
+    if (!whole) continue;
+    const auto setup = ch08::clip_setup(*whole, rows);
     if (!setup) continue;
     ch08::SpanWalker walker(*setup);
     for (int y = walker.first_row(); y <= walker.last_row(); ++y, walker.next_row()) {
@@ -22,5 +25,10 @@ void draw_triangle_samples(CoverageCanvas& canvas, const Triangle& triangle,
   }
 }
 // [/listing]
+
+void draw_triangle_samples(CoverageCanvas& canvas, const Triangle& triangle,
+                           const SamplePattern& pattern) {
+  draw_triangle_samples_rows(canvas, triangle, pattern, 0, canvas.height() - 1);
+}
 
 }  // namespace tri::ch10

@@ -17,4 +17,9 @@ namespace tri::ch10 {
 void draw_triangle_samples(CoverageCanvas& canvas, const Triangle& triangle,
                            const SamplePattern& pattern);
 
+/// The same restricted to rows first_row..last_row: each pass's setup clipped to them, so each
+/// pixel of those rows gets the same additions in the same order.
+void draw_triangle_samples_rows(CoverageCanvas& canvas, const Triangle& triangle,
+                                const SamplePattern& pattern, int first_row, int last_row);
+
 }  // namespace tri::ch10
