@@ -66,13 +66,6 @@ CoverageCanvas drawn(const AreaAlgorithm& algorithm, const Triangle& t) {
   return canvas;
 }
 
-// The sampling algorithm's pattern, by its registered name.
-SamplePattern pattern_of(const AreaAlgorithm& algorithm) {
-  const std::string name(algorithm.name.substr(std::string_view("samples_").size()));
-  const int n = std::stoi(name.substr(name.find_last_of("_x") + 1));
-  return name.rfind("grid_", 0) == 0 ? regular_grid(n) : standard_pattern(n);
-}
-
 // How many pixels differ from the truth: the exact area (within 1e-6, the chapter's promise for
 // the area algorithms) or the exact count of the algorithm's own samples (equal).
 int wrong_pixels(const AreaAlgorithm& algorithm, const Triangle& t, const Triangle& truth) {
@@ -82,7 +75,7 @@ int wrong_pixels(const AreaAlgorithm& algorithm, const Triangle& t, const Triang
     for (int x = 0; x < side; ++x) {
       const double expected = algorithm.samples == 0
                                   ? exact_coverage(truth, {x, y}).to_double()
-                                  : snapped_sampled_coverage(t, {x, y}, pattern_of(algorithm));
+                                  : snapped_sampled_coverage(t, {x, y}, algorithm.sample_pattern());
       const double tolerance = algorithm.samples == 0 ? 1e-6 : 0;
       wrong += !(std::abs(canvas.at(x, y) - expected) <= tolerance);
     }
@@ -138,7 +131,7 @@ TEST_CASE("Triangles with vertices at 2^30 get the exact area on the canvas",
           wrong += !(std::abs(flat.at(x, y) - along_row) <= 1e-6);
           wrong += !(std::abs(tall.at(x, y) - along_column) <= 1e-6);
         } else {
-          const SamplePattern pattern = pattern_of(algorithm);
+          const SamplePattern pattern = algorithm.sample_pattern();
           wrong += flat.at(x, y) != snapped_sampled_coverage(sliver, {x, y}, pattern);
           wrong += tall.at(x, y) != snapped_sampled_coverage(standing, {x, y}, pattern);
         }
