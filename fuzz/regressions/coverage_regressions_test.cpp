@@ -15,18 +15,12 @@
 #include "fuzz/coverage_check.hpp"
 #include "fuzz/coverage_seeds.hpp"
 #include "fuzz/rasterizer_input.hpp"
+#include "fuzz/regressions/corpus_files.hpp"
 
 namespace tri::fuzz {
 namespace {
 
 namespace fs = std::filesystem;
-
-const fs::path corpus_folder = TUTORIAL_FUZZ_CORPUS;
-
-std::vector<std::uint8_t> read_bytes(const fs::path& path) {
-  std::ifstream file(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
-}
 
 // What fuzz_coverage checks, applied with every coverage algorithm instead of the one the input's
 // first byte picks, so a seed or finding guards each algorithm.

@@ -16,6 +16,7 @@
 #include "fuzz/rasterizer_check.hpp"
 #include "fuzz/rasterizer_input.hpp"
 #include "fuzz/rasterizer_seeds.hpp"
+#include "fuzz/regressions/corpus_files.hpp"
 #include "fuzz/scene_parser_check.hpp"
 #include "measure/registry.hpp"
 
@@ -23,13 +24,6 @@ namespace tri::fuzz {
 namespace {
 
 namespace fs = std::filesystem;
-
-const fs::path corpus_folder = TUTORIAL_FUZZ_CORPUS;
-
-std::vector<std::uint8_t> read_bytes(const fs::path& path) {
-  std::ifstream file(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
-}
 
 // The files of one target's corpus, sorted so failures are listed in a stable order; a corpus
 // has at least 25 seeds (required).
