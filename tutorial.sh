@@ -97,6 +97,7 @@ fuzz() {
   local failed=0
   run_fuzzer fuzz_scene_parser "$seconds" -dict=fuzz/scene.dict || failed=1
   run_fuzzer fuzz_rasterizers "$seconds" || failed=1
+  run_fuzzer fuzz_coverage "$seconds" || failed=1
   [ "$failed" -eq 0 ] && echo && echo "No findings."
   return "$failed"
 }

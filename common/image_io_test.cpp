@@ -18,6 +18,7 @@
 
 #include "common/canvas.hpp"
 #include "common/image_io.hpp"
+#include "common/random.hpp"
 #include "tests/support/scratch_folder.hpp"
 
 namespace tri {
@@ -85,6 +86,31 @@ DecodedPng decode_png(const std::vector<std::uint8_t>& png) {
   return out;
 }
 
+// CRC-32 of PNG chunks (ISO 3309, as the PNG specification gives it), bit by bit: a check of the
+// container that shares no code with the encoder or with stb_image.
+std::uint32_t png_crc(const std::vector<std::uint8_t>& bytes, std::size_t from, std::size_t to) {
+  std::uint32_t crc = 0xFFFFFFFFu;
+  for (std::size_t i = from; i < to; ++i) {
+    crc ^= bytes[i];
+    for (int bit = 0; bit < 8; ++bit) crc = (crc >> 1) ^ (0xEDB88320u & (0u - (crc & 1u)));
+  }
+  return crc ^ 0xFFFFFFFFu;
+}
+
+// The PNG's chunk types in order, or an empty list when a chunk's length or CRC is wrong.
+std::vector<std::string> checked_chunks(const std::vector<std::uint8_t>& png) {
+  std::vector<std::string> types;
+  std::size_t at = 8;  // after the signature
+  while (at + 12 <= png.size()) {
+    const std::size_t length = big_endian_u32(png, at);
+    if (at + 12 + length > png.size()) return {};
+    if (png_crc(png, at + 4, at + 8 + length) != big_endian_u32(png, at + 8 + length)) return {};
+    types.emplace_back(png.begin() + static_cast<std::ptrdiff_t>(at + 4),
+                       png.begin() + static_cast<std::ptrdiff_t>(at + 8));
+    at += 12 + length;
+  }
+  return at == png.size() ? types : std::vector<std::string>{};
+}
 }  // namespace
 
 TEST_CASE("The counts PGM has a P5 header and lists the top row first", "[common][image_io]") {
@@ -235,6 +261,61 @@ TEST_CASE("write_counts_pgm without write counts fails and writes nothing",
   const fs::path& folder = scratch.path();
   CHECK_THROWS_AS(write_counts_pgm(Canvas(2, 2), folder / "counts.pgm"), std::logic_error);
   CHECK(files_below(folder).empty());
+}
+
+TEST_CASE("Seeded random canvases encode to PNGs and PGMs that decode to their pixels and counts",
+          "[common][image_io][png]") {
+  Random random(31);
+  for (int trial = 0; trial < 60; ++trial) {
+    const int width = trial == 0 ? 300 : random.integer(1, 64);
+    const int height = trial == 1 ? 200 : random.integer(1, 64);
+    CAPTURE(trial, width, height);
+    Canvas canvas(width, height);
+    canvas.enable_write_counts();
+    // Runs of one colour (what a drawing has) and noise (what compresses worst), counts to 300.
+    Color color{};
+    for (int y = 0; y < height; ++y) {
+      for (int x = 0; x < width; ++x) {
+        if (random.integer(0, 7) == 0 || trial % 2 == 1) {
+          color = {static_cast<std::uint8_t>(random.integer(0, 255)),
+                   static_cast<std::uint8_t>(random.integer(0, 255)),
+                   static_cast<std::uint8_t>(random.integer(0, 255)),
+                   static_cast<std::uint8_t>(random.integer(0, 255))};
+        }
+        const int writes = random.integer(0, 3) == 0 ? random.integer(0, 300) : 1;
+        for (int w = 0; w < writes; ++w) canvas.put_pixel(x, y, color);
+      }
+    }
+    const std::vector<std::uint8_t> png = encode_png(canvas);
+    const std::vector<std::string> chunks = checked_chunks(png);
+    REQUIRE(chunks.size() >= 3);
+    CHECK(chunks.front() == "IHDR");
+    CHECK(chunks.back() == "IEND");
+    const DecodedPng decoded = decode_png(png);
+    REQUIRE(decoded.decoded);
+    CHECK(decoded.width == width);
+    CHECK(decoded.height == height);
+    const std::vector<std::uint8_t> pgm = encode_counts_pgm(canvas);
+    const std::string header =
+        "P5\n" + std::to_string(width) + " " + std::to_string(height) + "\n255\n";
+    REQUIRE(pgm.size() == header.size() + static_cast<std::size_t>(width * height));
+    CHECK(std::string(pgm.begin(), pgm.begin() + static_cast<std::ptrdiff_t>(header.size())) ==
+          header);
+    int wrong_pixels = 0, wrong_counts = 0;
+    for (int row = 0; row < height; ++row) {
+      const int y = height - 1 - row;  // top row first
+      for (int x = 0; x < width; ++x) {
+        const Color c = canvas.pixel(x, y);
+        const std::size_t k = static_cast<std::size_t>(row * width + x);
+        wrong_pixels += !std::equal(decoded.rgba.begin() + static_cast<std::ptrdiff_t>(4 * k),
+                                    decoded.rgba.begin() + static_cast<std::ptrdiff_t>(4 * k + 4),
+                                    std::vector<std::uint8_t>{c.r, c.g, c.b, c.a}.begin());
+        wrong_counts += pgm[header.size() + k] != std::min(canvas.write_count(x, y), 255u);
+      }
+    }
+    CHECK(wrong_pixels == 0);
+    CHECK(wrong_counts == 0);
+  }
 }
 
 }  // namespace tri

@@ -6,12 +6,10 @@
 #include <sstream>
 
 #include "chapters/07_exact_coverage/coverage_oracle.hpp"
+#include "fuzz/pixel_tally.hpp"
 
 namespace tri::fuzz {
 namespace {
-
-// How many example pixels a finding lists; the count says how many there are in all.
-constexpr int max_examples = 4;
 
 // A background that differs from the triangle's colour in every channel, so a pixel's colour
 // alone tells whether it was written (algorithms may write rows directly, uncounted).
@@ -19,23 +17,6 @@ Color background_for(Color color) noexcept {
   return {static_cast<std::uint8_t>(255 - color.r), static_cast<std::uint8_t>(255 - color.g),
           static_cast<std::uint8_t>(255 - color.b), 255};
 }
-
-// Collects pixels that fail one property: a count and the first few positions.
-class PixelTally {
- public:
-  void add(int x, int y) {
-    if (count_ < max_examples) examples_ << " (" << x << ", " << y << ")";
-    ++count_;
-  }
-  int count() const noexcept { return count_; }
-  std::string text() const {
-    return std::to_string(count_) + (count_ > max_examples ? ", e.g." : ":") + examples_.str();
-  }
-
- private:
-  int count_ = 0;
-  std::ostringstream examples_;
-};
 
 class Checker {
  public:

@@ -21,8 +21,12 @@ std::string position(std::size_t index) {
 
 }  // namespace
 
-Findings check_scene_contract(const Scene& scene) {
+Findings check_scene_contract(const Scene& scene, const SceneLimits& limits) {
   Findings findings;
+  if (scene.primitives.size() > limits.max_primitives) {
+    findings.push_back("returned " + std::to_string(scene.primitives.size()) +
+                       " primitives, more than the limit " + std::to_string(limits.max_primitives));
+  }
   const auto side_ok = [](int side) { return side >= 1 && side <= max_canvas_side; };
   if (!side_ok(scene.width) || !side_ok(scene.height)) {
     findings.push_back("returned a " + std::to_string(scene.width) + "x" +
@@ -73,22 +77,34 @@ void check_error_message(const std::string& message, Findings& findings) {
 
 }  // namespace
 
-ParseOutcome check_scene_parser(std::string_view text) {
-  ParseOutcome outcome;
+namespace {
+
+// One parse with the given limits: whether a scene came back, and the SceneError message if any.
+bool parse_and_check(std::string_view text, const SceneLimits& limits, std::string& error,
+                     Findings& findings) {
   std::istringstream in{std::string(text)};
   try {
-    const Scene scene = parse_scene(in, fuzz_source_name);
-    outcome.parsed = true;
-    outcome.findings = check_scene_contract(scene);
+    const Scene scene = parse_scene(in, fuzz_source_name, limits);
+    const Findings broken = check_scene_contract(scene, limits);
+    findings.insert(findings.end(), broken.begin(), broken.end());
+    return true;
   } catch (const SceneError& e) {
-    outcome.error = e.what();
-    check_error_message(outcome.error, outcome.findings);
+    error = e.what();
+    check_error_message(error, findings);
   } catch (const std::exception& e) {
-    outcome.findings.push_back(std::string("threw an exception other than SceneError: ") +
-                               e.what());
+    findings.push_back(std::string("threw an exception other than SceneError: ") + e.what());
   } catch (...) {
-    outcome.findings.push_back("threw something that is not a std::exception");
+    findings.push_back("threw something that is not a std::exception");
   }
+  return false;
+}
+
+}  // namespace
+
+ParseOutcome check_scene_parser(std::string_view text) {
+  ParseOutcome outcome;
+  outcome.parsed = parse_and_check(text, SceneLimits{}, outcome.error, outcome.findings);
+  parse_and_check(text, fuzz_scene_limits, outcome.small_limits_error, outcome.findings);
   return outcome;
 }
 

@@ -12,6 +12,7 @@
 
 #include "chapters/01_lines/line_reference.hpp"
 #include "chapters/10_coverage/area_oracle.hpp"
+#include "chapters/10_coverage/coverage_canvas.hpp"
 #include "chapters/10_coverage/sampling.hpp"
 #include "common/scene.hpp"
 #include "measure/area_error.hpp"
@@ -393,6 +394,45 @@ TEST_CASE(
     }
   }
   CHECK(worst <= 1);
+}
+
+TEST_CASE("raster --coverage draws vertices a subnormal distance apart as their grid triangles",
+          "[raster][coverage]") {
+  TempFolder dir;
+  const auto scene = dir.write("s.scene",
+                               "canvas 16 16\n"
+                               "tri 15 0 1e-310 1e-310 0 15\n"
+                               "tri 15 0 0 0 1e-310 15\n"
+                               "tri 0 0 10 5 5e-324 10\n");
+  const std::vector<tri::Triangle> grid = {
+      {{{15, 0}, {0, 0}, {0, 15}}}, {{{15, 0}, {0, 0}, {0, 15}}}, {{{0, 0}, {10, 5}, {0, 10}}}};
+  for (const std::string algorithm : {"area_cells", "area_cells_over"}) {
+    const std::string pgm_path = (dir / (algorithm + ".pgm")).string();
+    const Run run =
+        raster({"--algo", algorithm, "--scene", scene.string(), "--coverage", pgm_path});
+    INFO(algorithm << ": " << run.err);
+    REQUIRE(run.status == 0);
+    const std::string pgm = read_file(pgm_path);
+    const std::string header = "P5\n16 16\n65535\n";
+    REQUIRE(pgm.size() == header.size() + 16 * 16 * 2);
+    int worst = 0;
+    for (int row = 0; row < 16; ++row) {
+      for (int x = 0; x < 16; ++x) {
+        const int y = 15 - row;
+        // Composited over, each triangle's exact coverage e joins the pixel as v + e (1 - v).
+        double truth = 0;
+        for (const tri::Triangle& t : grid) {
+          const double e = tri::ch10::exact_coverage(t, {x, y}).to_double();
+          truth = algorithm == "area_cells" ? truth + e : truth + e * (1 - truth);
+        }
+        const std::size_t k = header.size() + 2 * static_cast<std::size_t>(row * 16 + x);
+        const int value =
+            (static_cast<unsigned char>(pgm[k]) << 8) | static_cast<unsigned char>(pgm[k + 1]);
+        worst = std::max(worst, std::abs(value - tri::ch10::coverage_16(truth)));
+      }
+    }
+    CHECK(worst <= 1);
+  }
 }
 
 TEST_CASE("raster refuses --coverage without a rule-area algorithm and colours with one",

@@ -32,6 +32,12 @@ void draw_samples_rows(CoverageCanvas& canvas, const Triangle& triangle, int fir
   draw_triangle_samples_rows(canvas, triangle, pattern_of(n), first_row, last_row);
 }
 
+// The pattern of draw_samples<pattern_of, n>, for the registry.
+template <SamplePattern (*pattern_of)(int), int n>
+SamplePattern pattern() {
+  return pattern_of(n);
+}
+
 constexpr std::string_view chapter = "10_coverage";
 
 constexpr std::array algorithms = {
@@ -48,56 +54,65 @@ constexpr std::array algorithms = {
                   .summary = "1 sample per pixel (the centre), top-left rule: inside or outside",
                   .draw = draw_samples<regular_grid, 1>,
                   .samples = 1,
-                  .draw_rows = draw_samples_rows<regular_grid, 1>},
+                  .draw_rows = draw_samples_rows<regular_grid, 1>,
+                  .sample_pattern = pattern<regular_grid, 1>},
     AreaAlgorithm{.name = "samples_grid_2x2",
                   .chapter = chapter,
                   .summary = "2x2 regular samples per pixel, each by chapter 08's span walker",
                   .draw = draw_samples<regular_grid, 2>,
                   .samples = 4,
-                  .draw_rows = draw_samples_rows<regular_grid, 2>},
+                  .draw_rows = draw_samples_rows<regular_grid, 2>,
+                  .sample_pattern = pattern<regular_grid, 2>},
     AreaAlgorithm{.name = "samples_grid_4x4",
                   .chapter = chapter,
                   .summary = "4x4 regular samples per pixel, each by chapter 08's span walker",
                   .draw = draw_samples<regular_grid, 4>,
                   .samples = 16,
-                  .draw_rows = draw_samples_rows<regular_grid, 4>},
+                  .draw_rows = draw_samples_rows<regular_grid, 4>,
+                  .sample_pattern = pattern<regular_grid, 4>},
     AreaAlgorithm{.name = "samples_grid_8x8",
                   .chapter = chapter,
                   .summary = "8x8 regular samples per pixel, each by chapter 08's span walker",
                   .draw = draw_samples<regular_grid, 8>,
                   .samples = 64,
-                  .draw_rows = draw_samples_rows<regular_grid, 8>},
+                  .draw_rows = draw_samples_rows<regular_grid, 8>,
+                  .sample_pattern = pattern<regular_grid, 8>},
     AreaAlgorithm{.name = "samples_grid_16x16",
                   .chapter = chapter,
                   .summary = "16x16 regular samples per pixel, each by chapter 08's span walker",
                   .draw = draw_samples<regular_grid, 16>,
                   .samples = 256,
-                  .draw_rows = draw_samples_rows<regular_grid, 16>},
+                  .draw_rows = draw_samples_rows<regular_grid, 16>,
+                  .sample_pattern = pattern<regular_grid, 16>},
     AreaAlgorithm{.name = "samples_standard_2",
                   .chapter = chapter,
                   .summary = "Vulkan's standard 2-sample pattern, each by chapter 08's span walker",
                   .draw = draw_samples<standard_pattern, 2>,
                   .samples = 2,
-                  .draw_rows = draw_samples_rows<standard_pattern, 2>},
+                  .draw_rows = draw_samples_rows<standard_pattern, 2>,
+                  .sample_pattern = pattern<standard_pattern, 2>},
     AreaAlgorithm{.name = "samples_standard_4",
                   .chapter = chapter,
                   .summary = "Vulkan's standard 4-sample pattern, each by chapter 08's span walker",
                   .draw = draw_samples<standard_pattern, 4>,
                   .samples = 4,
-                  .draw_rows = draw_samples_rows<standard_pattern, 4>},
+                  .draw_rows = draw_samples_rows<standard_pattern, 4>,
+                  .sample_pattern = pattern<standard_pattern, 4>},
     AreaAlgorithm{.name = "samples_standard_8",
                   .chapter = chapter,
                   .summary = "Vulkan's standard 8-sample pattern, each by chapter 08's span walker",
                   .draw = draw_samples<standard_pattern, 8>,
                   .samples = 8,
-                  .draw_rows = draw_samples_rows<standard_pattern, 8>},
+                  .draw_rows = draw_samples_rows<standard_pattern, 8>,
+                  .sample_pattern = pattern<standard_pattern, 8>},
     AreaAlgorithm{
         .name = "samples_standard_16",
         .chapter = chapter,
         .summary = "Vulkan's standard 16-sample pattern, each by chapter 08's span walker",
         .draw = draw_samples<standard_pattern, 16>,
         .samples = 16,
-        .draw_rows = draw_samples_rows<standard_pattern, 16>},
+        .draw_rows = draw_samples_rows<standard_pattern, 16>,
+        .sample_pattern = pattern<standard_pattern, 16>},
 };
 
 }  // namespace

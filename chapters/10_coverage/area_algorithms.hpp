@@ -8,6 +8,7 @@
 #include <string_view>
 
 #include "chapters/10_coverage/coverage_canvas.hpp"
+#include "chapters/10_coverage/sampling.hpp"
 #include "common/scene.hpp"
 #include "common/triangle_algorithm.hpp"
 
@@ -32,6 +33,9 @@ struct AreaAlgorithm {
   DrawCoverageFunction draw;
   int samples = 0;  ///< samples per pixel; 0 for an algorithm that computes the area itself
   DrawCoverageRowsFunction draw_rows = nullptr;  ///< optional: the draw restricted to rows
+  /// The pattern a sampling algorithm counts (its samples' fraction inside the triangle is its
+  /// exact answer: snapped_sampled_coverage); null for an algorithm that computes the area.
+  SamplePattern (*sample_pattern)() = nullptr;
 };
 
 /// Chapter 10's algorithms: the exact area by cells (summed, and composited "over" as a 2-D

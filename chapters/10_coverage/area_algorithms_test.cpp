@@ -84,6 +84,8 @@ TEST_CASE("The registered coverage algorithms have rule area, unique names and t
   }
   CHECK(algorithms[0].name == "area_cells");
   CHECK(algorithms[0].samples == 0);
+  CHECK(algorithms[0].sample_pattern == nullptr);
+  CHECK(algorithms[1].sample_pattern == nullptr);
   CHECK(algorithms[4].name == "samples_grid_4x4");
   CHECK(algorithms[4].samples == 16);
   CHECK(algorithms[10].name == "samples_standard_16");
@@ -104,6 +106,8 @@ TEST_CASE("Each sampling algorithm draws a scene as its pattern sampled pixel by
       if (p.name == pattern_name) pattern = p;
     }
     REQUIRE(pattern.offsets.size() == static_cast<std::size_t>(algorithm.samples));
+    REQUIRE(algorithm.sample_pattern != nullptr);
+    CHECK(algorithm.sample_pattern().offsets == pattern.offsets);
     CoverageCanvas canvas(16, 12);
     CHECK(draw_coverage(algorithm, canvas, scene) == 0);
     int mismatches = 0;

@@ -11,6 +11,8 @@
 #include <xmmintrin.h>
 #endif
 
+#include "common/scene.hpp"
+
 namespace tri::ch10 {
 namespace {
 
@@ -174,14 +176,25 @@ struct Band {
   int left_first, left_last, right_first, right_last;  // the columns each side crosses
 };
 
-// One edge walked upwards from (x0, y0): its x at a height, and both slopes from one division
-// (dy_dx infinite for a vertical edge; a horizontal edge's are never used).
+// One edge walked upwards from (x0, y0): its x at a height, and its slopes, both from one division
+// while 1 / (dx dy) is finite; where dx dy is 0 or subnormal, one division each. dy/dx is infinite
+// only for an edge too steep to cross a column's side (|dx| < 2^-1024 |dy|), where it is unused.
+// dx/dy overflows only for an edge that rises less than 2^-1024 |dx|, and a quotient that large
+// would make x0 + 0 * slope NaN at the bottom: clamped to the largest double, the slope keeps every
+// x between the edge's ends, and so thin a band adds less than 2^-960 whatever its x.
 struct RisingEdge {
   double x0, y0, dx_dy, dy_dx;
   RisingEdge(glm::dvec2 a, glm::dvec2 b) : x0(a.x), y0(a.y) {
     const double dx = b.x - a.x, dy = b.y - a.y, inverse = 1 / (dx * dy);
-    dx_dy = dx == 0 ? 0 : dx * dx * inverse;
-    dy_dx = dx == 0 ? std::numeric_limits<double>::infinity() : dy * dy * inverse;
+    if (std::isfinite(inverse)) [[likely]] {
+      dx_dy = dx * dx * inverse;
+      dy_dx = dy * dy * inverse;
+    } else {
+      dx_dy = dx / dy;
+      dy_dx = dy / dx;
+    }
+    constexpr double largest = std::numeric_limits<double>::max();
+    dx_dy = std::clamp(dx_dy, -largest, largest);
   }
   double x_at(double y) const { return x0 + (y - y0) * dx_dy; }
 };
@@ -514,16 +527,26 @@ void add_rows_over(CoverageCanvas& canvas, const ByHeight& v, RowCells& cells, i
 }
 // [/listing]
 
-// Twice the signed area: zero for a degenerate triangle, not finite for a non-finite one.
+// Twice the signed area: zero for a degenerate triangle.
 double doubled_area(const Triangle& t) {
   return (t[1].x - t[0].x) * (t[2].y - t[0].y) - (t[2].x - t[0].x) * (t[1].y - t[0].y);
+}
+
+// Nothing to draw: a vertex NaN, infinite or beyond ±2^30, as validate_triangle refuses (within
+// ±2^30 every row and column fits an int), or zero area.
+bool adds_nothing(const Triangle& t) {
+  for (const glm::dvec2& v : t) {  // false for NaN too
+    if (!(std::abs(v.x) <= max_scene_coordinate && std::abs(v.y) <= max_scene_coordinate)) {
+      return true;
+    }
+  }
+  return doubled_area(t) == 0;
 }
 
 }  // namespace
 
 void add_edges_in_row(RowCells& cells, const Triangle& triangle, int row) {
-  const double doubled = doubled_area(triangle);
-  if (!std::isfinite(doubled) || doubled == 0) return;
+  if (adds_nothing(triangle)) return;
   const ByHeight v = sorted_by_height(triangle);
   if (row < column_of(v.low.y) || row - 0.5 >= v.high.y) return;  // no band of the row inside
   walk_bands(v, row, row, [&](int, const Band& band, Part) { add_band(cells, band); });
@@ -533,11 +556,10 @@ namespace {
 
 // [listing draw_triangle_area]
 // Calls add_rows(sorted, first_row, last_row) with the triangle's vertices sorted by height and
-// the canvas rows it reaches, if any; a zero-area or non-finite triangle reaches none.
+// the canvas rows it reaches, if any; a triangle that adds nothing reaches none.
 template <class AddRows>
 void with_rows(const CoverageCanvas& canvas, const Triangle& triangle, AddRows add_rows) {
-  const double doubled = doubled_area(triangle);
-  if (!std::isfinite(doubled) || doubled == 0) return;
+  if (adds_nothing(triangle)) return;
   const ByHeight sorted = sorted_by_height(triangle);
   const int first_row = std::max(0, column_of(sorted.low.y));
   int last_row = column_of(sorted.high.y);

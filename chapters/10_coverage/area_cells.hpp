@@ -77,8 +77,9 @@ void add_edges_in_row(RowCells& cells, const Triangle& triangle, int row);
 /// each side (in floats: within 1e-6 of step 1's exact area in the tests); composited over, the
 /// band is written as the running cover becomes known, and the row's cells serve where a piece
 /// crosses the canvas's left or right edge, where the sides share cells, and in the row of the
-/// middle vertex (within about 1e-12 before the canvas's float rounding). A zero-area or non-finite
-/// triangle adds nothing.
+/// middle vertex (within about 1e-12 before the canvas's float rounding). Right for every vertex
+/// within ±2^30, subnormal differences included; a zero-area triangle, or one that
+/// validate_triangle refuses (NaN, infinite, beyond ±2^30), adds nothing.
 void draw_triangle_area(CoverageCanvas& canvas, const Triangle& triangle, RowCells& cells,
                         Blend blend = Blend::sum);
 

@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "chapters/07_exact_coverage/coverage_oracle.hpp"
+#include "chapters/07_exact_coverage/fixed_point.hpp"
 #include "chapters/10_coverage/area_oracle.hpp"
 
 namespace tri::ch10 {
@@ -61,9 +62,20 @@ SamplePattern standard_pattern(int count) {
 // [listing sampled_coverage]
 double sampled_coverage(const Triangle& triangle, glm::ivec2 pixel, const SamplePattern& pattern) {
   require_on_oracle_grid(triangle);
-  // Scaled by 32 the samples are whole points, where chapter 07's oracle decides them exactly.
-  const Triangle scaled = {{triangle[0] * double{sample_units}, triangle[1] * double{sample_units},
-                            triangle[2] * double{sample_units}}};
+  return snapped_sampled_coverage(triangle, pixel, pattern);  // snapping leaves it as it is
+}
+
+double snapped_sampled_coverage(const Triangle& triangle, glm::ivec2 pixel,
+                                const SamplePattern& pattern) {
+  // Snapped and scaled by 32, the samples are whole points, where chapter 07's oracle decides
+  // them exactly (a vertex at 2^30 becomes a multiple of 1/8 near 2^35: exact in a double).
+  Triangle scaled;
+  for (std::size_t k = 0; k < 3; ++k) {
+    const ch07::SubpixelPoint snapped = ch07::snap_to_subpixel(triangle[k], oracle_subpixel_bits);
+    constexpr double to_samples = double{sample_units} / (1 << oracle_subpixel_bits);
+    scaled[k] =
+        glm::dvec2(static_cast<double>(snapped.x), static_cast<double>(snapped.y)) * to_samples;
+  }
   int inside = 0;
   for (const glm::ivec2 offset : pattern.offsets) {
     inside += ch07::oracle_covers(scaled, pixel * sample_units + offset) ? 1 : 0;

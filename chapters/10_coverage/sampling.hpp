@@ -35,4 +35,9 @@ SamplePattern standard_pattern(int count);
 /// the 1/256 grid within ±2^15 pixels.
 double sampled_coverage(const Triangle& triangle, glm::ivec2 pixel, const SamplePattern& pattern);
 
+/// The same fraction for a triangle anywhere within ±2^30, its vertices first snapped to the
+/// 1/256 grid as chapter 08 snaps them: the value draw_triangle_samples gives, for any input.
+double snapped_sampled_coverage(const Triangle& triangle, glm::ivec2 pixel,
+                                const SamplePattern& pattern);
+
 }  // namespace tri::ch10

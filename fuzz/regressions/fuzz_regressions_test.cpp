@@ -16,6 +16,7 @@
 #include "fuzz/rasterizer_check.hpp"
 #include "fuzz/rasterizer_input.hpp"
 #include "fuzz/rasterizer_seeds.hpp"
+#include "fuzz/regressions/corpus_files.hpp"
 #include "fuzz/scene_parser_check.hpp"
 #include "measure/registry.hpp"
 
@@ -23,13 +24,6 @@ namespace tri::fuzz {
 namespace {
 
 namespace fs = std::filesystem;
-
-const fs::path corpus_folder = TUTORIAL_FUZZ_CORPUS;
-
-std::vector<std::uint8_t> read_bytes(const fs::path& path) {
-  std::ifstream file(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
-}
 
 // The files of one target's corpus, sorted so failures are listed in a stable order; a corpus
 // has at least 25 seeds (required).
@@ -93,6 +87,15 @@ TEST_CASE("The scene seeds hit every kind of parser error", "[fuzz][corpus]") {
     INFO("error kind: " << kind);
     CHECK(messages.find(kind) != std::string::npos);
   }
+}
+
+TEST_CASE("The scene seeds reach the parser's limits through the fuzz limits", "[fuzz][corpus]") {
+  std::string messages;
+  for (const fs::path& file : corpus_files("fuzz_scene_parser")) {
+    messages += check_scene_parser(as_text(read_bytes(file))).small_limits_error + "\n";
+  }
+  CHECK_THAT(messages, Catch::Contains("more than 8 primitives, the limit of a scene"));
+  CHECK_THAT(messages, Catch::Contains("line longer than 64 bytes"));
 }
 
 TEST_CASE("Every rasterizer seed keeps the checks with every registered algorithm",
@@ -286,6 +289,17 @@ TEST_CASE("A refused triangle never reaches the algorithm, so nothing is reporte
   CHECK(findings_of("outside", CoverageRule::approximate, broken::writes_outside,
                     {{{nan, 1}, {6, 1}, {1, 6}}})
             .empty());
+}
+
+TEST_CASE("The scene contract check reports more primitives than the limits allow",
+          "[fuzz][checks]") {
+  Scene scene;
+  scene.width = scene.height = 8;
+  for (int i = 0; i < 9; ++i) scene.primitives.emplace_back(SceneLine{{{{0, i}, {7, i}}}});
+  CHECK(check_scene_contract(scene) == Findings{});
+  const Findings findings = check_scene_contract(scene, fuzz_scene_limits);
+  REQUIRE(findings.size() == 1);
+  CHECK_THAT(findings[0], Catch::Contains("9 primitives, more than the limit 8"));
 }
 
 TEST_CASE("The scene contract check reports a bad canvas and coordinates beyond the limits",
