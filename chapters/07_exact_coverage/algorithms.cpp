@@ -14,7 +14,8 @@ std::span<const TriangleAlgorithm> triangle_algorithms() {
        .rule = CoverageRule::top_left,
        .summary = "the truth: every pixel of the bounding box tested on its own with exact "
                   "orientation signs",
-       .draw = draw_triangle_oracle},
+       .draw = draw_triangle_oracle,
+       .draw_rows = draw_triangle_oracle_rows},
       {.name = "fixed_point_8",
        .chapter = "07_exact_coverage",
        .rule = CoverageRule::top_left,

@@ -46,6 +46,11 @@ bool oracle_covers(const Triangle& triangle, glm::ivec2 p) noexcept {
 // [/listing]
 
 void draw_triangle_oracle(Canvas& canvas, const Triangle& triangle, Color color) {
+  draw_triangle_oracle_rows(canvas, triangle, color, 0, canvas.height() - 1);
+}
+
+void draw_triangle_oracle_rows(Canvas& canvas, const Triangle& triangle, Color color, int first_row,
+                               int last_row) {
   if (exact_orientation(triangle[0], triangle[1], triangle[2]) == 0) return;
   const Triangle t = counter_clockwise(triangle);
   // Candidate pixels: centres within the vertices' extent, clipped to the canvas (in doubles, so
@@ -54,8 +59,8 @@ void draw_triangle_oracle(Canvas& canvas, const Triangle& triangle, Color color)
   const auto high = [](double a, double b, double c) { return std::floor(std::max({a, b, c})); };
   const double x0 = std::max(0.0, low(t[0].x, t[1].x, t[2].x));
   const double x1 = std::min(canvas.width() - 1.0, high(t[0].x, t[1].x, t[2].x));
-  const double y0 = std::max(0.0, low(t[0].y, t[1].y, t[2].y));
-  const double y1 = std::min(canvas.height() - 1.0, high(t[0].y, t[1].y, t[2].y));
+  const double y0 = std::max(static_cast<double>(first_row), low(t[0].y, t[1].y, t[2].y));
+  const double y1 = std::min(static_cast<double>(last_row), high(t[0].y, t[1].y, t[2].y));
   if (x0 > x1 || y0 > y1) return;
   for (int y = static_cast<int>(y0); y <= static_cast<int>(y1); ++y) {
     for (int x = static_cast<int>(x0); x <= static_cast<int>(x1); ++x) {

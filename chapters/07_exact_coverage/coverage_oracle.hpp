@@ -30,4 +30,8 @@ bool oracle_covers(const Triangle& triangle, glm::ivec2 p) noexcept;
 /// with exact arithmetic (never incrementally). Slow, and right.
 void draw_triangle_oracle(Canvas& canvas, const Triangle& triangle, Color color);
 
+/// The same restricted to rows first_row..last_row (the registry's draw_rows entry).
+void draw_triangle_oracle_rows(Canvas& canvas, const Triangle& triangle, Color color, int first_row,
+                               int last_row);
+
 }  // namespace tri::ch07
