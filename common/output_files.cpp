@@ -427,8 +427,8 @@ void OutputTransaction::write_descriptors() {
       standard_output_->flush();
       if (!*standard_output_) {
         const int error = errno;
-        throw StandardOutputError(std::string("cannot write the results to standard output: ") +
-                                  (error != 0 ? std::strerror(error) : "write failed"));
+        throw OutputError(std::string("cannot write the results to standard output: ") +
+                          (error != 0 ? std::strerror(error) : "write failed"));
       }
     } else {
       write_all(output.descriptor, output.bytes, output.target);

@@ -45,13 +45,6 @@ class OutputError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-/// A write to standard output that failed: the run's one error line says so, and the program's
-/// end (run_command_line) does not say it again.
-class StandardOutputError : public OutputError {
- public:
-  using OutputError::OutputError;
-};
-
 /// The output name that means standard output.
 inline constexpr std::string_view standard_output_name = "-";
 
