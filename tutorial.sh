@@ -10,7 +10,7 @@ cd "$(dirname "${BASH_SOURCE[0]}")"
 # docs site (Doxygen, and Python 3 for its Markdown filter).
 PACKAGES=(g++ make cmake libglm-dev libstb-dev catch2 doxygen python3)
 # The run command also builds the docs site's playground: the chapters' C++ compiled to
-# WebAssembly (docs/playground/README.md).
+# WebAssembly (docs/playground.md).
 DOCS_PACKAGES=(emscripten)
 # The fuzzing run builds with clang and libFuzzer instead, and without the docs.
 FUZZ_PACKAGES=(clang libclang-rt-14-dev make cmake libglm-dev libstb-dev catch2)

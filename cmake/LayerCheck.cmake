@@ -1,13 +1,13 @@
 # The layers of docs/DESIGN.md section 2, checked: tutorial_record_layer_links() writes, at
 # configure time, what each chapter target links; the test "conventions/every chapter depends
-# only on common and earlier chapters" runs check_layers.cmake on that file and on the sources.
+# only on earlier layers" runs check_layers.cmake on that file and on the sources.
 
 # tutorial_record_layer_links(<file>): one line "target: linked;linked;..." per chapter target
 # (the library chNN_*, the executable NN_* and the test executable chNN_*_tests) of the
-# algorithm chapters: 01 to 08 and 10 (chapter 09, the report, sits above measure/).
+# algorithm chapters, 01 to 09 (chapter 10, the report, sits above measure/).
 function(tutorial_record_layer_links file)
   set(lines "")
-  foreach(number 01 02 03 04 05 06 07 08 10)
+  foreach(number 01 02 03 04 05 06 07 08 09)
     file(GLOB folder LIST_DIRECTORIES true "${PROJECT_SOURCE_DIR}/chapters/${number}_*")
     get_filename_component(name "${folder}" NAME)
     foreach(target ch${name} ${name} ch${name}_tests)

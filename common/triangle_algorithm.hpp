@@ -26,7 +26,7 @@ enum class CoverageRule {
   top_left,     ///< exact coverage: centres strictly inside, ties by the top-left rule
   inclusive,    ///< centres on an edge are always covered (the articles' methods)
   approximate,  ///< no exactness claimed
-  area,         ///< a fraction of each pixel, not a yes or no (chapter 10's coverage algorithms)
+  area,         ///< a fraction of each pixel, not a yes or no (chapter 09's coverage algorithms)
 };
 
 /// The name `raster --list` prints for a rule: "top-left", "inclusive", "approximate" or "area".

@@ -11,14 +11,14 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
-#include "chapters/10_coverage/area_oracle.hpp"
-#include "chapters/10_coverage/sampling.hpp"
+#include "chapters/09_anti_aliasing/area_oracle.hpp"
+#include "chapters/09_anti_aliasing/sampling.hpp"
 #include "fuzz/pixel_tally.hpp"
 
 namespace tri::fuzz {
 namespace {
 
-constexpr double tolerance = 1e-6;      // chapter 10's promise for the exact-area algorithms
+constexpr double tolerance = 1e-6;      // chapter 09's promise for the exact-area algorithms
 constexpr double oracle_reach = 32768;  // require_on_oracle_grid's ±2^15
 
 // The triangle moved to the nearest points of the 1/256 grid, if every vertex is within
@@ -48,15 +48,15 @@ double perimeter(const Triangle& t) {
 
 class Checker {
  public:
-  Checker(const ch10::AreaAlgorithm& algorithm, const RasterizerInput& input, Findings& findings)
+  Checker(const ch09::AreaAlgorithm& algorithm, const RasterizerInput& input, Findings& findings)
       : algorithm_(algorithm), input_(input), findings_(findings) {}
 
   // Draws triangle `index` alone, checks it, and returns its canvas.
-  ch10::CoverageCanvas check_one_triangle(std::size_t index, std::size_t& refused) {
+  ch09::CoverageCanvas check_one_triangle(std::size_t index, std::size_t& refused) {
     const SceneTriangle& t = input_.triangles[index];
-    ch10::CoverageCanvas canvas(input_.width, input_.height);
+    ch09::CoverageCanvas canvas(input_.width, input_.height);
     const bool drawn = validate_triangle(t.vertices) == DrawResult::drawn;
-    const std::size_t refusals = ch10::draw_coverage(algorithm_, canvas, {&t, 1});
+    const std::size_t refusals = ch09::draw_coverage(algorithm_, canvas, {&t, 1});
     refused += refusals;
     const std::string where =
         context() + ", triangle " + std::to_string(index) + " (" + scene_line(t) + ")";
@@ -82,10 +82,10 @@ class Checker {
   }
 
   // All triangles at once against the triangles drawn alone, summed or composited in order.
-  void check_together(const std::vector<ch10::CoverageCanvas>& alone, std::size_t refused) {
-    ch10::CoverageCanvas together(input_.width, input_.height);
+  void check_together(const std::vector<ch09::CoverageCanvas>& alone, std::size_t refused) {
+    ch09::CoverageCanvas together(input_.width, input_.height);
     const std::size_t together_refused =
-        ch10::draw_coverage(algorithm_, together, input_.triangles);
+        ch09::draw_coverage(algorithm_, together, input_.triangles);
     const std::string where = context() + ", draw_coverage with " +
                               std::to_string(input_.triangles.size()) + " triangles";
     if (together_refused != refused) {
@@ -99,7 +99,7 @@ class Checker {
     for (int y = 0; y < together.height(); ++y) {
       for (int x = 0; x < together.width(); ++x) {
         float expected = 0;
-        for (const ch10::CoverageCanvas& canvas : alone) {
+        for (const ch09::CoverageCanvas& canvas : alone) {
           const float c = canvas.at(x, y);
           expected = over ? expected + c * (1.0f - expected) : expected + c;
         }
@@ -119,7 +119,7 @@ class Checker {
   }
 
   // Exact area (where the oracle knows it) or the exact count of the algorithm's own samples.
-  void compare_with_truth(const ch10::CoverageCanvas& canvas, const Triangle& t,
+  void compare_with_truth(const ch09::CoverageCanvas& canvas, const Triangle& t,
                           const std::string& where) {
     PixelTally wrong;
     // Beyond a pixel of the triangle's box the truth is 0: the exact answers are asked only near.
@@ -132,11 +132,11 @@ class Checker {
       return x >= low.x - 1 && x <= high.x + 1 && y >= low.y - 1 && y <= high.y + 1;
     };
     if (algorithm_.sample_pattern != nullptr) {
-      const ch10::SamplePattern pattern = algorithm_.sample_pattern();
+      const ch09::SamplePattern pattern = algorithm_.sample_pattern();
       for (int y = 0; y < canvas.height(); ++y) {
         for (int x = 0; x < canvas.width(); ++x) {
           const double truth =
-              near(x, y) ? ch10::snapped_sampled_coverage(t, {x, y}, pattern) : 0.0;
+              near(x, y) ? ch09::snapped_sampled_coverage(t, {x, y}, pattern) : 0.0;
           if (canvas.at(x, y) != truth) wrong.add(x, y);
         }
       }
@@ -148,7 +148,7 @@ class Checker {
         for (int y = 0; y < canvas.height(); ++y) {
           for (int x = 0; x < canvas.width(); ++x) {
             const double exact =
-                near(x, y) ? ch10::exact_coverage(grid->vertices, {x, y}).to_double() : 0.0;
+                near(x, y) ? ch09::exact_coverage(grid->vertices, {x, y}).to_double() : 0.0;
             if (!(std::abs(canvas.at(x, y) - exact) <= allowed)) wrong.add(x, y);
           }
         }
@@ -164,7 +164,7 @@ class Checker {
     }
   }
 
-  const ch10::AreaAlgorithm& algorithm_;
+  const ch09::AreaAlgorithm& algorithm_;
   const RasterizerInput& input_;
   Findings& findings_;
 };
@@ -177,10 +177,10 @@ RasterizerInput coverage_input(RasterizerInput input) {
   return input;
 }
 
-Findings check_coverage(const ch10::AreaAlgorithm& algorithm, const RasterizerInput& input) {
+Findings check_coverage(const ch09::AreaAlgorithm& algorithm, const RasterizerInput& input) {
   Findings findings;
   Checker checker(algorithm, input, findings);
-  std::vector<ch10::CoverageCanvas> alone;
+  std::vector<ch09::CoverageCanvas> alone;
   std::size_t refused = 0;
   for (std::size_t i = 0; i < input.triangles.size(); ++i) {
     alone.push_back(checker.check_one_triangle(i, refused));

@@ -1,10 +1,10 @@
 /// @file
-/// The properties fuzz_coverage checks on every input: chapter 10's coverage algorithms against
+/// The properties fuzz_coverage checks on every input: chapter 09's coverage algorithms against
 /// the exact area (step 1's rational oracle) and against the exact count of their own samples.
 /// The regression tests apply the same checks to the seed corpus and to past findings.
 #pragma once
 
-#include "chapters/10_coverage/area_algorithms.hpp"
+#include "chapters/09_anti_aliasing/area_algorithms.hpp"
 #include "fuzz/rasterizer_check.hpp"
 #include "fuzz/rasterizer_input.hpp"
 
@@ -32,6 +32,6 @@ RasterizerInput coverage_input(RasterizerInput input);
 /// Then all triangles at once: summed, the picture is the sum of the triangles drawn alone (to
 /// 1e-6 per triangle; exactly for samples), composited "over", their composition in order; the
 /// same number of triangles is refused.
-Findings check_coverage(const ch10::AreaAlgorithm& algorithm, const RasterizerInput& input);
+Findings check_coverage(const ch09::AreaAlgorithm& algorithm, const RasterizerInput& input);
 
 }  // namespace tri::fuzz

@@ -5,7 +5,7 @@
 #include <cstdlib>
 #include <stdexcept>
 
-#include "chapters/10_coverage/area_oracle.hpp"
+#include "chapters/09_anti_aliasing/area_oracle.hpp"
 
 namespace tri {
 namespace {
@@ -47,7 +47,7 @@ struct Differences {
 /// Draws one triangle alone on the canvas (empty before and after), calling visit(k, value) for
 /// the k-th pixel of its region, row by row from the bottom.
 template <class Visit>
-void draw_alone(const CoverageDraw& draw, ch10::CoverageCanvas& canvas, const SceneTriangle& t,
+void draw_alone(const CoverageDraw& draw, ch09::CoverageCanvas& canvas, const SceneTriangle& t,
                 const AreaTruth::TriangleTruth& r, Visit&& visit) {
   draw(canvas, std::span(&t, 1));
   std::size_t k = 0;
@@ -59,16 +59,16 @@ void draw_alone(const CoverageDraw& draw, ch10::CoverageCanvas& canvas, const Sc
   }
 }
 
-CoverageDraw draw_with(const ch10::AreaAlgorithm& algorithm) {
-  return [&algorithm](ch10::CoverageCanvas& canvas, std::span<const SceneTriangle> triangles) {
-    ch10::draw_coverage(algorithm, canvas, triangles);
+CoverageDraw draw_with(const ch09::AreaAlgorithm& algorithm) {
+  return [&algorithm](ch09::CoverageCanvas& canvas, std::span<const SceneTriangle> triangles) {
+    ch09::draw_coverage(algorithm, canvas, triangles);
   };
 }
 
 bool on_oracle_grid(const Triangle& t) {
   if (validate_triangle(t) != DrawResult::drawn) return false;
   try {
-    ch10::require_on_oracle_grid(t);
+    ch09::require_on_oracle_grid(t);
     return true;
   } catch (const std::invalid_argument&) {
     return false;
@@ -95,14 +95,14 @@ AreaTruth::AreaTruth(const Scene& scene)
           region_width * static_cast<std::size_t>(truth.last_y - truth.first_y + 1);
       truth.coverage.assign(size, 0.0);
       truth.units.assign(size, 0);
-      for (const ch10::PixelCoverage& p : ch10::exact_coverages(t->vertices)) {
+      for (const ch09::PixelCoverage& p : ch09::exact_coverages(t->vertices)) {
         if (p.pixel.x < truth.first_x || p.pixel.x > truth.last_x || p.pixel.y < truth.first_y ||
             p.pixel.y > truth.last_y)
           continue;
         const std::size_t k = static_cast<std::size_t>(p.pixel.y - truth.first_y) * region_width +
                               static_cast<std::size_t>(p.pixel.x - truth.first_x);
         truth.coverage[k] = p.coverage.to_double();
-        truth.units[k] = ch10::coverage_16(p.coverage);
+        truth.units[k] = ch09::coverage_16(p.coverage);
         summed_[static_cast<std::size_t>(p.pixel.y) * static_cast<std::size_t>(width_) +
                 static_cast<std::size_t>(p.pixel.x)] += truth.coverage[k];
       }
@@ -116,7 +116,7 @@ AreaErrorReport measure_area_error(const CoverageDraw& draw, const AreaTruth& tr
   AreaErrorReport report;
   report.triangles = truth.triangles().size();
   report.rejected = truth.rejected();
-  ch10::CoverageCanvas canvas(truth.width(), truth.height());
+  ch09::CoverageCanvas canvas(truth.width(), truth.height());
   Differences each;
   for (std::size_t i = 0; i < truth.triangles().size(); ++i) {
     const AreaTruth::TriangleTruth& t = truth.truths()[i];
@@ -125,7 +125,7 @@ AreaErrorReport measure_area_error(const CoverageDraw& draw, const AreaTruth& tr
       if (estimate == 0 && t.coverage[k] == 0) return;
       each.add(std::abs(estimate - t.coverage[k]));
       report.max_units =
-          std::max(report.max_units, std::abs(ch10::coverage_16(estimate) - int{t.units[k]}));
+          std::max(report.max_units, std::abs(ch09::coverage_16(estimate) - int{t.units[k]}));
     });
   }
   report.pixels = each.count;
@@ -143,7 +143,7 @@ AreaErrorReport measure_area_error(const CoverageDraw& draw, const AreaTruth& tr
       if (estimate == 0 && exact == 0) continue;
       composed.add(std::abs(estimate - exact));
       report.composed_off_pixels +=
-          std::abs(ch10::coverage_16(estimate) - ch10::coverage_16(exact)) > 1 ? 1 : 0;
+          std::abs(ch09::coverage_16(estimate) - ch09::coverage_16(exact)) > 1 ? 1 : 0;
     }
   }
   report.composed_pixels = composed.count;
@@ -156,13 +156,13 @@ AreaErrorReport measure_area_error(const CoverageDraw& draw, const Scene& scene)
   return measure_area_error(draw, AreaTruth(scene));
 }
 
-AreaErrorReport measure_area_error(const ch10::AreaAlgorithm& algorithm, const Scene& scene) {
+AreaErrorReport measure_area_error(const ch09::AreaAlgorithm& algorithm, const Scene& scene) {
   return measure_area_error(draw_with(algorithm), scene);
 }
 
-std::uint64_t touched_pixels(const ch10::AreaAlgorithm& algorithm, int width, int height,
+std::uint64_t touched_pixels(const ch09::AreaAlgorithm& algorithm, int width, int height,
                              std::span<const SceneTriangle> triangles) {
-  ch10::CoverageCanvas canvas(width, height);
+  ch09::CoverageCanvas canvas(width, height);
   const CoverageDraw draw = draw_with(algorithm);
   std::uint64_t touched = 0;
   for (const SceneTriangle& t : triangles) {

@@ -1,5 +1,5 @@
 /// @file
-/// How far a coverage algorithm (rule `area`) is from the exact area of chapter 10's oracle, per
+/// How far a coverage algorithm (rule `area`) is from the exact area of chapter 09's oracle, per
 /// triangle and for the composed scene (@ref design_error "docs/DESIGN.md section 6").
 #pragma once
 
@@ -8,8 +8,8 @@
 #include <span>
 #include <vector>
 
-#include "chapters/10_coverage/area_algorithms.hpp"
-#include "chapters/10_coverage/coverage_canvas.hpp"
+#include "chapters/09_anti_aliasing/area_algorithms.hpp"
+#include "chapters/09_anti_aliasing/coverage_canvas.hpp"
 #include "common/scene.hpp"
 
 namespace tri {
@@ -17,7 +17,7 @@ namespace tri {
 /// Adds the coverage of the triangles to the canvas, as an area algorithm does: the one thing the
 /// error needs, so a rasterizer outside the registry (AGG, cairo, pixman) can be measured too.
 using CoverageDraw =
-    std::function<void(ch10::CoverageCanvas& canvas, std::span<const SceneTriangle> triangles)>;
+    std::function<void(ch09::CoverageCanvas& canvas, std::span<const SceneTriangle> triangles)>;
 
 /// The error of one coverage algorithm on one scene.
 struct AreaErrorReport {
@@ -38,7 +38,7 @@ struct AreaErrorReport {
   std::uint64_t composed_off_pixels = 0;  ///< pixels more than one 16-bit unit off
 };
 
-/// The exact coverages of a scene's triangles (chapter 10's oracle), computed once so that many
+/// The exact coverages of a scene's triangles (chapter 09's oracle), computed once so that many
 /// algorithms can be compared with them. Triangles the oracle cannot take exactly (off the 1/256
 /// grid, beyond ±32768 pixels, non-finite) are left out and counted.
 class AreaTruth {
@@ -77,12 +77,12 @@ AreaErrorReport measure_area_error(const CoverageDraw& draw, const AreaTruth& tr
 /// The same on a scene, computing its truth first.
 AreaErrorReport measure_area_error(const CoverageDraw& draw, const Scene& scene);
 
-/// The same for a registered coverage algorithm (drawn through ch10::draw_coverage).
-AreaErrorReport measure_area_error(const ch10::AreaAlgorithm& algorithm, const Scene& scene);
+/// The same for a registered coverage algorithm (drawn through ch09::draw_coverage).
+AreaErrorReport measure_area_error(const ch09::AreaAlgorithm& algorithm, const Scene& scene);
 
 /// How many pixels one draw of the triangles touches, each triangle's pixels counted on their own
 /// (a pixel two triangles reach counts 2): the pixels of `raster --bench`'s rate for rule area.
-std::uint64_t touched_pixels(const ch10::AreaAlgorithm& algorithm, int width, int height,
+std::uint64_t touched_pixels(const ch09::AreaAlgorithm& algorithm, int width, int height,
                              std::span<const SceneTriangle> triangles);
 
 }  // namespace tri

@@ -21,8 +21,8 @@ std::vector<TriangleAlgorithm> registered_algorithms() {
   return all;
 }
 
-std::vector<ch10::AreaAlgorithm> registered_area_algorithms() {
-  const auto chapter = ch10::area_algorithms();
+std::vector<ch09::AreaAlgorithm> registered_area_algorithms() {
+  const auto chapter = ch09::area_algorithms();
   return {chapter.begin(), chapter.end()};
 }
 
@@ -42,7 +42,7 @@ const TriangleAlgorithm* find_algorithm(const std::vector<TriangleAlgorithm>& al
   return find_named(algorithms, name);
 }
 
-const ch10::AreaAlgorithm* find_area_algorithm(const std::vector<ch10::AreaAlgorithm>& algorithms,
+const ch09::AreaAlgorithm* find_area_algorithm(const std::vector<ch09::AreaAlgorithm>& algorithms,
                                                std::string_view name) {
   return find_named(algorithms, name);
 }

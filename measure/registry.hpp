@@ -6,7 +6,7 @@
 #include <string_view>
 #include <vector>
 
-#include "chapters/10_coverage/area_algorithms.hpp"
+#include "chapters/09_anti_aliasing/area_algorithms.hpp"
 #include "common/triangle_algorithm.hpp"
 
 namespace tri {
@@ -21,10 +21,10 @@ const TriangleAlgorithm* find_algorithm(const std::vector<TriangleAlgorithm>& al
 
 /// All registered coverage algorithms (rule `area`), in chapter order: they draw onto a coverage
 /// canvas, not a colour one, so they are listed apart from the triangle algorithms.
-std::vector<ch10::AreaAlgorithm> registered_area_algorithms();
+std::vector<ch09::AreaAlgorithm> registered_area_algorithms();
 
 /// The coverage algorithm with this name, or nullptr.
-const ch10::AreaAlgorithm* find_area_algorithm(const std::vector<ch10::AreaAlgorithm>& algorithms,
+const ch09::AreaAlgorithm* find_area_algorithm(const std::vector<ch09::AreaAlgorithm>& algorithms,
                                                std::string_view name);
 
 }  // namespace tri

@@ -158,8 +158,8 @@ RenderStats render_scene(const Scene& scene, const TriangleAlgorithm* algorithm,
   return render_scene(scene, &drawer, canvas, on_progress);
 }
 
-std::size_t render_coverage(const Scene& scene, const ch10::AreaAlgorithm& algorithm,
-                            ch10::CoverageCanvas& canvas, const ProgressFunction& on_progress) {
+std::size_t render_coverage(const Scene& scene, const ch09::AreaAlgorithm& algorithm,
+                            ch09::CoverageCanvas& canvas, const ProgressFunction& on_progress) {
   std::size_t refused = 0;
   std::vector<SceneTriangle> run;  // a piece of the scene's triangles, never all of them
   std::size_t done = 0;
@@ -167,7 +167,7 @@ std::size_t render_coverage(const Scene& scene, const ch10::AreaAlgorithm& algor
   const auto flush = [&] {
     if (run.empty()) return;
     const auto start = Clock::now();
-    refused += ch10::draw_coverage(algorithm, canvas, run);
+    refused += ch09::draw_coverage(algorithm, canvas, run);
     run.clear();
     piece.after(Clock::now() - start);
     if (on_progress) on_progress(static_cast<double>(done));

@@ -7,7 +7,7 @@
 #include <functional>
 #include <vector>
 
-#include "chapters/10_coverage/area_algorithms.hpp"
+#include "chapters/09_anti_aliasing/area_algorithms.hpp"
 #include "common/canvas.hpp"
 #include "common/scene.hpp"
 #include "common/triangle_algorithm.hpp"
@@ -48,8 +48,8 @@ RenderStats render_scene(const Scene& scene, const TriangleAlgorithm* algorithm,
 /// Adds the coverage of the scene's triangles (lines have no area) to the canvas in pieces, so
 /// no copy of all the triangles is made, with progress as render_scene's (bands through the
 /// algorithm's draw_rows). Returns how many triangles were refused (non-finite or out of range).
-std::size_t render_coverage(const Scene& scene, const ch10::AreaAlgorithm& algorithm,
-                            ch10::CoverageCanvas& canvas, const ProgressFunction& on_progress = {});
+std::size_t render_coverage(const Scene& scene, const ch09::AreaAlgorithm& algorithm,
+                            ch09::CoverageCanvas& canvas, const ProgressFunction& on_progress = {});
 
 /// Rows per band for a triangle whose bounding box on a width x height canvas holds more than
 /// band_pixels pixels, so that a band holds about band_pixels; 0 for a smaller one (drawn whole).

@@ -2,7 +2,7 @@
 /// The one way the book times code (docs/DESIGN.md section 8): a warm-up, repetitions calibrated
 /// so that one sample lasts long enough to trust, samples taken in interleaved rounds across the
 /// things compared, then the median and spread of the samples. Chapter 08's benchmark, chapter
-/// 09's report and `raster --bench` all time through here.
+/// 10's report and `raster --bench` all time through here.
 #pragma once
 
 #include <functional>

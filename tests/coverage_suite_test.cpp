@@ -1,4 +1,4 @@
-// The exact-area claim of chapter 10 on large seeded scenes: the cell method agrees with the
+// The exact-area claim of chapter 09 on large seeded scenes: the cell method agrees with the
 // exact oracle within one unit of the 16-bit output, triangle by triangle and for the scene.
 #include <catch2/catch.hpp>
 
@@ -15,7 +15,7 @@ using Kind = tri::SceneRecipe::Kind;
 
 constexpr auto recipe = tri::test::ten_thousand;
 
-const tri::ch10::AreaAlgorithm& area_cells() {
+const tri::ch09::AreaAlgorithm& area_cells() {
   static const auto algorithms = tri::registered_area_algorithms();
   return *tri::find_area_algorithm(algorithms, "area_cells");
 }

@@ -93,7 +93,7 @@ std::vector<BenchScene> bench_scenes() {
   tiny.min_area = 1;
   tiny.max_area = 10;
   scenes.push_back(bench_scene("tiny (area 1-10)", tiny));
-  // The same scene as chapter 09's --full "mesh" on the 1/256 grid (224x224 cells, seed 9012),
+  // The same scene as chapter 10's --full "mesh" on the 1/256 grid (224x224 cells, seed 9012),
   // so the two programs can be checked against each other.
   tri::SceneRecipe mesh = random_recipe(100352, 0, 0, 9012);
   mesh.kind = Kind::jittered_grid;

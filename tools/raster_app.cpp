@@ -167,17 +167,17 @@ void benchmark(const Scene& scene, const TriangleAlgorithm* algorithm, long long
 
 // An algorithm of rule area: its coverage of the scene's triangles (lines have no area and are
 // left out), benchmarked or written as a 16-bit PGM (docs/DESIGN.md section 9).
-int run_coverage(const CliArguments& args, const Scene& scene, const ch10::AreaAlgorithm& area,
+int run_coverage(const CliArguments& args, const Scene& scene, const ch09::AreaAlgorithm& area,
                  std::optional<long long> frames, std::ostream& out, std::ostream& err) {
-  ch10::CoverageCanvas canvas = allocating(
+  ch09::CoverageCanvas canvas = allocating(
       "the coverage values of " + canvas_words(scene), pixel_count(scene) * sizeof(float),
-      "the scene's canvas size", [&] { return ch10::CoverageCanvas(scene.width, scene.height); });
+      "the scene's canvas size", [&] { return ch09::CoverageCanvas(scene.width, scene.height); });
   if (frames) {
     const std::vector<SceneTriangle> triangles = scene_triangles(scene);
     benchmark(
         [&] {
           canvas.clear();
-          ch10::draw_coverage(area, canvas, triangles);
+          ch09::draw_coverage(area, canvas, triangles);
         },
         triangles.size(),
         [&] { return touched_pixels(area, scene.width, scene.height, triangles); }, *frames,
@@ -210,7 +210,7 @@ int run_coverage(const CliArguments& args, const Scene& scene, const ch10::AreaA
 // depends on the scene). Refuses what cannot go together.
 std::optional<PixelFormat> checked_format(const CliArguments& args,
                                           const TriangleAlgorithm* algorithm,
-                                          const ch10::AreaAlgorithm* area) {
+                                          const ch09::AreaAlgorithm* area) {
   const auto name = args.value("format");
   if (!name) return PixelFormat::rgba8;
   const std::optional<PixelFormat> format = parse_format(*name);
@@ -285,7 +285,7 @@ int run(const CliArguments& args, std::ostream& out, std::ostream& err) {
   if (!scene_path) throw UsageError("--scene FILE is required (or --list)");
   progress_after(args);  // a bad value is a usage error before any work
   const TriangleAlgorithm* algorithm = nullptr;
-  const ch10::AreaAlgorithm* area = nullptr;
+  const ch09::AreaAlgorithm* area = nullptr;
   if (const auto name = args.value("algo")) {
     algorithm = find_algorithm(algorithms, *name);
     if (algorithm == nullptr) area = find_area_algorithm(area_algorithms, *name);

@@ -19,7 +19,7 @@
 #include <string>
 #include <vector>
 
-#include "chapters/10_coverage/coverage_canvas.hpp"
+#include "chapters/09_anti_aliasing/coverage_canvas.hpp"
 #include "common/scene.hpp"
 #include "measure/registry.hpp"
 #include "measure/render_scene.hpp"
@@ -230,9 +230,9 @@ TEST_CASE("Every band-limited coverage entry adds, band by band, the values of t
           "[raster][progress][bands][coverage]") {
   const auto triangles = band_test_triangles();
   const auto checked = for_each_band_limited(
-      tri::registered_area_algorithms(), [&](const tri::ch10::AreaAlgorithm& algorithm, int rows) {
+      tri::registered_area_algorithms(), [&](const tri::ch09::AreaAlgorithm& algorithm, int rows) {
         CAPTURE(algorithm.name, rows);
-        tri::ch10::CoverageCanvas whole(32, 21), banded(32, 21);
+        tri::ch09::CoverageCanvas whole(32, 21), banded(32, 21);
         for (const tri::SceneTriangle& t : triangles) {
           algorithm.draw(whole, std::span(&t, 1));
           tri::for_each_band(t.vertices, 32, 21, rows, [&](int first, int last) {

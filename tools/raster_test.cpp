@@ -11,9 +11,9 @@
 #include <vector>
 
 #include "chapters/01_lines/line_reference.hpp"
-#include "chapters/10_coverage/area_oracle.hpp"
-#include "chapters/10_coverage/coverage_canvas.hpp"
-#include "chapters/10_coverage/sampling.hpp"
+#include "chapters/09_anti_aliasing/area_oracle.hpp"
+#include "chapters/09_anti_aliasing/coverage_canvas.hpp"
+#include "chapters/09_anti_aliasing/sampling.hpp"
 #include "common/scene.hpp"
 #include "measure/area_error.hpp"
 #include "measure/registry.hpp"
@@ -385,12 +385,12 @@ TEST_CASE(
   for (int row = 0; row < 9; ++row) {
     for (int x = 0; x < 12; ++x) {
       const int y = 8 - row;
-      const tri::ch10::Fraction truth =
-          tri::ch10::exact_coverage(a, {x, y}) + tri::ch10::exact_coverage(b, {x, y});
+      const tri::ch09::Fraction truth =
+          tri::ch09::exact_coverage(a, {x, y}) + tri::ch09::exact_coverage(b, {x, y});
       const std::size_t k = header.size() + 2 * static_cast<std::size_t>(row * 12 + x);
       const int value =
           (static_cast<unsigned char>(pgm[k]) << 8) | static_cast<unsigned char>(pgm[k + 1]);
-      worst = std::max(worst, std::abs(value - tri::ch10::coverage_16(truth)));
+      worst = std::max(worst, std::abs(value - tri::ch09::coverage_16(truth)));
     }
   }
   CHECK(worst <= 1);
@@ -422,13 +422,13 @@ TEST_CASE("raster --coverage draws vertices a subnormal distance apart as their 
         // Composited over, each triangle's exact coverage e joins the pixel as v + e (1 - v).
         double truth = 0;
         for (const tri::Triangle& t : grid) {
-          const double e = tri::ch10::exact_coverage(t, {x, y}).to_double();
+          const double e = tri::ch09::exact_coverage(t, {x, y}).to_double();
           truth = algorithm == "area_cells" ? truth + e : truth + e * (1 - truth);
         }
         const std::size_t k = header.size() + 2 * static_cast<std::size_t>(row * 16 + x);
         const int value =
             (static_cast<unsigned char>(pgm[k]) << 8) | static_cast<unsigned char>(pgm[k + 1]);
-        worst = std::max(worst, std::abs(value - tri::ch10::coverage_16(truth)));
+        worst = std::max(worst, std::abs(value - tri::ch09::coverage_16(truth)));
       }
     }
     CHECK(worst <= 1);
@@ -481,10 +481,10 @@ TEST_CASE("raster --bench times a rule-area algorithm with the one-line speed re
 TEST_CASE("The rate of a rule-area algorithm counts the pixels each triangle touches",
           "[raster][coverage]") {
   const tri::Triangle t = {{{0, 0}, {7, 0}, {0, 7}}};
-  const auto pattern = tri::ch10::standard_pattern(4);
+  const auto pattern = tri::ch09::standard_pattern(4);
   std::uint64_t sampled = 0;
   for (int y = 0; y < 8; ++y) {
-    for (int x = 0; x < 8; ++x) sampled += tri::ch10::sampled_coverage(t, {x, y}, pattern) > 0;
+    for (int x = 0; x < 8; ++x) sampled += tri::ch09::sampled_coverage(t, {x, y}, pattern) > 0;
   }
   const auto algorithms = tri::registered_area_algorithms();
   const auto* standard_4 = tri::find_area_algorithm(algorithms, "samples_standard_4");

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "chapters/10_coverage/area_algorithms.hpp"
+#include "chapters/09_anti_aliasing/area_algorithms.hpp"
 #include "fuzz/coverage_check.hpp"
 #include "fuzz/coverage_seeds.hpp"
 #include "fuzz/rasterizer_input.hpp"
@@ -26,7 +26,7 @@ namespace fs = std::filesystem;
 // first byte picks, so a seed or finding guards each algorithm.
 void require_coverage_checks_hold(const RasterizerInput& decoded) {
   const RasterizerInput input = coverage_input(decoded);
-  for (const ch10::AreaAlgorithm& algorithm : ch10::area_algorithms()) {
+  for (const ch09::AreaAlgorithm& algorithm : ch09::area_algorithms()) {
     INFO("algorithm " << algorithm.name);
     CHECK(check_coverage(algorithm, input) == Findings{});
   }
@@ -46,17 +46,17 @@ RasterizerInput input_of(int size, const std::vector<Triangle>& triangles) {
 
 // Changes that break area_cells on purpose: a pixel outside the test triangles (exactly 0) made
 // 2e-6, or -0.5.
-void add_a_little_at_6_6(ch10::CoverageCanvas& canvas) {
+void add_a_little_at_6_6(ch09::CoverageCanvas& canvas) {
   canvas.add(6, 6, 2e-6f);
 }
-void set_minus_a_half_at_0_0(ch10::CoverageCanvas& canvas) {
+void set_minus_a_half_at_0_0(ch09::CoverageCanvas& canvas) {
   canvas.set(0, 0, -0.5f);
 }
 
 // A deliberately broken algorithm: area_cells, then `change` on the canvas.
-template <void (*change)(ch10::CoverageCanvas&)>
-void area_cells_then(ch10::CoverageCanvas& canvas, std::span<const SceneTriangle> triangles) {
-  ch10::area_algorithms()[0].draw(canvas, triangles);
+template <void (*change)(ch09::CoverageCanvas&)>
+void area_cells_then(ch09::CoverageCanvas& canvas, std::span<const SceneTriangle> triangles) {
+  ch09::area_algorithms()[0].draw(canvas, triangles);
   change(canvas);
 }
 
@@ -104,7 +104,7 @@ TEST_CASE("A coverage input's canvas is cut to at most 16x16", "[fuzz][layout]")
 
 TEST_CASE("The coverage checks report an exact-area algorithm off the exact area",
           "[fuzz][checks]") {
-  ch10::AreaAlgorithm broken = ch10::area_algorithms()[0];
+  ch09::AreaAlgorithm broken = ch09::area_algorithms()[0];
   broken.draw = area_cells_then<add_a_little_at_6_6>;
   const Findings findings = check_coverage(broken, input_of(8, {{{{1, 1}, {7, 2}, {3, 7}}}}));
   REQUIRE(findings.size() == 1);
@@ -113,15 +113,15 @@ TEST_CASE("The coverage checks report an exact-area algorithm off the exact area
 
 TEST_CASE("The coverage checks report a sampling algorithm unlike its own samples",
           "[fuzz][checks]") {
-  ch10::AreaAlgorithm broken = ch10::area_algorithms()[4];  // 4x4 samples, drawn as exact area
-  broken.draw = ch10::area_algorithms()[0].draw;
+  ch09::AreaAlgorithm broken = ch09::area_algorithms()[4];  // 4x4 samples, drawn as exact area
+  broken.draw = ch09::area_algorithms()[0].draw;
   const Findings findings = check_coverage(broken, input_of(8, {{{{1, 1}, {7, 2}, {3, 7}}}}));
   REQUIRE(findings.size() == 1);
   CHECK_THAT(findings[0], Catch::Contains("unlike its own samples' count"));
 }
 
 TEST_CASE("The coverage checks report coverage outside [0, 1]", "[fuzz][checks]") {
-  ch10::AreaAlgorithm broken = ch10::area_algorithms()[0];
+  ch09::AreaAlgorithm broken = ch09::area_algorithms()[0];
   broken.draw = area_cells_then<set_minus_a_half_at_0_0>;
   const Findings findings = check_coverage(broken, input_of(4, {{{{1, 1}, {3, 1}, {1, 3}}}}));
   REQUIRE(findings.size() == 2);
@@ -131,9 +131,9 @@ TEST_CASE("The coverage checks report coverage outside [0, 1]", "[fuzz][checks]"
 
 TEST_CASE("The coverage checks report a scene unlike its triangles drawn one by one",
           "[fuzz][checks]") {
-  ch10::AreaAlgorithm broken = ch10::area_algorithms()[2];  // 1 sample: whole pixels
-  broken.draw = [](ch10::CoverageCanvas& canvas, std::span<const SceneTriangle> triangles) {
-    ch10::area_algorithms()[2].draw(canvas, triangles.first(1));  // draws only the first
+  ch09::AreaAlgorithm broken = ch09::area_algorithms()[2];  // 1 sample: whole pixels
+  broken.draw = [](ch09::CoverageCanvas& canvas, std::span<const SceneTriangle> triangles) {
+    ch09::area_algorithms()[2].draw(canvas, triangles.first(1));  // draws only the first
   };
   const Findings findings =
       check_coverage(broken, input_of(8, {{{{1, 1}, {7, 1}, {1, 7}}}, {{{7, 1}, {7, 7}, {1, 7}}}}));
@@ -143,7 +143,7 @@ TEST_CASE("The coverage checks report a scene unlike its triangles drawn one by 
 
 TEST_CASE("The coverage checks compare with the oracle only near the 1/256 grid",
           "[fuzz][checks]") {
-  ch10::AreaAlgorithm broken = ch10::area_algorithms()[0];
+  ch09::AreaAlgorithm broken = ch09::area_algorithms()[0];
   broken.draw = area_cells_then<add_a_little_at_6_6>;
   // 1/3 is 1/768 from the grid: no exact truth to compare with, so nothing is reported.
   CHECK(check_coverage(broken, input_of(8, {{{{1.0 / 3, 1}, {7, 2}, {3, 7}}}})) == Findings{});

@@ -97,9 +97,9 @@ TEST_CASE(
     "[figures]") {
   const TwoFolders folders;
   write_text(folders.committed / "old.svg", "<svg/>\n");
-  write_text(folders.committed / "09_plot.svg", "<svg/>\n");
+  write_text(folders.committed / "10_plot.svg", "<svg/>\n");
   const auto problems =
-      tri::figures::stale_figures(folders.committed, {folders.rendered}, {"09_plot.svg"});
+      tri::figures::stale_figures(folders.committed, {folders.rendered}, {"10_plot.svg"});
   REQUIRE(problems.size() == 1);
   CHECK(any_names(problems, "old.svg: committed in"));
 }

@@ -12,7 +12,7 @@
 TEST_CASE(
     "The committed speed-vs-error snapshot is a whole SVG that names every registered algorithm",
     "[figures]") {
-  std::ifstream in(TUTORIAL_COMMITTED_FIGURES "/09_speed_vs_error.svg", std::ios::binary);
+  std::ifstream in(TUTORIAL_COMMITTED_FIGURES "/10_speed_vs_error.svg", std::ios::binary);
   REQUIRE(in);
   const std::string svg((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   CHECK(svg.starts_with("<svg"));
@@ -21,8 +21,8 @@ TEST_CASE(
   CHECK(svg.find("write ceiling (memset, vector stores), 1 thread: ") != std::string::npos);
   for (const auto& algorithm : tri::registered_algorithms()) {
     INFO("algorithm " << algorithm.name
-                      << " is missing from docs/figures/09_speed_vs_error.svg: refresh the "
-                         "snapshot from a run of 09_speed_vs_error (see chapter 09's README)");
+                      << " is missing from docs/figures/10_speed_vs_error.svg: refresh the "
+                         "snapshot from a run of 10_speed_vs_error (see chapter 10's README)");
     const std::string label = ">" + std::string(algorithm.name);
     const bool shown =
         svg.find(label + "<") != std::string::npos || svg.find(label + " (") != std::string::npos;
@@ -32,8 +32,8 @@ TEST_CASE(
 
 TEST_CASE("The committed scaling snapshots are whole SVGs of fast_hybrid, the ceiling and the peers",
           "[figures]") {
-  for (const char* name : {"09_scaling_triangles.svg", "09_scaling_canvas.svg"}) {
-    INFO(name << ": refresh the snapshot from a --full run of 09_speed_vs_error (chapter 09, "
+  for (const char* name : {"10_scaling_triangles.svg", "10_scaling_canvas.svg"}) {
+    INFO(name << ": refresh the snapshot from a --full run of 10_speed_vs_error (chapter 10, "
                  "step 9)");
     std::ifstream in(std::string(TUTORIAL_COMMITTED_FIGURES "/") + name, std::ios::binary);
     REQUIRE(in);
@@ -45,7 +45,7 @@ TEST_CASE("The committed scaling snapshots are whole SVGs of fast_hybrid, the ce
       CHECK(svg.find(peer) != std::string::npos);
     }
   }
-  std::ifstream in(TUTORIAL_COMMITTED_FIGURES "/09_scaling_canvas.svg", std::ios::binary);
+  std::ifstream in(TUTORIAL_COMMITTED_FIGURES "/10_scaling_canvas.svg", std::ios::binary);
   const std::string canvas((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   CHECK(canvas.find(">write_ceiling<") != std::string::npos);
 }

@@ -35,8 +35,8 @@ TEST_CASE("Every coverage algorithm refuses the non-finite hard cases and draws 
       for (const auto& p : hard_case.scene.primitives) {
         if (const auto* t = std::get_if<tri::SceneTriangle>(&p)) triangles.push_back(*t);
       }
-      tri::ch10::CoverageCanvas canvas(hard_case.scene.width, hard_case.scene.height);
-      CHECK(tri::ch10::draw_coverage(algorithm, canvas, triangles) == triangles.size());
+      tri::ch09::CoverageCanvas canvas(hard_case.scene.width, hard_case.scene.height);
+      CHECK(tri::ch09::draw_coverage(algorithm, canvas, triangles) == triangles.size());
       int touched = 0;
       for (int y = 0; y < canvas.height(); ++y) {
         for (int x = 0; x < canvas.width(); ++x) touched += canvas.at(x, y) != 0;

@@ -1,0 +1,65 @@
+// cairo, filling aliased triangle paths, as a peer: its pixels against the oracle, its limits.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <numeric>
+
+#include "chapters/10_speed_vs_error/library_peers.hpp"
+#include "chapters/10_speed_vs_error/peer_test_support.hpp"
+
+using namespace tri::ch10::test;
+using Kind = tri::SceneRecipe::Kind;
+
+TEST_CASE("cairo without anti-aliasing matches the oracle where no centre lies on an edge",
+          "[10_speed_vs_error][step7][cairo]") {
+  // On the 1/256 grid no pixel centre falls on a shared edge of a fan or a mesh.
+  for (const auto kind : {Kind::fan, Kind::jittered_grid}) {
+    const auto triangles = tri::scene_triangles(small_scene(kind, 8, 11));
+    CAPTURE(static_cast<int>(kind));
+    CHECK(differing_pixels(tri::ch10::cairo_write_counts(64, 48, triangles).counts,
+                           oracle_counts(64, 48, triangles).counts) == 0);
+  }
+}
+
+TEST_CASE("cairo follows no exact tie rule: an integer-grid mesh gets centres twice or never",
+          "[10_speed_vs_error][step7][cairo]") {
+  const auto triangles = tri::scene_triangles(small_scene(Kind::jittered_grid, 0, 11));
+  const auto counts = tri::ch10::cairo_write_counts(64, 48, triangles).counts;
+  const auto oracle = oracle_counts(64, 48, triangles).counts;
+  std::size_t twice = 0, never = 0;
+  for (std::size_t i = 0; i < counts.size(); ++i) {
+    twice += counts[i] >= 2 && oracle[i] == 1;
+    never += counts[i] == 0 && oracle[i] == 1;
+  }
+  CHECK(twice + never > 0);
+  CHECK(differing_pixels(counts, oracle) == twice + never);
+}
+
+TEST_CASE("cairo refuses a scene beyond its 24.8 fixed-point range, naming the limit",
+          "[10_speed_vs_error][step7][cairo]") {
+  check_refuses_far_vertex(tri::ch10::cairo_write_counts, 1e7, "cairo", "8000000");
+}
+
+TEST_CASE("cairo's row in the report: timed, with its error measured",
+          "[10_speed_vs_error][step7][cairo]") {
+  const auto settings = tri::ch10::bench_settings(tri::ch10::SuiteSize::tiny);
+  const tri::ch10::ExternalPeer peer = tri::ch10::cairo_peer();
+  CHECK(peer.name == "cairo_no_antialias");
+  CHECK(peer.rule == "approximate");
+  const auto prepared = tri::ch10::prepare_scene(settings.scenes.front(), 0);
+  const tri::ch10::PeerResult result = peer.measure(prepared, settings.timing);
+  CHECK(result.timing.seconds.median > 0);
+  CHECK(result.written_pixels > 0);
+  CHECK(result.error.covered > 0);
+}
+
+TEST_CASE(
+    "cairo's anti-aliasing is the area in x over 15 sample rows: within 1/15 of the exact area",
+    "[10_speed_vs_error][cairo][coverage]") {
+  const auto r =
+      measure_coverage_peer(tri::ch10::cairo_coverage_peer(), small_scene(Kind::random, 8, 81));
+  CHECK(r.error.triangles == 300);
+  CHECK(r.error.max <= 1.0 / 15 + 1.0 / 255);
+  CHECK(r.error.max > 2.0 / 255);  // rows are sampled, so not the exact area
+  CHECK(r.error.mean > 0);
+}

@@ -1,0 +1,28 @@
+#include "chapters/10_speed_vs_error/coverage_peers.hpp"
+
+#include "chapters/10_speed_vs_error/library_peers.hpp"
+#include "chapters/10_speed_vs_error/peer_builds.hpp"
+
+namespace tri::ch10 {
+
+std::vector<CoveragePeer> coverage_peers() {
+  std::vector<CoveragePeer> peers;
+#if TUTORIAL_WITH_AGG
+  peers.push_back(agg_coverage_peer());
+#endif
+#if TUTORIAL_WITH_CAIRO
+  peers.push_back(cairo_coverage_peer());
+#endif
+#if TUTORIAL_WITH_PIXMAN
+  peers.push_back(pixman_coverage_peer());
+#endif
+  return peers;
+}
+
+std::string coverage_peer_status(std::span<const CoveragePeer> measured) {
+  return library_status("agg_scanline_aa", agg_not_built, "agg_scanline_aa", measured) + "; " +
+         library_status("cairo_antialias", cairo_not_built, "cairo_antialias", measured) + "; " +
+         library_status("pixman_a8", pixman_not_built, "pixman_a8", measured);
+}
+
+}  // namespace tri::ch10

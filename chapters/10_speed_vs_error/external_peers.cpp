@@ -1,0 +1,31 @@
+#include "chapters/10_speed_vs_error/external_peers.hpp"
+
+#if TUTORIAL_WITH_OSMESA
+#include "chapters/10_speed_vs_error/llvmpipe_peer.hpp"
+#endif
+#include "chapters/10_speed_vs_error/library_peers.hpp"
+#include "chapters/10_speed_vs_error/peer_builds.hpp"
+
+namespace tri::ch10 {
+
+std::vector<ExternalPeer> external_peers() {
+  std::vector<ExternalPeer> peers;
+#if TUTORIAL_WITH_OSMESA
+  for (ExternalPeer& peer : llvmpipe_peers()) peers.push_back(std::move(peer));
+#endif
+#if TUTORIAL_WITH_PIXMAN
+  peers.push_back(pixman_peer());
+#endif
+#if TUTORIAL_WITH_CAIRO
+  peers.push_back(cairo_peer());
+#endif
+  return peers;
+}
+
+std::string external_peer_status(std::span<const ExternalPeer> measured) {
+  return library_status("Mesa llvmpipe", llvmpipe_not_built, "mesa_llvmpipe", measured) + "; " +
+         library_status("pixman", pixman_not_built, "pixman", measured) + "; " +
+         library_status("cairo", cairo_not_built, "cairo", measured);
+}
+
+}  // namespace tri::ch10

@@ -1,0 +1,20 @@
+/// @file
+/// The external peers this build can measure: Mesa's llvmpipe when OSMesa was found, else none.
+#pragma once
+
+#include <span>
+#include <string>
+#include <vector>
+
+#include "chapters/10_speed_vs_error/measure.hpp"
+
+namespace tri::ch10 {
+
+/// Every external peer this build has (empty without OSMesa).
+std::vector<ExternalPeer> external_peers();
+
+/// One line for the report's Machine table: which peers were measured, or why none was.
+/// `measured` are the peers the run actually measured (--only can leave them out).
+std::string external_peer_status(std::span<const ExternalPeer> measured);
+
+}  // namespace tri::ch10

@@ -1,0 +1,50 @@
+#include "chapters/10_speed_vs_error/external_peers.hpp"
+
+#include <catch2/catch.hpp>
+#include <set>
+#include <string>
+
+#include "measure/registry.hpp"
+
+TEST_CASE("External peers have their own names, filed under 'external'",
+          "[10_speed_vs_error][external_peers]") {
+  const auto peers = tri::ch10::external_peers();
+  const auto algorithms = tri::registered_algorithms();
+  std::set<std::string> names;
+  for (const tri::ch10::ExternalPeer& peer : peers) {
+    CAPTURE(peer.name);
+    CHECK(names.insert(peer.name).second);
+    CHECK(tri::find_algorithm(algorithms, peer.name) == nullptr);  // --only can tell them apart
+    CHECK(peer.chapter == "external");
+    CHECK(static_cast<bool>(peer.measure));
+  }
+}
+
+TEST_CASE("The Machine line says which peers were measured, or why each was not",
+          "[10_speed_vs_error][external_peers]") {
+  const auto peers = tri::ch10::external_peers();
+  const std::string all = tri::ch10::external_peer_status(peers);
+  const std::string none = tri::ch10::external_peer_status({});
+  CAPTURE(all, none);
+  const auto says = [](const std::string& line, const std::string& what) {
+    return line.find(what) != std::string::npos;
+  };
+  struct Library {
+    std::string name;
+    bool built;
+    std::string peers;
+  };
+  for (const Library& library :
+       {Library{"Mesa llvmpipe", TUTORIAL_WITH_OSMESA != 0,
+                "(mesa_llvmpipe_1_thread, mesa_llvmpipe_default)"},
+        Library{"pixman", TUTORIAL_WITH_PIXMAN != 0, "(pixman_a1)"},
+        Library{"cairo", TUTORIAL_WITH_CAIRO != 0, "(cairo_no_antialias)"}}) {
+    CAPTURE(library.name);
+    if (library.built) {
+      CHECK(says(all, library.name + ": measured " + library.peers));
+      CHECK(says(none, library.name + ": built, not selected by --only"));
+    } else {
+      CHECK(says(all, library.name + ": not built ("));
+    }
+  }
+}

@@ -1,0 +1,147 @@
+// Chapter 10's report: every registered algorithm on the same scene suites, timed and compared
+// with the exact oracle; writes 10_report.csv, 10_report.md and 10_speed_vs_error.svg.
+#include <algorithm>
+#include <filesystem>
+#include <iostream>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "chapters/10_speed_vs_error/coverage_peers.hpp"
+#include "chapters/10_speed_vs_error/external_peers.hpp"
+#include "chapters/10_speed_vs_error/measure.hpp"
+#include "chapters/10_speed_vs_error/report.hpp"
+#include "chapters/10_speed_vs_error/scaling.hpp"
+#include "chapters/10_speed_vs_error/suites.hpp"
+#include "common/cli.hpp"
+#include "common/output_files.hpp"
+#include "common/printable_text.hpp"
+#include "measure/registry.hpp"
+
+namespace {
+
+// What a run measures: registered algorithms and the external peers this build has, for both
+// parts of the report (inside-or-outside, then coverage).
+struct Selection {
+  std::vector<tri::TriangleAlgorithm> algorithms;
+  std::vector<tri::ch10::ExternalPeer> peers;
+  std::vector<tri::ch09::AreaAlgorithm> area_algorithms;
+  std::vector<tri::ch10::CoveragePeer> coverage_peers;
+};
+
+// The algorithms and peers named in a comma-separated list (all of them without --only).
+Selection selected(const std::optional<std::string>& names) {
+  Selection all{tri::registered_algorithms(), tri::ch10::external_peers(),
+                tri::registered_area_algorithms(), tri::ch10::coverage_peers()};
+  if (!names) return all;
+  std::vector<std::string> valid;
+  for (const auto& a : all.algorithms) valid.emplace_back(a.name);
+  for (const auto& p : all.peers) valid.push_back(p.name);
+  for (const auto& a : all.area_algorithms) valid.emplace_back(a.name);
+  for (const auto& p : all.coverage_peers) valid.push_back(p.name);
+  std::vector<std::string> chosen_names;
+  try {
+    chosen_names = tri::parse_name_list("only", *names, valid);
+  } catch (const tri::UsageError& e) {
+    if (!all.peers.empty()) throw;
+    throw tri::UsageError(std::string(e.what()) +
+                          "; external peers: " + tri::ch10::external_peer_status({}));
+  }
+  Selection chosen;
+  for (const std::string& name : chosen_names) {
+    const auto named = [&](const auto& p) { return p.name == name; };
+    if (const tri::TriangleAlgorithm* algorithm = tri::find_algorithm(all.algorithms, name)) {
+      chosen.algorithms.push_back(*algorithm);
+    } else if (const auto* area = tri::find_area_algorithm(all.area_algorithms, name)) {
+      chosen.area_algorithms.push_back(*area);
+    } else if (const auto peer = std::find_if(all.peers.begin(), all.peers.end(), named);
+               peer != all.peers.end()) {
+      chosen.peers.push_back(*peer);
+    } else {
+      chosen.coverage_peers.push_back(
+          *std::find_if(all.coverage_peers.begin(), all.coverage_peers.end(), named));
+    }
+  }
+  return chosen;
+}
+
+// The suite's scenes of one kind (--scene) and one grid (--grid); an unknown value is a usage
+// error that lists the valid ones.
+std::vector<tri::ch10::SuiteScene> filtered(std::vector<tri::ch10::SuiteScene> scenes,
+                                            const std::optional<std::string>& kind,
+                                            const std::optional<std::string>& grid) {
+  const auto keep_only = [&](const char* option, const std::string& wanted, auto field) {
+    std::string valid;
+    for (const auto& scene : scenes) {
+      const std::string& value = scene.*field;
+      if (valid.find(value) == std::string::npos) valid += (valid.empty() ? "" : ", ") + value;
+    }
+    std::erase_if(scenes, [&](const tri::ch10::SuiteScene& s) { return s.*field != wanted; });
+    if (scenes.empty()) {
+      throw tri::UsageError(std::string("--") + option + " '" + tri::printable_excerpt(wanted) +
+                            "' matches no scene (valid: " + valid + ")");
+    }
+  };
+  if (kind) keep_only("scene", *kind, &tri::ch10::SuiteScene::name);
+  if (grid) keep_only("grid", *grid, &tri::ch10::SuiteScene::grid);
+  return scenes;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const tri::CommandLine command_line(
+      "10_speed_vs_error",
+      "Chapter 10, speed against error: draws the same scene suites with every registered\n"
+      "algorithm, times them (warm-up, median of repeated samples, beside the write ceiling)\n"
+      "and measures their error against the exact oracle; then chapter 09's coverage algorithms\n"
+      "against the exact area; then how the time of a frame grows with the triangles and the\n"
+      "canvas. Writes 10_report.csv, 10_coverage.csv and 10_scaling.csv (every measurement),\n"
+      "10_report.md (the machine, one row per algorithm, the sweeps' tables), and the plots\n"
+      "10_speed_vs_error.svg, 10_coverage_speed_vs_error.svg, 10_scaling_triangles.svg and\n"
+      "10_scaling_canvas.svg. Quick by default (about a minute on two cores); --full for the\n"
+      "complete sweep.",
+      {{"out", "DIR", "folder for the report (default: out)"},
+       {"full", "", "complete sweep: 512x512 canvas, 100,000-triangle mesh, longer samples"},
+       {"only", "NAMES",
+        "measure only these (comma-separated registry names, or an external peer's name)"},
+       {"scene", "KIND",
+        "only the scenes of this kind (tiny, medium, large, slivers, mesh, fan, mixed)"},
+       {"grid", "GRID", "only the scenes on this vertex grid (integer or 1/256)"}});
+  return tri::run_command_line(
+      command_line, argc, argv, std::cout, std::cerr, [](const tri::CliArguments& args) {
+        const auto size =
+            args.has("full") ? tri::ch10::SuiteSize::full : tri::ch10::SuiteSize::quick;
+        const Selection selection = selected(args.value("only"));
+        // The report's folder and files are checked before minutes of measuring, not after.
+        const std::filesystem::path folder = args.value_or("out", "out");
+        tri::check_output_folder(folder);
+        tri::check_outputs(tri::ch10::report_paths(folder));
+        tri::ch10::BenchSettings settings = tri::ch10::bench_settings(size);
+        settings.scenes =
+            filtered(std::move(settings.scenes), args.value("scene"), args.value("grid"));
+        std::cout << "10_speed_vs_error: " << selection.algorithms.size() << " algorithms and "
+                  << selection.peers.size() << " external peers, then "
+                  << selection.area_algorithms.size() << " coverage algorithms and "
+                  << selection.coverage_peers.size() << " anti-aliasing peers, x "
+                  << settings.scenes.size() << " scenes, " << tri::ch10::size_name(size)
+                  << " setting\n";
+        const tri::ch10::BenchReport report =
+            tri::ch10::run_benchmark(selection.algorithms, selection.peers, settings,
+                                     tri::ch10::describe_machine(selection.peers), std::cout);
+        const tri::ch10::CoverageReport coverage{
+            tri::ch10::run_coverage_benchmark(selection.area_algorithms, selection.coverage_peers,
+                                              settings, std::cout),
+            tri::ch10::coverage_peer_status(selection.coverage_peers)};
+        // How cost grows: the sweeps follow chapter 08's fastest and the peers when selected,
+        // and skip when --scene or --grid narrowed the run to some scenes.
+        std::vector<tri::ch10::ScalingPoint> scaling;
+        if (!args.has("scene") && !args.has("grid")) {
+          const auto drawers = tri::ch10::scaling_drawers(selection.algorithms, selection.peers);
+          scaling = tri::ch10::run_scaling(drawers, tri::ch10::scaling_settings(size), std::cout);
+        }
+        tri::ch10::save_report(folder, report, coverage, scaling, std::cout);
+        return 0;
+      });
+}

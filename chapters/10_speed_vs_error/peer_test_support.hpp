@@ -1,0 +1,75 @@
+// What the external peers' tests share: the oracle's counts and small seeded scenes.
+#pragma once
+
+#include <catch2/catch.hpp>
+
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "chapters/10_speed_vs_error/coverage_measure.hpp"
+#include "measure/area_error.hpp"
+#include "measure/error_metrics.hpp"
+#include "measure/registry.hpp"
+#include "measure/render_scene.hpp"
+#include "measure/scene_generators.hpp"
+
+namespace tri::ch10::test {
+
+/// The exact oracle's write counts of the triangles on a width x height canvas.
+inline WriteCounts oracle_counts(int width, int height, std::span<const SceneTriangle> triangles) {
+  const auto all = registered_algorithms();
+  return draw_write_counts(*find_algorithm(all, "exact_oracle"), width, height, triangles);
+}
+
+/// 300 seeded triangles of one kind on a 64x48 canvas, vertices on a 1/2^grid_bits grid.
+inline Scene small_scene(SceneRecipe::Kind kind, int grid_bits, std::uint64_t seed) {
+  SceneRecipe recipe;
+  recipe.kind = kind;
+  recipe.width = 64;
+  recipe.height = 48;
+  recipe.triangles = 300;
+  recipe.min_extent = 0.5;
+  recipe.max_extent = 12;
+  recipe.grid_bits = grid_bits;
+  recipe.seed = seed;
+  return generate_scene(recipe);
+}
+
+/// How many pixels two count lists disagree on.
+inline std::size_t differing_pixels(const std::vector<std::uint32_t>& a,
+                                    const std::vector<std::uint32_t>& b) {
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < a.size() && i < b.size(); ++i) n += a[i] != b[i];
+  return n + (a.size() > b.size() ? a.size() - b.size() : b.size() - a.size());
+}
+
+/// A square from (1, 1) to (6, 6) in two triangles on an 8x8 canvas: 5x5 pixel centres inside
+/// or on its border, each owned once by an exact rule.
+inline std::vector<SceneTriangle> split_square() {
+  return {{{{{1, 1}, {6, 1}, {1, 6}}}, colors::white}, {{{{6, 1}, {6, 6}, {1, 6}}}, colors::white}};
+}
+
+/// Checks that a library's write counts refuse a triangle reaching x = far_x (beyond its range)
+/// on an 8x8 canvas, with a message that names the library and its limit.
+inline void check_refuses_far_vertex(const CountingDraw& write_counts, double far_x,
+                                     const std::string& library, const std::string& limit) {
+  const std::vector<SceneTriangle> far{{{{{0, 0}, {far_x, 0}, {0, 5}}}, colors::white}};
+  CHECK_THROWS_WITH(write_counts(8, 8, far),
+                    Catch::Contains(library + " cannot draw this scene") && Catch::Contains(limit));
+}
+
+/// An anti-aliasing peer measured on a scene (one untimed-looking sample: the tests never time):
+/// its touched pixels and its error against the exact area.
+inline CoveragePeerResult measure_coverage_peer(const CoveragePeer& peer, const Scene& scene) {
+  PreparedScene prepared;
+  prepared.suite.name = "test";
+  prepared.suite.grid = "1/256";
+  prepared.scene = scene;
+  prepared.triangles = scene_triangles(scene);
+  prepared.error_scene = scene;
+  return peer.measure(prepared, AreaTruth(scene), TimingPlan{0.0, 1, 1});
+}
+
+}  // namespace tri::ch10::test

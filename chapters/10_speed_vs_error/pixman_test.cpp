@@ -1,0 +1,130 @@
+// pixman's triangle rasterizer as a peer: its pixels against the oracle, its limits, its row.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <stdexcept>
+
+#include "chapters/10_speed_vs_error/library_peers.hpp"
+#include "chapters/10_speed_vs_error/peer_test_support.hpp"
+#include "common/canvas.hpp"
+
+using namespace tri::ch10::test;
+using Kind = tri::SceneRecipe::Kind;
+
+namespace {
+
+// The distance from point c to the segment a-b.
+double distance_to_segment(glm::dvec2 c, glm::dvec2 a, glm::dvec2 b) {
+  const glm::dvec2 d = b - a;
+  const double length2 = d.x * d.x + d.y * d.y;
+  const double t =
+      length2 > 0 ? std::clamp(((c - a).x * d.x + (c - a).y * d.y) / length2, 0.0, 1.0) : 0.0;
+  const glm::dvec2 q = a + t * d - c;
+  return std::sqrt(q.x * q.x + q.y * q.y);
+}
+
+}  // namespace
+
+TEST_CASE(
+    "pixman owns the centres on a shared edge once, like the oracle: the left column and the top "
+    "row",
+    "[10_speed_vs_error][step7][pixman]") {
+  const auto square = split_square();
+  const auto counts = tri::ch10::pixman_write_counts(8, 8, square).counts;
+  REQUIRE(counts.size() == 64);
+  CHECK(std::accumulate(counts.begin(), counts.end(), 0u) == 25);
+  CHECK(std::count(counts.begin(), counts.end(), 1u) == 25);
+  CHECK(counts[6 * 8 + 1] == 1);  // (1, 6): on the left edge and the top edge
+  CHECK(counts[2 * 8 + 1] == 1);  // (1, 2): on the left edge
+  CHECK(counts[1 * 8 + 1] == 0);  // (1, 1): on the bottom edge
+  CHECK(counts[3 * 8 + 6] == 0);  // (6, 3): on the right edge
+  CHECK(counts == oracle_counts(8, 8, square).counts);
+}
+
+TEST_CASE(
+    "pixman's pixels equal the oracle's on integer, 1/4, 1/16 and 1/256-grid scenes, ties included",
+    "[10_speed_vs_error][step7][pixman]") {
+  for (const auto kind : {Kind::random, Kind::slivers, Kind::fan, Kind::jittered_grid}) {
+    for (const int bits : {0, 2, 4, 8}) {
+      const auto triangles = tri::scene_triangles(small_scene(kind, bits, 11));
+      CAPTURE(static_cast<int>(kind), bits);
+      CHECK(differing_pixels(tri::ch10::pixman_write_counts(64, 48, triangles).counts,
+                             oracle_counts(64, 48, triangles).counts) == 0);
+    }
+  }
+}
+
+TEST_CASE("pixman refuses a scene beyond its 16.16 fixed-point range, naming the limit",
+          "[10_speed_vs_error][step7][pixman]") {
+  check_refuses_far_vertex(tri::ch10::pixman_write_counts, 40000, "pixman", "32767");
+}
+
+TEST_CASE("pixman's row in the report: timed, and exact on the tiny suite",
+          "[10_speed_vs_error][step7][pixman]") {
+  const auto settings = tri::ch10::bench_settings(tri::ch10::SuiteSize::tiny);
+  const tri::ch10::ExternalPeer peer = tri::ch10::pixman_peer();
+  CHECK(peer.name == "pixman_a1");
+  CHECK(peer.rule == "top-left");
+  for (const auto& suite : settings.scenes) {
+    const auto prepared = tri::ch10::prepare_scene(suite, settings.error_triangle_limit);
+    const tri::ch10::PeerResult result = peer.measure(prepared, settings.timing);
+    CAPTURE(suite.name, suite.grid);
+    CHECK(result.timing.seconds.median > 0);
+    CHECK(result.written_pixels == result.error.covered);
+    CHECK(result.error.exact());
+  }
+}
+
+TEST_CASE("pixman differs from the oracle only at centres within 2^-16 pixel of an edge",
+          "[10_speed_vs_error][step7][pixman]") {
+  // The report's mixed scene on the 1/256 grid is where the quick run finds pixman's few
+  // differences: pixman computes its edges in 16.16 fixed point.
+  const auto settings = tri::ch10::bench_settings(tri::ch10::SuiteSize::quick);
+  const auto suite = std::find_if(settings.scenes.begin(), settings.scenes.end(),
+                                  [](auto& s) { return s.name == "mixed" && s.grid == "1/256"; });
+  REQUIRE(suite != settings.scenes.end());
+  const auto prepared = tri::ch10::prepare_scene(*suite, 0);
+  const int w = prepared.scene.width, h = prepared.scene.height;
+  const auto pixman = tri::ch10::pixman_write_counts(w, h, prepared.triangles).counts;
+  const auto oracle = oracle_counts(w, h, prepared.triangles).counts;
+  std::size_t differing = 0;
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      const std::size_t i = tri::pixel_index(x, y, w);
+      if (pixman[i] == oracle[i]) continue;
+      ++differing;
+      double nearest = std::numeric_limits<double>::infinity();
+      for (const auto& t : prepared.triangles) {
+        for (int k = 0; k < 3; ++k) {
+          nearest = std::min(nearest,
+                             distance_to_segment({x, y}, t.vertices[k], t.vertices[(k + 1) % 3]));
+        }
+      }
+      CAPTURE(x, y, pixman[i], oracle[i]);
+      CHECK(nearest < std::ldexp(1.0, -16));
+    }
+  }
+  CHECK(differing == 4);
+}
+
+TEST_CASE("pixman's a8 coverage counts a 15 x 17 grid of samples: within 1/15 of the exact area",
+          "[10_speed_vs_error][pixman][coverage]") {
+  const auto r =
+      measure_coverage_peer(tri::ch10::pixman_coverage_peer(), small_scene(Kind::random, 8, 71));
+  CHECK(r.error.triangles == 300);
+  // A straight edge crosses at most one sample row's worth of samples wrongly per row it passes.
+  CHECK(r.error.max <= 1.0 / 15 + 1.0 / 255);
+  CHECK(r.error.max > 2.0 / 255);  // not the exact area: samples
+  CHECK(r.error.mean > 0);
+}
+
+TEST_CASE("pixman adds the coverage of an a8 mesh: no seams",
+          "[10_speed_vs_error][pixman][coverage]") {
+  const auto r = measure_coverage_peer(tri::ch10::pixman_coverage_peer(),
+                                       small_scene(Kind::jittered_grid, 8, 72));
+  // Each sample belongs to one triangle, so the mesh's inside adds up to 255 exactly.
+  CHECK(r.error.composed_max <= r.error.max + 1e-6);
+}
