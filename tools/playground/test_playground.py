@@ -20,7 +20,7 @@ import tempfile
 from pathlib import Path
 
 HERE = Path(__file__).resolve().parent
-sys.path.insert(0, str(HERE.parent / "site_check"))
+sys.path.insert(0, str(HERE.parents[1] / "tests" / "site_check"))
 from chromium_pipe import BrowserError, Chromium, Deadline  # noqa: E402
 
 # The scene colours of the two triangles (playground_api.cpp), as the page fills them.
