@@ -19,7 +19,6 @@ double seconds_of(const std::function<void()>& run, int repetitions) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-// [listing calibrated_timing]
 int next_repetitions(int repetitions, double elapsed_seconds, double target_seconds,
                      int max_repetitions) noexcept {
   double wanted = 2.0 * repetitions;
@@ -47,6 +46,7 @@ int calibrated_repetitions(const std::function<void()>& run, const TimingPlan& p
 
 }  // namespace
 
+// [listing interleaved_rounds]
 std::vector<Timing> time_interleaved(std::span<const std::function<void()>> runs,
                                      const TimingPlan& plan,
                                      const std::function<void(int rounds_done)>& after_round) {

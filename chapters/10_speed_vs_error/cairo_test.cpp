@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <numeric>
+#include <string>
 
 #include "chapters/10_speed_vs_error/library_peers.hpp"
 #include "chapters/10_speed_vs_error/peer_test_support.hpp"
@@ -10,14 +11,24 @@
 using namespace tri::ch10::test;
 using Kind = tri::SceneRecipe::Kind;
 
-TEST_CASE("cairo without anti-aliasing matches the oracle where no centre lies on an edge",
-          "[10_speed_vs_error][step7][cairo]") {
-  // On the 1/256 grid no pixel centre falls on a shared edge of a fan or a mesh.
-  for (const auto kind : {Kind::fan, Kind::jittered_grid}) {
-    const auto triangles = tri::scene_triangles(small_scene(kind, 8, 11));
-    CAPTURE(static_cast<int>(kind));
-    CHECK(differing_pixels(tri::ch10::cairo_write_counts(64, 48, triangles).counts,
-                           oracle_counts(64, 48, triangles).counts) == 0);
+TEST_CASE(
+    "cairo differs from the oracle at centres on no edge: the report's 1/256-grid slivers, mesh "
+    "and fan",
+    "[10_speed_vs_error][step7][cairo]") {
+  // Not a tie rule: on these scenes cairo misses or adds pixels whose centres lie within a
+  // hundredth of a pixel of an edge but exactly on none (nearest_edge_distance is 0 only there).
+  for (const std::string name : {"slivers", "mesh", "fan"}) {
+    const auto prepared = quick_scene(name, "1/256");
+    const Differences d =
+        differences_from_oracle(tri::ch10::cairo_write_counts, prepared.scene.width,
+                                prepared.scene.height, prepared.triangles);
+    CAPTURE(name, d.missed, d.extra);
+    CHECK(d.missed + d.extra > 0);
+    for (const double distance : d.edge_distances) {
+      CAPTURE(distance);
+      CHECK(distance > 0);
+      CHECK(distance < 0.01);
+    }
   }
 }
 

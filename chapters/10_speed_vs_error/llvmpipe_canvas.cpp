@@ -96,7 +96,6 @@ std::string LlvmpipeCanvas::renderer() const {
   return name == nullptr ? "unknown" : reinterpret_cast<const char*>(name);
 }
 
-// [listing upload_and_draw]
 void LlvmpipeCanvas::upload(std::span<const SceneTriangle> triangles) {
   std::vector<Vertex> vertices;
   vertices.reserve(triangles.size() * 3);
@@ -121,6 +120,7 @@ void LlvmpipeCanvas::upload(std::span<const SceneTriangle> triangles) {
   }
 }
 
+// [listing llvmpipe_draw]
 void LlvmpipeCanvas::draw() {
   glDrawArrays(GL_TRIANGLES, 0, context_->vertices);
   glFinish();

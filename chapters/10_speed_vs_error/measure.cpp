@@ -9,7 +9,6 @@
 
 namespace tri::ch10 {
 
-// [listing prepare_scene]
 PreparedScene prepare_scene(const SuiteScene& suite, std::size_t error_triangle_limit) {
   PreparedScene prepared{suite, generate_scene(suite.recipe), {}, {}};
   prepared.triangles = scene_triangles(prepared.scene);
@@ -22,7 +21,6 @@ PreparedScene prepare_scene(const SuiteScene& suite, std::size_t error_triangle_
   }
   return prepared;
 }
-// [/listing]
 
 FillCeilings measure_fill_ceilings(int width, int height, int threads, const TimingPlan& plan) {
   Canvas canvas(width, height);
@@ -83,7 +81,6 @@ Measurement row_for(std::string_view name, std::string_view chapter, std::string
 
 }  // namespace
 
-// [listing measure]
 std::vector<Timing> time_algorithms(std::span<const TriangleAlgorithm> algorithms,
                                     const PreparedScene& prepared, const TimingPlan& plan) {
   Canvas canvas = make_canvas(prepared.scene);  // no write counts: they would be timed too
@@ -97,6 +94,7 @@ std::vector<Timing> time_algorithms(std::span<const TriangleAlgorithm> algorithm
   return time_interleaved(draws, plan);
 }
 
+// [listing measure]
 Measurement measure(const TriangleAlgorithm& algorithm, const PreparedScene& prepared,
                     const Timing& timing, const FillCeilings& ceilings) {
   Measurement m = row_for(algorithm.name, algorithm.chapter, rule_name(algorithm.rule),

@@ -3,12 +3,17 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
+#include <limits>
 #include <span>
 #include <string>
 #include <vector>
 
 #include "chapters/10_speed_vs_error/coverage_measure.hpp"
+#include "chapters/10_speed_vs_error/suites.hpp"
+#include "common/canvas.hpp"
 #include "measure/area_error.hpp"
 #include "measure/error_metrics.hpp"
 #include "measure/registry.hpp"
@@ -43,6 +48,60 @@ inline std::size_t differing_pixels(const std::vector<std::uint32_t>& a,
   std::size_t n = 0;
   for (std::size_t i = 0; i < a.size() && i < b.size(); ++i) n += a[i] != b[i];
   return n + (a.size() > b.size() ? a.size() - b.size() : b.size() - a.size());
+}
+
+/// The distance from pixel centre c to the nearest edge of any of the triangles: exactly 0 when c
+/// lies on an edge (the cross product is exact for the suites' 1/256-grid coordinates below 2^15).
+inline double nearest_edge_distance(glm::dvec2 c, std::span<const SceneTriangle> triangles) {
+  double nearest = std::numeric_limits<double>::infinity();
+  for (const SceneTriangle& t : triangles) {
+    for (int k = 0; k < 3; ++k) {
+      const glm::dvec2 a = t.vertices[k], d = t.vertices[(k + 1) % 3] - a;
+      const double length2 = d.x * d.x + d.y * d.y;
+      const double along =
+          std::clamp(length2 > 0 ? ((c - a).x * d.x + (c - a).y * d.y) / length2 : 0.0, 0.0, 1.0);
+      const double cross = d.x * (c - a).y - d.y * (c - a).x;
+      // Within the segment the distance is |cross| / length, 0 exactly on the line.
+      const double distance = along > 0 && along < 1
+                                  ? std::abs(cross) / std::sqrt(length2)
+                                  : std::hypot((a + along * d - c).x, (a + along * d - c).y);
+      nearest = std::min(nearest, distance);
+    }
+  }
+  return nearest;
+}
+
+/// The prepared scene of the quick suite (the report's default) with this name and grid.
+inline PreparedScene quick_scene(const std::string& name, const std::string& grid) {
+  const auto settings = bench_settings(SuiteSize::quick);
+  const auto suite = std::find_if(settings.scenes.begin(), settings.scenes.end(),
+                                  [&](auto& s) { return s.name == name && s.grid == grid; });
+  REQUIRE(suite != settings.scenes.end());
+  return prepare_scene(*suite, 0);
+}
+
+/// Where a peer's write counts differ from the oracle's on one scene: missed and extra writes, and
+/// the distance from each differing pixel's centre to the nearest edge of any triangle.
+struct Differences {
+  std::uint64_t missed = 0, extra = 0;
+  std::vector<double> edge_distances;
+};
+
+inline Differences differences_from_oracle(const CountingDraw& write_counts, int width, int height,
+                                           std::span<const SceneTriangle> triangles) {
+  const auto drawn = write_counts(width, height, triangles).counts;
+  const auto truth = oracle_counts(width, height, triangles).counts;
+  Differences d;
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      const std::size_t i = pixel_index(x, y, width);
+      if (drawn[i] == truth[i]) continue;
+      d.missed += truth[i] > drawn[i] ? truth[i] - drawn[i] : 0;
+      d.extra += drawn[i] > truth[i] ? drawn[i] - truth[i] : 0;
+      d.edge_distances.push_back(nearest_edge_distance({x, y}, triangles));
+    }
+  }
+  return d;
 }
 
 /// A square from (1, 1) to (6, 6) in two triangles on an 8x8 canvas: 5x5 pixel centres inside
