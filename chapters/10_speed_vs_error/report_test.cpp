@@ -293,7 +293,7 @@ TEST_CASE("The exact algorithm is drawn on the exact floor of the plot",
           "[10_speed_vs_error][step5][report]") {
   const auto summaries = tri::ch10::summarize(tiny_run().report.rows);
   const tri::ch10::PlotLayout layout;
-  const tri::ch10::ErrorAxis axis = tri::ch10::error_axis_for(summaries, layout);
+  const tri::ErrorAxis axis = tri::ch10::error_axis_for(summaries, layout);
   for (const auto& s : summaries) {
     CAPTURE(s.algorithm);
     if (s.algorithm == "fixed_point_8") CHECK(axis.position(s.error_rate()) == axis.zero_position);
