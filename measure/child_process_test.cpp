@@ -16,14 +16,13 @@ struct Answer {
 
 }  // namespace
 
-TEST_CASE("A child process returns its result to the parent",
-          "[10_speed_vs_error][child_process]") {
+TEST_CASE("A child process returns its result to the parent", "[measure][child_process]") {
   const Answer answer = tri::run_in_child<Answer>([] { return Answer{::getpid(), 2.5}; });
   CHECK(answer.value == 2.5);
   CHECK(answer.pid != ::getpid());  // it really ran elsewhere
 }
 
-TEST_CASE("What a child changes stays in the child", "[10_speed_vs_error][child_process]") {
+TEST_CASE("What a child changes stays in the child", "[measure][child_process]") {
   ::unsetenv("TRI_CHILD_PROCESS_TEST");
   const int seen = tri::run_in_child<int>([] {
     ::setenv("TRI_CHILD_PROCESS_TEST", "1", 1);
@@ -33,15 +32,14 @@ TEST_CASE("What a child changes stays in the child", "[10_speed_vs_error][child_
   CHECK(std::getenv("TRI_CHILD_PROCESS_TEST") == nullptr);
 }
 
-TEST_CASE("A child's exception reaches the parent with its message",
-          "[10_speed_vs_error][child_process]") {
+TEST_CASE("A child's exception reaches the parent with its message", "[measure][child_process]") {
   CHECK_THROWS_WITH(tri::run_in_child<int>(
                         []() -> int { throw std::runtime_error("no GL context in the child"); }),
                     "no GL context in the child");
 }
 
 TEST_CASE("A child that dies without answering is reported, not trusted",
-          "[10_speed_vs_error][child_process]") {
+          "[measure][child_process]") {
   CHECK_THROWS_WITH(tri::run_in_child<int>([]() -> int { ::_exit(3); }),
                     "a child process exited with status 3 without an answer");
   CHECK_THROWS_WITH(tri::run_in_child<int>([]() -> int {

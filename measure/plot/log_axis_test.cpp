@@ -3,15 +3,14 @@
 
 #include <catch2/catch.hpp>
 
-#include "measure/plot/log_axis.hpp"
 #include "common/random.hpp"
+#include "measure/plot/log_axis.hpp"
 
 using tri::DecadeRange;
 using tri::ErrorAxis;
 using tri::LogScale;
 
-TEST_CASE("A log scale puts each decade an equal distance apart",
-          "[10_speed_vs_error][step5][log_axis]") {
+TEST_CASE("A log scale puts each decade an equal distance apart", "[measure][log_axis]") {
   const LogScale scale{-3, 1, 100, 500};  // four decades over 400 px
   CHECK(scale.position(1e-3) == Approx(100));
   CHECK(scale.position(1e-2) == Approx(200));
@@ -20,7 +19,7 @@ TEST_CASE("A log scale puts each decade an equal distance apart",
   CHECK(scale.position(std::sqrt(10.0)) == Approx(450));
 }
 
-TEST_CASE("A log scale is monotonic, growing either way", "[10_speed_vs_error][step5][log_axis]") {
+TEST_CASE("A log scale is monotonic, growing either way", "[measure][log_axis]") {
   const LogScale across{-6, 2, 90, 720};
   const LogScale upward{0, 4, 560, 80};  // SVG y: larger values higher up, smaller y
   tri::Random random(909);
@@ -34,7 +33,7 @@ TEST_CASE("A log scale is monotonic, growing either way", "[10_speed_vs_error][s
 }
 
 TEST_CASE("Values beyond the decades, zero and negatives are clamped to the ends",
-          "[10_speed_vs_error][step5][log_axis]") {
+          "[measure][log_axis]") {
   const LogScale scale{-2, 2, 0, 400};
   CHECK(scale.position(1e-9) == 0);
   CHECK(scale.position(0.0) == 0);
@@ -44,7 +43,7 @@ TEST_CASE("Values beyond the decades, zero and negatives are clamped to the ends
 }
 
 TEST_CASE("An error of 0 is drawn at the floor, left of every positive error",
-          "[10_speed_vs_error][step5][log_axis]") {
+          "[measure][log_axis]") {
   const ErrorAxis axis{{-6, -1, 160, 720}, 125};
   CHECK(axis.position(0.0) == 125);
   for (const double rate : {1e-12, 1e-6, 1e-3, 0.5, 10.0}) {
@@ -54,7 +53,7 @@ TEST_CASE("An error of 0 is drawn at the floor, left of every positive error",
 }
 
 TEST_CASE("The decades covering a set of values are rounded outward to whole decades",
-          "[10_speed_vs_error][step5][log_axis]") {
+          "[measure][log_axis]") {
   const auto covering = [](std::vector<double> values) {
     const DecadeRange d = tri::decades_covering(values);
     return std::make_pair(d.low, d.high);
