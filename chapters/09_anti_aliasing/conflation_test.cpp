@@ -53,6 +53,8 @@ TEST_CASE("Coverage composited as alpha leaves seams along a mesh's shared edges
   }
   INFO(seams << " of 320 inner pixels below 1, the lowest " << lowest);
   CHECK(seams > 100);  // every pixel a shared edge crosses
+  CHECK(seams == 212);  // the README's count
+  CHECK(lowest == Approx(0.67).margin(0.005));
   // With coverages c_k that sum to 1, over gives 1 - (1 - c_1)(1 - c_2)... >= 1 - 1/e.
   CHECK(lowest >= 1 - std::exp(-1.0f));
   CHECK(lowest < 0.8f);
