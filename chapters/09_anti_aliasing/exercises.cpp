@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "chapters/09_anti_aliasing/area_oracle.hpp"
+
 namespace tri::ch09::exercises {
 
 double composite_over(std::span<const double> coverages) {
@@ -36,6 +38,25 @@ double fill_rule_coverage(std::span<const Triangle> shapes, glm::ivec2 pixel,
     inside += rule == FillRule::non_zero ? winding != 0 : winding % 2 != 0;
   }
   return static_cast<double>(inside) / static_cast<double>(pattern.offsets.size());
+}
+
+std::vector<Fraction> accumulated_row(const Triangle& triangle, int row, int width) {
+  std::vector<Fraction> buffer(static_cast<std::size_t>(width) + 1, Fraction(0));
+  for (std::size_t k = 0; k < 3; ++k) {
+    for (int x = 0; x < width; ++x) {
+      const EdgeInPixelRow parts = edge_in_pixel_row(triangle[k], triangle[(k + 1) % 3], {x, row});
+      const auto at = static_cast<std::size_t>(x);
+      buffer[at] = buffer[at] + parts.area();
+      buffer[at + 1] = buffer[at + 1] + (parts.inside_height - parts.area());
+    }
+  }
+  std::vector<Fraction> coverages;
+  Fraction running = 0;
+  for (int x = 0; x < width; ++x) {
+    running = running + buffer[static_cast<std::size_t>(x)];
+    coverages.push_back(Fraction(0) - running);
+  }
+  return coverages;
 }
 
 }  // namespace tri::ch09::exercises

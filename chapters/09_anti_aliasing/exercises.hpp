@@ -4,9 +4,11 @@
 #pragma once
 
 #include <span>
+#include <vector>
 
 #include <glm/vec2.hpp>
 
+#include "chapters/09_anti_aliasing/fraction.hpp"
 #include "chapters/09_anti_aliasing/sampling.hpp"
 #include "common/triangle_algorithm.hpp"
 
@@ -36,5 +38,12 @@ enum class FillRule {
 /// Vertices on the 1/256 grid, as sampled_coverage requires.
 double fill_rule_coverage(std::span<const Triangle> shapes, glm::ivec2 pixel,
                           const SamplePattern& pattern, FillRule rule);
+
+/// Exercise 5 · font-rs's accumulation buffer for pixel row `row`, columns 0 .. width - 1, of a
+/// counter-clockwise triangle (y up) within those columns: each edge piece adds its area (its
+/// height times its distance to the pixel's right side) to its own pixel and the rest of its
+/// height to the next pixel; a running sum along the row then gives minus each pixel's coverage.
+/// Returns the coverages. Use edge_in_pixel_row() for the pieces.
+std::vector<Fraction> accumulated_row(const Triangle& triangle, int row, int width);
 
 }  // namespace tri::ch09::exercises

@@ -6,6 +6,9 @@
 #include <cmath>
 #include <vector>
 
+#include "chapters/09_anti_aliasing/area_oracle.hpp"
+#include "chapters/09_anti_aliasing/test_triangles.hpp"
+
 namespace tri::ch09::exercises {
 
 TEST_CASE("Exercise 1: coverages composited over give 1 - (1 - c1)(1 - c2)..., never below 1 - 1/e",
@@ -85,6 +88,33 @@ TEST_CASE(
   }
   CHECK(sampled_coverage(b, {4, -3}, pattern) > 0);
   CHECK(sampled_coverage(a, {4, -3}, pattern) == 0);
+}
+
+TEST_CASE(
+    "Exercise 5: font-rs's accumulation buffer, summed along the row, gives every pixel its "
+    "exact coverage",
+    "[09_anti_aliasing][step4]") {
+  // The triangle of the step 1 and step 4 figures, by hand: pixels 0 to 3 of row 0 hold
+  // -1/2, -1/2 + 1/12, 5/12 + 5/12 and 1/12; the running sums are -1/2, -11/12, -1/12 and 0.
+  const Triangle figure = {{{-0.5, -1.5}, {2.5, -1.5}, {0.5, 1.5}}};
+  const std::vector<Fraction> row = accumulated_row(figure, 0, 5);
+  REQUIRE(row.size() == 5);
+  CHECK(row[0] == Fraction(1, 2));
+  CHECK(row[1] == Fraction(11, 12));
+  CHECK(row[2] == Fraction(1, 12));
+  CHECK(row[3] == Fraction(0));
+  for (const Triangle& random : test::random_triangles(40, 44, {1, 1}, {9, 9})) {
+    const glm::dvec2 ab = random[1] - random[0], ac = random[2] - random[0];
+    const Triangle t =
+        ab.x * ac.y - ab.y * ac.x >= 0 ? random : Triangle{{random[0], random[2], random[1]}};
+    for (int y = 0; y <= 10; ++y) {
+      const std::vector<Fraction> coverages = accumulated_row(t, y, 11);
+      for (int x = 0; x <= 10; ++x) {
+        INFO("pixel " << x << ", " << y);
+        CHECK(coverages[static_cast<std::size_t>(x)] == exact_coverage(t, {x, y}));
+      }
+    }
+  }
 }
 
 }  // namespace tri::ch09::exercises
