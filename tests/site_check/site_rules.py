@@ -16,7 +16,7 @@ HARD_CASES_PAGE = "hard_cases.html"
 # The other Markdown pages: opened, and their figures and links checked, where the site has them.
 OTHER_PAGES = ("design.html", "playground.html", "fuzzing.html")
 # The report chapter's plot, which the main page shows once that chapter exists.
-SPEED_VS_ERROR_CHAPTER = 9
+SPEED_VS_ERROR_CHAPTER = 10
 SPEED_VS_ERROR_PLOT = "10_speed_vs_error.svg"
 # A chapter's link whose text starts with an arrow left leads to the previous chapter, one whose
 # text ends with an arrow right to the next one.

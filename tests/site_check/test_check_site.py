@@ -15,7 +15,7 @@ from pathlib import Path
 
 HERE = Path(__file__).resolve().parent
 CHECKER = HERE / "check_site.py"
-CHAPTERS = (1, 2, 3, 9)  # a gap, as while chapters 04-08 are being written; 09 needs the plot
+CHAPTERS = (1, 2, 3, 10)  # a gap, as while chapters 04-09 are being written; 10 needs the plot
 
 
 def one_pixel_png():
@@ -94,7 +94,7 @@ def correct_site(chapters=CHAPTERS):
         "navtreedata.js": f'var NAVTREE = [["Site", "index.html", [{", ".join(entries)}]]];',
         "navtree.js": NAVTREE_JS,
         "index.html": page("Main", f'<h2 id="map">Chapter map</h2><ul>{chapter_map}</ul>'
-                           f'<img src="cover.png" alt="">{plot if 9 in chapters else ""}'),
+                           f'<img src="cover.png" alt="">{plot if 10 in chapters else ""}'),
         "hard_cases.html": page("Hard cases", '<p><a href="chapter01.html">01</a></p>'),
         "cover.png": one_pixel_png(),
         "10_speed_vs_error.svg": PLOT_SVG,
@@ -149,9 +149,9 @@ class CheckerTest(unittest.TestCase):
 
     def test_a_correct_site_passes(self):
         status, output = self.run_checker(correct_site(),
-                                          ("01_a", "02_b", "03_c", "09_d", "notes"))
+                                          ("01_a", "02_b", "03_c", "10_d", "notes"))
         self.assertEqual(status, 0, output)
-        self.assertIn("6 pages opened (4 chapters: 01, 02, 03, 09)", output)
+        self.assertIn("6 pages opened (4 chapters: 01, 02, 03, 10)", output)
         self.assertIn("site check: passed", output)
 
     def test_an_image_file_that_is_missing_fails(self):
@@ -197,7 +197,7 @@ class CheckerTest(unittest.TestCase):
                          '["Chapter 02", "chapter02.html", null]')
         self.assert_edit_fails_with(
             ("navtreedata.js", f"{first}, {second}", f"{second}, {first}"),
-            "navigation tree: the chapters are out of order: 02, 01, 03, 09")
+            "navigation tree: the chapters are out of order: 02, 01, 03, 10")
 
     def test_a_broken_link_in_the_navigation_tree_fails(self):
         self.assert_edit_fails_with(
@@ -235,7 +235,7 @@ class CheckerTest(unittest.TestCase):
 
     def test_a_chapter_without_an_svg_diagram_fails(self):
         self.assert_edit_fails_with(
-            ("chapter10.html", diagram(9), ""),
+            ("chapter10.html", diagram(10), ""),
             "chapter10.html: no SVG diagram that loaded")
 
     def test_a_chapter_whose_svg_diagram_does_not_load_fails(self):
@@ -248,14 +248,14 @@ class CheckerTest(unittest.TestCase):
             ("index.html", '<li><a href="chapter03.html">03</a></li>', ""),
             "index.html: the chapter map does not link chapter03.html")
 
-    def test_a_main_page_without_the_speed_plot_fails_once_chapter_09_exists(self):
+    def test_a_main_page_without_the_speed_plot_fails_once_chapter_10_exists(self):
         self.assert_edit_fails_with(
             ("index.html",
              '<object type="image/svg+xml" data="10_speed_vs_error.svg"></object>', ""),
             "index.html: chapter 10 exists but the main page does not "
             "show 10_speed_vs_error.svg")
 
-    def test_the_speed_plot_is_not_required_before_chapter_09_exists(self):
+    def test_the_speed_plot_is_not_required_before_chapter_10_exists(self):
         status, output = self.run_checker(correct_site(chapters=(1, 2)))
         self.assertEqual(status, 0, output)
 
