@@ -300,6 +300,10 @@ void PixelDiagram::legend_mark(std::string text, PixelMark mark, Color color) {
 void PixelDiagram::legend_line(std::string text, Color color, bool dashed) {
   legend_.push_back({LegendEntry::Kind::line, std::move(text), color, PixelMark::ring, dashed});
 }
+void PixelDiagram::legend_point(std::string text, Color color, double radius) {
+  legend_.push_back(
+      {LegendEntry::Kind::point, std::move(text), color, PixelMark::ring, false, radius});
+}
 void PixelDiagram::legend_note(std::string text) {
   legend_.push_back({LegendEntry::Kind::note, std::move(text), diagram_colors::black});
 }
@@ -443,6 +447,11 @@ std::string PixelDiagram::legend_markup() const {
           out += line_element(centre - glm::dvec2(legend_swatch / 2, 0),
                               centre + glm::dvec2(legend_swatch / 2, 0), entry->color, 2.5,
                               entry->dashed);
+          break;
+        case LegendEntry::Kind::point:
+          out += "<circle cx=\"" + unit(centre.x) + "\" cy=\"" + unit(centre.y) + "\" r=\"" +
+                 unit(entry->radius) + "\" fill=\"" + hex(entry->color) +
+                 "\" stroke=\"#ffffff\" stroke-width=\"1\"/>\n";
           break;
         case LegendEntry::Kind::note:
           out += text_element(x, y + 12, entry->text, "start", diagram_colors::black, 12, false);

@@ -98,6 +98,8 @@ class PixelDiagram {
   void legend_fill(std::string text, Color color);
   void legend_mark(std::string text, PixelMark mark, Color color = diagram_colors::black);
   void legend_line(std::string text, Color color, bool dashed = false);
+  /// A dot as point() draws it, radius in SVG units (e.g. a sample point).
+  void legend_point(std::string text, Color color, double radius = 4);
   /// A line of plain text under the legend.
   void legend_note(std::string text);
 
@@ -117,11 +119,12 @@ class PixelDiagram {
 
  private:
   struct LegendEntry {
-    enum class Kind { fill, mark, line, note } kind;
+    enum class Kind { fill, mark, line, note, point } kind;
     std::string text;
     Color color;
     PixelMark mark = PixelMark::ring;
     bool dashed = false;
+    double radius = 4;
   };
 
   bool in_range(glm::ivec2 pixel) const noexcept;

@@ -74,6 +74,18 @@ TEST_CASE("A pixel diagram has its title, pixel numbers and every legend entry i
   CHECK(svg.find("stroke-dasharray") != std::string::npos);
 }
 
+TEST_CASE("A legend dot is drawn beside its text with the colour and radius asked for",
+          "[common][pixel_diagram]") {
+  PixelDiagram diagram({0, 0}, {1, 1}, "t", 24);
+  diagram.show_centres(false);
+  const std::string without = diagram.svg();
+  diagram.legend_point("a sample inside", dc::blue, 3);
+  const std::string svg = diagram.svg();
+  CHECK(svg.find(">a sample inside</text>") != std::string::npos);
+  CHECK(svg.find("r=\"3\" fill=\"#0072b2\"") != std::string::npos);
+  CHECK(without.find("<circle") == std::string::npos);
+}
+
 TEST_CASE("A pixel diagram shows pixel centres on zoomed grids and can hide them",
           "[common][pixel_diagram]") {
   PixelDiagram zoomed({0, 0}, {3, 3}, "t", 24);

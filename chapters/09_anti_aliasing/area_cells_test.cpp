@@ -53,7 +53,44 @@ void check_against_oracle(const std::vector<Triangle>& triangles, Blend blend = 
   }
 }
 
+// The triangle wound counter-clockwise (y up), as the row cells walk it.
+Triangle counter_clockwise(const Triangle& t) {
+  const glm::dvec2 ab = t[1] - t[0], ac = t[2] - t[0];
+  return ab.x * ac.y - ab.y * ac.x >= 0 ? t : Triangle{{t[0], t[2], t[1]}};
+}
+
 }  // namespace
+
+TEST_CASE("Step 1 measures each edge piece from the pixel's left side, the cells to its right side",
+          "[09_anti_aliasing][step4]") {
+  for (const Triangle& random : test::random_triangles(60, 43, {1, 1}, {9, 9})) {
+    const Triangle t = counter_clockwise(random);
+    INFO(describe(t));
+    for (int row = 0; row <= 10; ++row) {
+      RowCells cells;
+      cells.start_row(12);
+      add_edges_in_row(cells, t, row);
+      double running_cover = 0;
+      for (int x = 0; x <= 10; ++x) {
+        running_cover += cells.cover(x);
+        Fraction from_left = 0, area = 0, cover = 0;
+        for (std::size_t k = 0; k < 3; ++k) {
+          const glm::dvec2 a = t[k], b = t[(k + 1) % 3];
+          const EdgeInPixelRow parts = edge_in_pixel_row(a, b, {x, row});
+          CHECK(edge_area_in_pixel(a, b, {x, row}) == parts.from_left());  // step 1: from the left
+          from_left = from_left + parts.from_left();
+          area = area + parts.area();
+          cover = cover + parts.cover();
+        }
+        const Fraction coverage = exact_coverage(t, {x, row});
+        CHECK(from_left == coverage);                              // counter-clockwise: +coverage
+        CHECK(area + cover == Fraction(0) - coverage);             // the mirror: -coverage
+        CHECK(std::abs(cells.area(x) - area.to_double()) < 1e-9);  // step 4: to the right side
+        CHECK(std::abs(running_cover - cover.to_double()) < 1e-9);
+      }
+    }
+  }
+}
 
 TEST_CASE("The row cells give each pixel the exact area, within a float's rounding",
           "[09_anti_aliasing][step4]") {

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <stdexcept>
+#include <vector>
 
 namespace tri::ch09 {
 namespace {
@@ -158,6 +159,47 @@ std::vector<PixelCoverage> exact_coverages(const Triangle& triangle) {
     }
   }
   return covered;
+}
+
+Fraction edge_area_in_pixel(glm::dvec2 a, glm::dvec2 b, glm::ivec2 pixel) {
+  require_on_oracle_grid({{a, b, b}});
+  return edge_area(to_grid(a), to_grid(b), pixel_square(pixel)) / Fraction(unit * unit);
+}
+
+EdgeInPixelRow edge_in_pixel_row(glm::dvec2 a_pixels, glm::dvec2 b_pixels, glm::ivec2 pixel) {
+  require_on_oracle_grid({{a_pixels, b_pixels, b_pixels}});
+  const GridPoint a = to_grid(a_pixels), b = to_grid(b_pixels);
+  const GridBox box = pixel_square(pixel);
+  EdgeInPixelRow parts;
+  const std::int64_t low = std::max(std::min(a.y, b.y), box.y0);
+  const std::int64_t high = std::min(std::max(a.y, b.y), box.y1);
+  if (a.y == b.y || low >= high) return parts;
+  const Fraction slope(b.x - a.x, b.y - a.y);  // dx/dy
+  const auto x_at = [&](Fraction y) { return Fraction(a.x) + (y - Fraction(a.y)) * slope; };
+  // The heights where the edge crosses the pixel's sides split it into at most three parts.
+  std::vector<Fraction> ys = {Fraction(low), Fraction(high)};
+  if (a.x != b.x) {
+    for (const std::int64_t x : {box.x0, box.x1}) {
+      const Fraction y = Fraction(a.y) + (Fraction(x) - Fraction(a.x)) / slope;
+      if (Fraction(low) < y && y < Fraction(high)) ys.push_back(y);
+    }
+  }
+  std::sort(ys.begin(), ys.end());
+  const Fraction sign = b.y > a.y ? 1 : -1;
+  const Fraction grid_unit(unit);
+  for (std::size_t k = 0; k + 1 < ys.size(); ++k) {
+    const Fraction height = sign * (ys[k + 1] - ys[k]) / grid_unit;
+    const Fraction mean_x = (x_at(ys[k]) + x_at(ys[k + 1])) / 2;
+    if (mean_x < Fraction(box.x0)) {
+      parts.left_height = parts.left_height + height;
+    } else if (Fraction(box.x1) < mean_x) {
+      parts.right_height = parts.right_height + height;
+    } else {
+      parts.inside_height = height;
+      parts.inside_mean_x = (mean_x - Fraction(box.x0)) / grid_unit;
+    }
+  }
+  return parts;
 }
 
 std::uint16_t coverage_16(const Fraction& coverage) {

@@ -39,6 +39,33 @@ struct PixelCoverage {
 /// Every pixel with coverage above zero, row by row from the lowest y, each row left to right.
 std::vector<PixelCoverage> exact_coverages(const Triangle& triangle);
 
+/// One edge a -> b inside pixel's row of pixels (the band pixel.y - 1/2 <= y <= pixel.y + 1/2),
+/// split at the pixel's left and right sides. Heights are signed: positive where the edge rises.
+/// Exact, in pixels. Step 1 and step 4 add up the same pieces measured from opposite sides.
+struct EdgeInPixelRow {
+  Fraction left_height;    ///< the part left of the pixel
+  Fraction inside_height;  ///< the part across the pixel
+  Fraction right_height;   ///< the part right of the pixel
+  Fraction inside_mean_x;  ///< the inside part's mean x, from the pixel's left side (0 to 1)
+
+  /// Step 1's share, h measured from the pixel's left side: the trapezoid between the inside part
+  /// and the left side, plus the whole width for the part right of the pixel.
+  Fraction from_left() const { return inside_height * inside_mean_x + right_height; }
+  /// Step 4's area in the cell: the trapezoid between the inside part and the right side.
+  Fraction area() const { return inside_height * (Fraction(1) - inside_mean_x); }
+  /// Step 4's cover: the part left of the cell counts for the cell's whole width.
+  Fraction cover() const { return left_height; }
+};
+
+/// Step 1's part of one edge a -> b for pixel (i, j): the listing's edge_area, the integral of
+/// h = clamp(x, left side, right side) - left side along the edge's part in the pixel's rows.
+Fraction edge_area_in_pixel(glm::dvec2 a, glm::dvec2 b, glm::ivec2 pixel);
+
+/// Step 1's edge split for one pixel (vertices on the 1/256 grid, as exact_coverage requires).
+/// For a counter-clockwise triangle (y up) the three edges' from_left() add up to +coverage and
+/// their area() + cover() to -coverage: the two steps measure from opposite sides.
+EdgeInPixelRow edge_in_pixel_row(glm::dvec2 a, glm::dvec2 b, glm::ivec2 pixel);
+
 /// A coverage as the 16-bit value the PGM output stores: round(65535 x c) with halves rounded
 /// up, c clamped to [0, 1] first.
 std::uint16_t coverage_16(const Fraction& coverage);

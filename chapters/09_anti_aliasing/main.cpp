@@ -2,6 +2,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -55,6 +56,142 @@ tri::SvgFigure exact_coverage_figure() {
   return {"09_exact_coverage", d.svg()};
 }
 
+// The part of segment a -> b inside the box [x0, x1] x [y0, y1] (Liang-Barsky), if any: where
+// the figures draw an edge's piece.
+std::optional<std::array<glm::dvec2, 2>> clip_segment(glm::dvec2 a, glm::dvec2 b, glm::dvec2 low,
+                                                      glm::dvec2 high) {
+  double t0 = 0, t1 = 1;
+  const glm::dvec2 d = b - a;
+  for (int axis = 0; axis < 2; ++axis) {
+    for (const auto& [p, q] :
+         {std::pair{-d[axis], a[axis] - low[axis]}, std::pair{d[axis], high[axis] - a[axis]}}) {
+      if (p == 0) {
+        if (q < 0) return std::nullopt;
+        continue;
+      }
+      const double t = q / p;
+      if (p < 0) t0 = std::max(t0, t);
+      if (p > 0) t1 = std::min(t1, t);
+    }
+  }
+  if (t0 >= t1) return std::nullopt;
+  return std::array<glm::dvec2, 2>{a + t0 * d, a + t1 * d};
+}
+
+// Which side of the pixel a figure measures each edge piece from.
+enum class MeasuredFrom { left_side, right_side };
+
+// A fraction as a learner writes it: "0", "-1", "5/12", with a sign when asked.
+std::string exact_text(const tri::ch09::Fraction& f, bool sign = false) {
+  const std::string text =
+      f.denominator() == 1 ? std::to_string(static_cast<long long>(f.numerator())) : f.text();
+  return sign && !(f < tri::ch09::Fraction(0)) ? "+" + text : text;
+}
+
+// One pixel and the edges in its row, each piece with what it adds: step 1 measures h from the
+// pixel's left side (a piece right of the pixel counts its whole width), step 4 from the right
+// side (a piece left of the pixel counts its whole width: the cover). The legend lists every
+// piece, so the sum can be done by hand.
+tri::SvgFigure edge_pieces_figure(MeasuredFrom from) {
+  // Counter-clockwise (y up): the left edge CA passes left of pixel (1, 0), the right edge BC
+  // rises through it above y = 0 and right of it below.
+  const tri::Triangle t = {{{-0.5, -1.5}, {2.5, -1.5}, {0.5, 1.5}}};
+  const glm::ivec2 pixel{1, 0};
+  const bool left = from == MeasuredFrom::left_side;
+  tri::PixelDiagram d(
+      {-2, -2}, {4, 2},
+      left ? "Step 1: what each edge piece adds to pixel (1, 0), h from its left side"
+           : "Step 4: cover and area of each edge piece in cell (1, 0), to its right side",
+      72);
+  using tri::ch09::Fraction;
+  const Fraction coverage = tri::ch09::exact_coverage(t, pixel);
+  d.fill(pixel, shade(coverage.to_double()));
+  d.frame(pixel, pixel, dc::black, 3);
+  const double x0 = pixel.x - 0.5, x1 = pixel.x + 0.5, y0 = pixel.y - 0.5, y1 = pixel.y + 0.5;
+  const std::array<tri::Color, 3> colors = {dc::blue, dc::green, dc::purple};
+  const std::array<std::string, 3> names = {"AB", "BC", "CA"};
+  Fraction sum = 0;
+  std::string sum_text;
+  for (std::size_t k = 0; k < 3; ++k) {
+    const glm::dvec2 a = t[k], b = t[(k + 1) % 3];
+    const tri::ch09::EdgeInPixelRow parts = tri::ch09::edge_in_pixel_row(a, b, pixel);
+    struct Part {
+      Fraction height, width;  // what it adds is height x width
+      glm::dvec2 low, high;    // where it lies
+      std::string where, width_name;
+      LabelPlace place;
+    };
+    const Fraction mean = left ? parts.inside_mean_x : Fraction(1) - parts.inside_mean_x;
+    const std::array<Part, 3> pieces = {{
+        {parts.left_height,
+         left ? 0 : 1,
+         {-1e9, y0},
+         {x0, y1},
+         "left of the pixel",
+         left ? "h" : "whole width",
+         LabelPlace::left},
+        {parts.inside_height,
+         mean,
+         {x0, y0},
+         {x1, y1},
+         "inside",
+         left ? "mean h" : "mean distance to the right side",
+         LabelPlace::right},
+        {parts.right_height,
+         left ? 1 : 0,
+         {x1, y0},
+         {1e9, y1},
+         "right of the pixel",
+         left ? "whole width" : "distance",
+         LabelPlace::right},
+    }};
+    for (const Part& part : pieces) {
+      if (part.height == Fraction(0)) continue;
+      const auto piece = clip_segment(a, b, part.low, part.high);
+      if (!piece) continue;
+      const Fraction adds = part.height * part.width;
+      const glm::dvec2 middle = ((*piece)[0] + (*piece)[1]) / 2.0;
+      if (part.where == "inside") {  // the trapezoid between the piece and the measured side
+        const double side = left ? x0 : x1;
+        for (const glm::dvec2 end : *piece) d.line(end, {side, end.y}, colors[k], 2.5, true);
+        d.line({side, (*piece)[0].y}, {side, (*piece)[1].y}, colors[k], 4);
+      }
+      d.label(middle + glm::dvec2(part.place == LabelPlace::left ? -0.1 : 0.1, 0),
+              names[k] + ": " + exact_text(adds), part.place, colors[k]);
+      d.legend_line(names[k] + " " + part.where + ": height " + exact_text(part.height, true) +
+                        " x " + part.width_name + " " + exact_text(part.width) + " = " +
+                        exact_text(adds),
+                    colors[k]);
+      sum = sum + adds;
+      sum_text += (sum_text.empty() ? "" : " + ") + exact_text(adds);
+    }
+  }
+  d.triangle(t[0], t[1], t[2], dc::vermillion);
+  d.vertex(t[0], "A", LabelPlace::below_right);
+  d.vertex(t[1], "B", LabelPlace::below_left);
+  d.vertex(t[2], "C", LabelPlace::above_right);
+  d.legend_fill("pixel (1, 0), shaded by its coverage " + exact_text(coverage),
+                shade(coverage.to_double()));
+  d.legend_line("the triangle ABC, counter-clockwise (y up); AB lies below the row and adds 0",
+                dc::vermillion);
+  if (left) {
+    d.legend_note("h = x - the pixel's left side, 0 to 1. Sum: " + sum_text + " = " +
+                  exact_text(sum) + " = +coverage.");
+  } else {
+    d.legend_note("Sum of cover and area: " + sum_text + " = " + exact_text(sum) +
+                  "; coverage = -(cover + area) = " + exact_text(Fraction(0) - sum) + ".");
+  }
+  return {left ? "09_step1_edge_parts" : "09_step4_pixel_pieces", d.svg()};
+}
+
+tri::SvgFigure step1_edge_parts_figure() {
+  return edge_pieces_figure(MeasuredFrom::left_side);
+}
+
+tri::SvgFigure step4_pixel_pieces_figure() {
+  return edge_pieces_figure(MeasuredFrom::right_side);
+}
+
 // One panel: the pattern's samples in every pixel, blue inside the triangle and grey outside,
 // each pixel shaded by the fraction of its samples inside.
 tri::PixelDiagram samples_panel(const tri::Triangle& t, const tri::ch09::SamplePattern& pattern,
@@ -85,9 +222,13 @@ tri::PixelDiagram samples_panel(const tri::Triangle& t, const tri::ch09::SampleP
     }
   }
   d.triangle(t[0], t[1], t[2], dc::vermillion);
-  d.legend_fill("shade = fraction of samples inside", shade(0.5));
+  d.legend_point("a sample inside the triangle (counted)", dc::blue, 3);
+  d.legend_point("a sample outside", dc::dark_gray, 2);
+  d.legend_fill("shade = fraction of the pixel's samples inside", shade(0.5));
   d.legend_line("the triangle's edge", dc::vermillion);
-  d.legend_note("Numbers: samples inside, on the pixels the edge crosses.");
+  d.legend_note("Each pixel holds the pattern's " + std::to_string(pattern.offsets.size()) +
+                " samples, placed alike in every pixel; each is decided");
+  d.legend_note("by chapter 07's top-left rule. Numbers: samples inside, where the edge crosses.");
   char note[96];
   std::snprintf(note, sizeof note, "Mean |sampled - exact| over %d pixels: %.3f", touched,
                 error_sum / touched);
@@ -197,5 +338,6 @@ int main(int argc, char** argv) {
   return tri::run_chapter_program(
       argc, argv, "09_anti_aliasing",
       "Chapter 09, how much of each pixel: exact coverage, samples, row cells, seams.",
-      {exact_coverage_figure, sample_patterns_figure, row_cells_figure, conflation_figure});
+      {exact_coverage_figure, step1_edge_parts_figure, sample_patterns_figure, row_cells_figure,
+       step4_pixel_pieces_figure, conflation_figure});
 }

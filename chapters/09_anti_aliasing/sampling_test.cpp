@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <set>
 #include <utility>
@@ -121,16 +122,23 @@ TEST_CASE("The mean error of a regular grid falls as about n^-1.5, the worst wit
   // a pixel crossed by at most three edges is off by at most 3/n; the rows' errors have random
   // signs and partly cancel, so the mean falls faster, as about sqrt(n)/n^2 = n^-1.5.
   const auto triangles = random_triangles(40, 2026);
+  // The README's table, to its three significant digits.
+  const std::array<std::pair<double, double>, 5> printed = {
+      {{0.170, 0.986}, {0.0639, 0.444}, {0.0220, 0.141}, {0.00761, 0.0671}, {0.00217, 0.0180}}};
   std::vector<double> log_n, log_mean;
   for (const int n : {1, 2, 4, 8, 16}) {
     const auto error = coverage_error(triangles, with(regular_grid(n)));
     INFO("grid " << n << "x" << n << ": mean " << error.mean << ", max " << error.max);
     CHECK(error.max <= 3.0 / n);
+    const auto [mean, max] = printed[log_n.size()];
+    CHECK(error.mean == Approx(mean).epsilon(0.005));
+    CHECK(error.max == Approx(max).epsilon(0.005));
     log_n.push_back(std::log2(n));
     log_mean.push_back(std::log2(error.mean));
   }
   const double mean_slope = slope(log_n, log_mean);
   INFO("slope of log mean error against log n: " << mean_slope);
+  CHECK(mean_slope == Approx(-1.57).margin(0.005));
   CHECK(mean_slope < -1.3);
   CHECK(mean_slope > -1.7);
 }

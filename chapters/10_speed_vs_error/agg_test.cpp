@@ -1,6 +1,8 @@
 // AGG's anti-aliasing rasterizer as a peer: the exact area, to 8 bits.
 #include <catch2/catch.hpp>
 
+#include <cmath>
+
 #include "chapters/10_speed_vs_error/library_peers.hpp"
 #include "chapters/10_speed_vs_error/peer_test_support.hpp"
 
@@ -38,4 +40,22 @@ TEST_CASE("AGG refuses a scene beyond its 24.8 fixed-point range, naming the lim
   scene.primitives.push_back(tri::SceneTriangle{{{{0, 0}, {1e7, 0}, {0, 5}}}});
   CHECK_THROWS_WITH(measure_coverage_peer(tri::ch10::agg_coverage_peer(), scene),
                     Catch::Contains("AGG cannot draw this scene"));
+}
+
+TEST_CASE(
+    "AGG's seam on a fan exceeds the 1/e that compositing alone loses: each thin coverage is "
+    "cut to 8 bits first",
+    "[10_speed_vs_error][agg]") {
+  // Exact coverages composited over lose at most 1/e of a pixel they tile (chapter 09, step 5):
+  // on a mesh, whose pixels hold a few large parts, AGG stays within that and its 8-bit steps.
+  const double bound = std::exp(-1.0);
+  const auto mesh = measure_coverage_peer(tri::ch10::agg_coverage_peer(),
+                                          small_scene(Kind::jittered_grid, 8, 62));
+  CHECK(mesh.error.composed_max <= bound + 3.0 / 255);
+  // At a fan's centre 300 triangles each cover about 1/300 of the pixel: AGG cuts every part to
+  // 8 bits (rounding down) and blends it in 8 bits, so the centre keeps much less than 1 - 1/e.
+  const auto fan =
+      measure_coverage_peer(tri::ch10::agg_coverage_peer(), small_scene(Kind::fan, 8, 64));
+  CHECK(fan.error.max <= 3.0 / 255);  // each triangle alone is still right
+  CHECK(fan.error.composed_max > bound + 0.1);
 }

@@ -255,7 +255,7 @@ class CheckerTest(unittest.TestCase):
             "index.html: chapter 10 exists but the main page does not "
             "show 10_speed_vs_error.svg")
 
-    def test_the_speed_plot_is_not_required_before_chapter_09_exists(self):
+    def test_the_speed_plot_is_not_required_before_chapter_10_exists(self):
         status, output = self.run_checker(correct_site(chapters=(1, 2)))
         self.assertEqual(status, 0, output)
 
