@@ -6,18 +6,12 @@
 
 namespace tri {
 
-std::string_view rule_name(CoverageRule rule) noexcept {
-  switch (rule) {
-    case CoverageRule::top_left:
-      return "top-left";
-    case CoverageRule::inclusive:
-      return "inclusive";
-    case CoverageRule::approximate:
-      return "approximate";
-    case CoverageRule::area:
-      return "area";
+const TriangleAlgorithm* algorithm_with_role(std::span<const TriangleAlgorithm> algorithms,
+                                             Role role) noexcept {
+  for (const TriangleAlgorithm& a : algorithms) {
+    if (a.role == role) return &a;
   }
-  return "approximate";
+  return nullptr;
 }
 
 std::string_view describe(DrawResult result) noexcept {

@@ -14,23 +14,13 @@
 
 #include "common/canvas.hpp"
 #include "common/color.hpp"
+#include "common/drawable.hpp"
 #include "common/scene.hpp"
 
 namespace tri {
 
 /// Three vertices in canvas pixel units (integer values are pixel centres).
 using Triangle = std::array<glm::dvec2, 3>;
-
-/// What an algorithm claims about the pixels it covers.
-enum class CoverageRule {
-  top_left,     ///< exact coverage: centres strictly inside, ties by the top-left rule
-  inclusive,    ///< centres on an edge are always covered (the articles' methods)
-  approximate,  ///< no exactness claimed
-  area,         ///< a fraction of each pixel, not a yes or no (chapter 09's coverage algorithms)
-};
-
-/// The name `raster --list` prints for a rule: "top-left", "inclusive", "approximate" or "area".
-std::string_view rule_name(CoverageRule rule) noexcept;
 
 /// Draws one triangle in one colour. Called only with finite vertices within the scene limits.
 using DrawTriangleFunction = void (*)(Canvas& canvas, const Triangle& triangle, Color color);
@@ -78,7 +68,13 @@ struct TriangleAlgorithm {
   /// Optional: draw restricted to a band of rows (`raster` reports progress inside a huge
   /// triangle).
   DrawTriangleRowsFunction draw_rows = nullptr;
+  Outputs outputs = colour_outputs;  ///< what it writes (narrow_outputs: chapter 08's step 8 too)
+  Role role = Role::none;            ///< a part a measuring program gives it, if any
 };
+
+/// The algorithm whose registration declares this role, or nullptr.
+const TriangleAlgorithm* algorithm_with_role(std::span<const TriangleAlgorithm> algorithms,
+                                             Role role) noexcept;
 
 /// Whether a triangle was drawn or refused before reaching the algorithm.
 enum class DrawResult {

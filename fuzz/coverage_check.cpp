@@ -92,7 +92,7 @@ class Checker {
       findings_.push_back(where + ": refused " + std::to_string(together_refused) +
                           ", one by one " + std::to_string(refused));
     }
-    const bool over = algorithm_.name == "area_cells_over";
+    const bool over = algorithm_.composites_over;
     const double allowed =
         algorithm_.sample_pattern ? 0 : tolerance * static_cast<double>(alone.size());
     PixelTally differs;

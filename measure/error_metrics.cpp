@@ -9,6 +9,7 @@
 #include "chapters/07_exact_coverage/algorithms.hpp"
 #include "chapters/07_exact_coverage/coverage_oracle.hpp"
 #include "common/canvas.hpp"
+#include "measure/drawable.hpp"
 
 namespace tri {
 namespace {
@@ -72,12 +73,10 @@ ErrorReport measure_error(const TriangleAlgorithm& algorithm, const Scene& scene
 
 namespace {
 
-// Chapter 07's registered exact_oracle: the truth is the algorithm the report lists, not a copy.
+// Chapter 07's registered oracle: the truth is the algorithm the report lists, not a copy.
 const TriangleAlgorithm& registered_oracle() {
-  const auto algorithms = ch07::triangle_algorithms();
-  const auto oracle = std::find_if(algorithms.begin(), algorithms.end(),
-                                   [](const auto& a) { return a.name == "exact_oracle"; });
-  if (oracle == algorithms.end()) throw std::logic_error("chapter 07 registers no exact_oracle");
+  const TriangleAlgorithm* oracle = algorithm_with_role(ch07::triangle_algorithms(), Role::oracle);
+  if (oracle == nullptr) throw std::logic_error("chapter 07 registers no oracle");
   return *oracle;
 }
 

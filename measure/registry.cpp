@@ -11,13 +11,30 @@
 
 namespace tri {
 
-std::vector<TriangleAlgorithm> registered_algorithms() {
-  std::vector<TriangleAlgorithm> all;
+namespace {
+
+// Visits each chapter's own registration, in chapter order: every list here is made from these.
+template <class Visit>
+void for_each_registered(Visit visit) {
   for (const auto chapter :
        {ch03::triangle_algorithms(), ch04::triangle_algorithms(), ch05::triangle_algorithms(),
         ch06::triangle_algorithms(), ch07::triangle_algorithms(), ch08::triangle_algorithms()}) {
-    all.insert(all.end(), chapter.begin(), chapter.end());
+    for (const TriangleAlgorithm& a : chapter) visit(a);
   }
+}
+
+}  // namespace
+
+std::vector<TriangleAlgorithm> registered_algorithms() {
+  std::vector<TriangleAlgorithm> all;
+  for_each_registered([&](const TriangleAlgorithm& a) { all.push_back(a); });
+  return all;
+}
+
+std::vector<Drawable> registered_drawables() {
+  std::vector<Drawable> all;
+  for_each_registered([&](const TriangleAlgorithm& a) { all.push_back(describe(a)); });
+  for (const ch09::AreaAlgorithm& a : ch09::area_algorithms()) all.push_back(describe(a));
   return all;
 }
 

@@ -8,8 +8,13 @@
 
 #include "chapters/09_anti_aliasing/area_algorithms.hpp"
 #include "common/triangle_algorithm.hpp"
+#include "measure/drawable.hpp"
 
 namespace tri {
+
+/// Every registered drawable, in chapter order: the colour algorithms of chapters 03 to 08, then
+/// chapter 09's coverage algorithms. `raster`, the tests and the fuzzers ask these descriptions.
+std::vector<Drawable> registered_drawables();
 
 /// All registered triangle algorithms, in chapter order. Tests and the benchmark iterate this, so
 /// an algorithm is covered the moment its chapter lists it.

@@ -13,6 +13,7 @@
 #include <iostream>
 #include <numeric>
 #include <optional>
+#include <span>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -27,6 +28,7 @@
 #include "common/cli.hpp"
 #include "common/printable_text.hpp"
 #include "common/progress.hpp"
+#include "measure/drawable.hpp"
 #include "measure/fill_ceiling.hpp"
 #include "measure/registry.hpp"
 #include "measure/render_scene.hpp"
@@ -105,11 +107,14 @@ std::vector<BenchScene> bench_scenes() {
   return scenes;
 }
 
-// barycentric_double and fixed_point_8 from the registry, then every chapter 08 variant.
+// The registry's speed baseline and the exact algorithm chapter 08 starts from (their declared
+// roles), then every chapter 08 variant.
 std::vector<TriangleAlgorithm> compared_algorithms() {
   std::vector<TriangleAlgorithm> algorithms;
   for (const auto& a : tri::registered_algorithms()) {
-    if (a.name == "barycentric_double" || a.name == "fixed_point_8") algorithms.push_back(a);
+    if (a.role == tri::Role::speed_baseline || a.role == tri::Role::fast_exact_starting) {
+      algorithms.push_back(a);
+    }
   }
   for (const auto& a : tri::ch08::triangle_algorithms()) {
     if (tri::find_algorithm(algorithms, a.name) == nullptr) algorithms.push_back(a);
@@ -192,6 +197,11 @@ std::vector<std::function<void()>> scene_runs(const BenchScene& scene,
   return runs;
 }
 
+// Whether the algorithm declares step 8's narrow canvases among its outputs.
+bool draws_narrow_formats(const TriangleAlgorithm* algorithm) {
+  return algorithm->outputs.has(tri::Output::index8) && algorithm->outputs.has(tri::Output::mask1);
+}
+
 // Step 8's narrow canvases of the scene's size, drawn by fast_spans beside the RGBA8 rows.
 struct NarrowCanvases {
   tri::ch08::IndexCanvas index;
@@ -235,9 +245,13 @@ std::vector<Timing> time_scene(const BenchScene& scene,
       runs, plan, [&](int rounds) { progress.advance(static_cast<std::uint64_t>(rounds)); });
 }
 
-void print_table_header(std::ostream& out) {
-  out << "| scene | algorithm | Mtriangles/s | Mpixels/s | × `barycentric_double` "
-         "| % of ceiling | ms per draw: median (min-max) |\n"
+// The speed column divides by the time of the algorithm whose declared role is the baseline.
+void print_table_header(std::span<const TriangleAlgorithm> algorithms, std::ostream& out) {
+  const TriangleAlgorithm* baseline =
+      tri::algorithm_with_role(algorithms, tri::Role::speed_baseline);
+  out << "| scene | algorithm | Mtriangles/s | Mpixels/s | × `"
+      << (baseline != nullptr ? baseline->name : std::string_view("baseline"))
+      << "` | % of ceiling | ms per draw: median (min-max) |\n"
          "|---|---|---:|---:|---:|---:|---:|\n";
 }
 
@@ -252,16 +266,14 @@ std::string milliseconds(const tri::Spread& seconds) {
 // row, fewer bytes per pixel. No % of ceiling: the ceiling is for 4 bytes per pixel.
 void print_narrow_rows(const BenchScene& scene, const std::vector<const TriangleAlgorithm*>& timed,
                        const std::vector<Timing>& timings, double baseline, std::ostream& out) {
-  const auto spans = std::find_if(timed.begin(), timed.end(), [](const TriangleAlgorithm* a) {
-    return a->name == "fast_spans";
-  });
+  const auto spans = std::find_if(timed.begin(), timed.end(), draws_narrow_formats);
   if (spans == timed.end()) return;
   const double pixels = static_cast<double>(covered_pixels(**spans, scene));
   const double triangles = static_cast<double>(scene.triangles.size());
   const std::array<const char*, 2> formats{"1 byte", "1 bit"};
   for (std::size_t k = 0; k < formats.size(); ++k) {
     const tri::Spread& seconds = timings[2 + timed.size() + k].seconds;
-    out << "|  | `fast_spans`, " << formats[k] << " per pixel | " << std::defaultfloat
+    out << "|  | `" << (*spans)->name << "`, " << formats[k] << " per pixel | " << std::defaultfloat
         << std::setprecision(3) << triangles / seconds.median / 1e6 << " | " << std::fixed
         << std::setprecision(0) << tri::mpix_per_second(pixels, seconds.median) << " | ";
     if (baseline > 0) out << std::setprecision(1) << baseline / seconds.median;
@@ -284,7 +296,7 @@ void print_scene_rows(const BenchScene& scene, const std::vector<const TriangleA
   for (std::size_t i = 0; i < timed.size(); ++i) {
     const TriangleAlgorithm& algorithm = *timed[i];
     const tri::Spread& seconds = timings[i + 2].seconds;
-    if (algorithm.name == "barycentric_double") baseline = seconds.median;
+    if (algorithm.role == tri::Role::speed_baseline) baseline = seconds.median;
     const double pixel_rate =
         tri::mpix_per_second(static_cast<double>(covered_pixels(algorithm, scene)), seconds.median);
     out << "|  | `" << algorithm.name << "`" << (algorithm.threaded ? " (threads)" : "") << " | "
@@ -307,8 +319,7 @@ void benchmark_scene(const BenchScene& scene, const std::vector<const TriangleAl
   std::vector<tri::BatchDrawer> drawers;
   for (const TriangleAlgorithm* algorithm : timed) drawers.emplace_back(*algorithm);
   std::vector<std::function<void()>> runs = scene_runs(scene, drawers, canvas);
-  if (std::any_of(timed.begin(), timed.end(),
-                  [](const TriangleAlgorithm* a) { return a->name == "fast_spans"; })) {
+  if (std::any_of(timed.begin(), timed.end(), draws_narrow_formats)) {
     add_narrow_runs(scene, narrow, runs);
   }
   refuse_absurd_scene(scene, runs, plan, options.force);
@@ -451,7 +462,7 @@ int run(const tri::CliArguments& args, std::ostream& out) {
   bool header_written = false;  // written with the first rows, so a refused run prints no table
   for (const BenchScene& scene : scenes) {
     if (options.probes || scene.name.find(options.scene_filter) == std::string::npos) continue;
-    if (!header_written) print_table_header(out);
+    if (!header_written) print_table_header(algorithms, out);
     header_written = true;
     benchmark_scene(scene, timed, options, out);
   }

@@ -43,8 +43,20 @@ std::optional<PixelFormat> parse_format(std::string_view name) noexcept {
   return std::nullopt;
 }
 
-bool draws_format(const TriangleAlgorithm& algorithm, PixelFormat format) noexcept {
-  return format == PixelFormat::rgba8 || algorithm.name == narrow_format_algorithm;
+Output output_of(PixelFormat format) noexcept {
+  switch (format) {
+    case PixelFormat::index8:
+      return Output::index8;
+    case PixelFormat::mask1:
+      return Output::mask1;
+    case PixelFormat::rgba8:
+      break;
+  }
+  return Output::rgba8;
+}
+
+bool draws_format(const Drawable& drawable, PixelFormat format) noexcept {
+  return drawable.writes(output_of(format));
 }
 
 std::optional<std::string> format_refusal(const Scene& scene, PixelFormat format) {
@@ -64,9 +76,9 @@ std::optional<std::string> format_refusal(const Scene& scene, PixelFormat format
   return std::nullopt;
 }
 
-PixelFormat narrowest_format(const Scene& scene, const TriangleAlgorithm& algorithm) {
+PixelFormat narrowest_format(const Scene& scene, const Drawable& drawable) {
   for (const PixelFormat f : {PixelFormat::mask1, PixelFormat::index8}) {
-    if (draws_format(algorithm, f) && !format_refusal(scene, f)) return f;
+    if (draws_format(drawable, f) && !format_refusal(scene, f)) return f;
   }
   return PixelFormat::rgba8;
 }

@@ -1,7 +1,8 @@
 /// @file
 /// raster --format: the pixel formats a scene can be drawn in (docs/DESIGN.md section 9). RGBA8 is
 /// the shared canvas; index8 (one byte per pixel, a palette of the scene's colours) and mask1 (one
-/// bit per pixel, for a one-colour scene) are chapter 08's step 8 canvases, drawn by fast_spans.
+/// bit per pixel, for a one-colour scene) are chapter 08's step 8 canvases, drawn by the drawables
+/// that declare those outputs (chapter 08's span walker).
 #pragma once
 
 #include <cstddef>
@@ -13,6 +14,7 @@
 #include "common/canvas.hpp"
 #include "common/scene.hpp"
 #include "common/triangle_algorithm.hpp"
+#include "measure/drawable.hpp"
 #include "measure/render_scene.hpp"
 
 namespace tri {
@@ -25,23 +27,22 @@ std::string_view format_name(PixelFormat format) noexcept;
 /// The format a --format value names; "auto" and unknown names give nothing.
 std::optional<PixelFormat> parse_format(std::string_view name) noexcept;
 
-/// The name of the one algorithm that draws the narrow formats.
-inline constexpr std::string_view narrow_format_algorithm = "fast_spans";
+/// The output that holds a format's pixels.
+Output output_of(PixelFormat format) noexcept;
 
-/// Whether the algorithm can draw the format: every algorithm draws rgba8, only
-/// narrow_format_algorithm draws index8 and mask1.
-bool draws_format(const TriangleAlgorithm& algorithm, PixelFormat format) noexcept;
+/// Whether the drawable declares the format among its outputs.
+bool draws_format(const Drawable& drawable, PixelFormat format) noexcept;
 
 /// Why the scene cannot be drawn in the format, or nothing when it can: a narrow format draws
 /// triangles only, index8 holds at most 255 colours and mask1 one.
 std::optional<std::string> format_refusal(const Scene& scene, PixelFormat format);
 
-/// --format auto: the narrowest format that holds the scene and that the algorithm draws.
-PixelFormat narrowest_format(const Scene& scene, const TriangleAlgorithm& algorithm);
+/// --format auto: the narrowest format that holds the scene and that the drawable draws.
+PixelFormat narrowest_format(const Scene& scene, const Drawable& drawable);
 
 /// A narrow format's draw of the scene's triangles (validated as draw_triangles does), kept ready
 /// to repeat for --bench; expanded() gives the RGBA8 canvas it stands for, the same pixels as an
-/// RGBA8 draw by narrow_format_algorithm.
+/// RGBA8 draw by a drawable that declares the narrow formats.
 class NarrowRender {
  public:
   /// Prepares the canvas and palette (precondition: format_refusal(scene, format) is empty and

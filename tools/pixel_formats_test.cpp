@@ -56,9 +56,11 @@ tri::Scene random_scene(tri::Random& random, int colors) {
 
 TEST_CASE("index8 and mask1 expand to the RGBA8 pixels on seeded random scenes",
           "[raster][format]") {
-  const auto algorithms = tri::registered_algorithms();
-  const tri::TriangleAlgorithm* spans =
-      tri::find_algorithm(algorithms, tri::narrow_format_algorithm);
+  const auto drawables = tri::registered_drawables();
+  const auto narrow_drawers = tri::drawables_writing(drawables, tri::Output::index8);
+  REQUIRE(narrow_drawers.size() == 1);  // NarrowRender draws with chapter 08's one span walker
+  REQUIRE(narrow_drawers.front()->writes(tri::Output::mask1));
+  const tri::TriangleAlgorithm* spans = narrow_drawers.front()->colours;
   REQUIRE(spans != nullptr);
   tri::Random random(23);
   std::size_t refusals = 0;

@@ -68,9 +68,8 @@ CommandLine raster_command_line() {
       });
 }
 
-template <class Algorithm>
-void print_list(const std::vector<Algorithm>& algorithms, std::ostream& out) {
-  for (const auto& a : algorithms) {
+void print_list(std::span<const Drawable> drawables, std::ostream& out) {
+  for (const Drawable& a : drawables) {
     out << a.name << '\t' << a.chapter << '\t' << rule_name(a.rule) << '\t' << a.summary << '\n';
   }
 }
@@ -209,8 +208,8 @@ int run_coverage(const CliArguments& args, const Scene& scene, const ch09::AreaA
 // --format, checked before anything is read: the format asked for (nothing for auto, which
 // depends on the scene). Refuses what cannot go together.
 std::optional<PixelFormat> checked_format(const CliArguments& args,
-                                          const TriangleAlgorithm* algorithm,
-                                          const ch09::AreaAlgorithm* area) {
+                                          std::span<const Drawable> drawables,
+                                          const Drawable* drawable) {
   const auto name = args.value("format");
   if (!name) return PixelFormat::rgba8;
   const std::optional<PixelFormat> format = parse_format(*name);
@@ -218,13 +217,19 @@ std::optional<PixelFormat> checked_format(const CliArguments& args,
     throw UsageError("--format must be rgba8, index8, mask1 or auto, not '" +
                      printable_excerpt(*name) + "'");
   }
-  if (area != nullptr) {
-    throw UsageError(std::string(area->name) + " has rule area: --format is for colour pictures");
+  if (drawable != nullptr && !drawable->writes(Output::rgba8)) {
+    throw UsageError(std::string(drawable->name) + " has rule " +
+                     std::string(rule_name(drawable->rule)) + ": --format is for colour pictures");
   }
-  if (algorithm == nullptr) throw UsageError("--format goes with --algo NAME");
-  if (format && !draws_format(*algorithm, *format)) {
-    throw UsageError(std::string(algorithm->name) + " draws RGBA8 only; index8 and mask1 are " +
-                     "drawn by " + std::string(narrow_format_algorithm) + " (chapter 08, step 8)");
+  if (drawable == nullptr) throw UsageError("--format goes with --algo NAME");
+  if (format && !draws_format(*drawable, *format)) {
+    std::string narrow;
+    for (const Drawable* d : drawables_writing(drawables, output_of(*format))) {
+      narrow += (narrow.empty() ? "" : ", ") + std::string(d->name);
+    }
+    throw UsageError(std::string(drawable->name) + " draws RGBA8 only; index8 and mask1 are " +
+                     "drawn by " + (narrow.empty() ? "no registered algorithm" : narrow) +
+                     " (chapter 08, step 8)");
   }
   if (args.has("counts") && format != PixelFormat::rgba8) {
     throw UsageError("--counts counts the writes of the RGBA8 canvas: use --format rgba8");
@@ -269,53 +274,54 @@ int run_narrow(const CliArguments& args, const Scene& scene, const TriangleAlgor
   return 0;
 }
 
-int run(const CliArguments& args, std::ostream& out, std::ostream& err) {
-  const auto algorithms = registered_algorithms();
-  const auto area_algorithms = registered_area_algorithms();
+int run(std::span<const Drawable> drawables, const CliArguments& args, std::ostream& out,
+        std::ostream& err) {
   if (args.has("list")) {
     if (args.has("algo") || args.has("scene") || args.has("out") || args.has("counts") ||
         args.has("coverage") || args.has("bench") || args.has("format")) {
       throw UsageError("--list takes no other option");
     }
-    print_list(algorithms, out);
-    print_list(area_algorithms, out);
+    print_list(drawables, out);
     return 0;
   }
   const auto scene_path = args.value("scene");
   if (!scene_path) throw UsageError("--scene FILE is required (or --list)");
   progress_after(args);  // a bad value is a usage error before any work
-  const TriangleAlgorithm* algorithm = nullptr;
-  const ch09::AreaAlgorithm* area = nullptr;
+  const Drawable* drawable = nullptr;
   if (const auto name = args.value("algo")) {
-    algorithm = find_algorithm(algorithms, *name);
-    if (algorithm == nullptr) area = find_area_algorithm(area_algorithms, *name);
-    if (algorithm == nullptr && area == nullptr) {
+    drawable = find_drawable(drawables, *name);
+    if (drawable == nullptr) {
       throw UsageError("unknown algorithm '" + printable_excerpt(*name) +
                        "' (raster --list shows the names)");
     }
   }
+  // What it can write decides what it may be asked for; its entry points decide how it draws.
+  const bool colours = drawable == nullptr || drawable->writes(Output::rgba8);
+  const bool coverage = drawable != nullptr && drawable->writes(Output::coverage16);
   const auto frames = args.integer("bench", 1, 1'000'000);  // every frame's time is kept
   if (frames && (args.has("out") || args.has("counts") || args.has("coverage"))) {
     throw UsageError("--bench writes no image: drop --out, --counts and --coverage");
   }
   if (args.has("force") && !frames) throw UsageError("--force goes with --bench");
-  if (area != nullptr && (args.has("out") || args.has("counts"))) {
-    throw UsageError(std::string(area->name) +
-                     " has rule area: it computes coverage, not colours; use --coverage FILE.pgm");
+  if (!colours && (args.has("out") || args.has("counts"))) {
+    throw UsageError(std::string(drawable->name) + " has rule " +
+                     std::string(rule_name(drawable->rule)) +
+                     ": it computes coverage, not colours; use --coverage FILE.pgm");
   }
-  if (area != nullptr && !frames && !args.has("coverage")) {
-    throw UsageError(std::string(area->name) +
-                     " has rule area: choose --coverage FILE.pgm or --bench N");
+  if (!colours && !frames && !args.has("coverage")) {
+    throw UsageError(std::string(drawable->name) + " has rule " +
+                     std::string(rule_name(drawable->rule)) +
+                     ": choose --coverage FILE.pgm or --bench N");
   }
-  if (area == nullptr && args.has("coverage")) {
+  if (!coverage && args.has("coverage")) {
     throw UsageError("--coverage needs an algorithm of rule area (raster --list shows them)" +
-                     (algorithm ? ", and " + std::string(algorithm->name) + " has rule " +
-                                      std::string(rule_name(algorithm->rule))
-                                : std::string()));
+                     (drawable ? ", and " + std::string(drawable->name) + " has rule " +
+                                     std::string(rule_name(drawable->rule))
+                               : std::string()));
   }
 
   const std::optional<std::string> format_arg = args.value("format");
-  const std::optional<PixelFormat> chosen_format = checked_format(args, algorithm, area);
+  const std::optional<PixelFormat> chosen_format = checked_format(args, drawables, drawable);
 
   // Every output is checked before any work, so a bad one costs nothing and destroys nothing.
   std::vector<std::filesystem::path> outputs;
@@ -337,12 +343,15 @@ int run(const CliArguments& args, std::ostream& out, std::ostream& err) {
   }
 
   const Scene scene = load_scene_saying_so(args, *scene_path, err);
-  if (area != nullptr) return run_coverage(args, scene, *area, frames, out, err);
+  if (drawable != nullptr && drawable->coverage != nullptr) {
+    return run_coverage(args, scene, *drawable->coverage, frames, out, err);
+  }
+  const TriangleAlgorithm* algorithm = drawable != nullptr ? drawable->colours : nullptr;
   if (algorithm == nullptr && count_triangles(scene) > 0) {
     throw UsageError(*scene_path + " has triangles: choose an algorithm with --algo NAME");
   }
   if (format_arg) {
-    const PixelFormat format = chosen_format ? *chosen_format : narrowest_format(scene, *algorithm);
+    const PixelFormat format = chosen_format ? *chosen_format : narrowest_format(scene, *drawable);
     if (format != PixelFormat::rgba8) {
       return run_narrow(args, scene, *algorithm, format, frames, to_standard_output, out, err);
     }
@@ -387,9 +396,14 @@ int run(const CliArguments& args, std::ostream& out, std::ostream& err) {
 
 }  // namespace
 
-int run_raster(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
+int run_raster(std::span<const Drawable> drawables, int argc, const char* const* argv,
+               std::ostream& out, std::ostream& err) {
   return run_command_line(raster_command_line(), argc, argv, out, err,
-                          [&](const CliArguments& args) { return run(args, out, err); });
+                          [&](const CliArguments& args) { return run(drawables, args, out, err); });
+}
+
+int run_raster(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
+  return run_raster(registered_drawables(), argc, argv, out, err);
 }
 
 }  // namespace tri

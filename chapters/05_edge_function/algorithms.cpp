@@ -7,7 +7,7 @@
 namespace tri::ch05 {
 
 std::span<const TriangleAlgorithm> triangle_algorithms() {
-  static constexpr std::array<TriangleAlgorithm, 1> algorithms{{
+  static constexpr auto algorithms = std::to_array<TriangleAlgorithm>({
       {.name = "edge_function",
        .chapter = "05_edge_function",
        .rule = CoverageRule::inclusive,
@@ -15,7 +15,7 @@ std::span<const TriangleAlgorithm> triangle_algorithms() {
            "bounding box clamped to the canvas, sign of the 2-D cross product per edge, either "
            "winding",
        .draw = draw_at_nearest_pixels<fill_triangle_edge_function>},
-  }};
+  });
   return algorithms;
 }
 

@@ -22,7 +22,8 @@ constexpr std::array<TriangleAlgorithm, 2> algorithms{{
      .summary = "bounding box, barycentric weights from one cross product in double",
      .draw = draw_at_nearest_pixels<fill_triangle_barycentric<double>>,
      .precision_family = "barycentric",
-     .precision_bits = 53},
+     .precision_bits = 53,
+     .role = Role::speed_baseline},
 }};
 // [/listing]
 

@@ -8,14 +8,15 @@
 namespace tri::ch07 {
 
 std::span<const TriangleAlgorithm> triangle_algorithms() {
-  static constexpr std::array<TriangleAlgorithm, 5> algorithms{{
+  static constexpr auto algorithms = std::to_array<TriangleAlgorithm>({
       {.name = "exact_oracle",
        .chapter = "07_exact_coverage",
        .rule = CoverageRule::top_left,
        .summary = "the truth: every pixel of the bounding box tested on its own with exact "
                   "orientation signs",
        .draw = draw_triangle_oracle,
-       .draw_rows = draw_triangle_oracle_rows},
+       .draw_rows = draw_triangle_oracle_rows,
+       .role = Role::oracle},
       {.name = "fixed_point_8",
        .chapter = "07_exact_coverage",
        .rule = CoverageRule::top_left,
@@ -24,7 +25,8 @@ std::span<const TriangleAlgorithm> triangle_algorithms() {
            "grid)",
        .draw = draw_triangle_fixed_point_8,
        .precision_family = "fixed_point",
-       .precision_bits = 8},
+       .precision_bits = 8,
+       .role = Role::fast_exact_starting},
       {.name = "fixed_point_4",
        .chapter = "07_exact_coverage",
        .rule = CoverageRule::approximate,
@@ -46,7 +48,7 @@ std::span<const TriangleAlgorithm> triangle_algorithms() {
        .draw = draw_triangle_fixed_point_with<0>,
        .precision_family = "fixed_point",
        .precision_bits = 0},
-  }};
+  });
   return algorithms;
 }
 

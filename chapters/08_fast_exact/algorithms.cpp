@@ -31,6 +31,18 @@ constexpr TriangleAlgorithm variant(std::string_view name, std::string_view summ
           .make_renderer = make_renderer};
 }
 
+// The variant that also draws step 8's narrow canvases (index8, mask1).
+constexpr TriangleAlgorithm with_narrow_formats(TriangleAlgorithm algorithm) {
+  algorithm.outputs = narrow_outputs;
+  return algorithm;
+}
+
+// The variant the report's cost sweeps follow.
+constexpr TriangleAlgorithm followed_by_cost_sweeps(TriangleAlgorithm algorithm) {
+  algorithm.role = Role::cost_sweeps;
+  return algorithm;
+}
+
 // A variant with a band-limited entry, so a huge triangle's work can be split into bands of rows.
 constexpr TriangleAlgorithm with_rows(TriangleAlgorithm algorithm, DrawTriangleRowsFunction rows) {
   algorithm.draw_rows = rows;
@@ -40,7 +52,7 @@ constexpr TriangleAlgorithm with_rows(TriangleAlgorithm algorithm, DrawTriangleR
 }  // namespace
 
 std::span<const TriangleAlgorithm> triangle_algorithms() {
-  static constexpr std::array<TriangleAlgorithm, 9> algorithms{{
+  static constexpr auto algorithms = std::to_array<TriangleAlgorithm>({
       with_rows(variant("fast_incremental",
                         "fixed_point_8 with edge values updated by one addition per pixel and edge",
                         draw_triangle_incremental),
@@ -50,11 +62,11 @@ std::span<const TriangleAlgorithm> triangle_algorithms() {
                   "fast_incremental testing the OR of the three edge values: one branch per pixel",
                   draw_triangle_all_edges),
           draw_triangle_all_edges_rows),
-      with_rows(
+      with_narrow_formats(with_rows(
           variant("fast_spans",
                   "exact first and last covered pixel per row (division-free walker), spans filled",
                   draw_triangle_spans),
-          draw_triangle_spans_rows),
+          draw_triangle_spans_rows)),
       with_rows(variant("fast_blocks_8x8",
                         "8x8 blocks: outside skipped, inside filled, partial ones tested per pixel",
                         draw_triangle_blocks_8x8),
@@ -64,11 +76,11 @@ std::span<const TriangleAlgorithm> triangle_algorithms() {
                   "fast_blocks_8x8 testing eight pixels of a row at once in vectorizable lanes",
                   draw_triangle_simd),
           draw_triangle_simd_rows),
-      with_rows(
+      followed_by_cost_sweeps(with_rows(
           variant("fast_hybrid",
                   "per triangle: fast_simd's eight-lane test within one 8x8 block, else fast_spans",
                   draw_triangle_hybrid, draw_batch_hybrid),
-          draw_triangle_hybrid_rows),
+          draw_triangle_hybrid_rows)),
       variant("fast_threaded",
               "fast_hybrid on bands of rows dealt to hardware_concurrency threads per batch",
               draw_triangle_hybrid, draw_batch_threaded, true),
@@ -82,7 +94,7 @@ std::span<const TriangleAlgorithm> triangle_algorithms() {
                   "each filled in order",
                   draw_triangle_batched, draw_batch_batched),
           draw_triangle_hybrid_rows),
-  }};
+  });
   return algorithms;
 }
 

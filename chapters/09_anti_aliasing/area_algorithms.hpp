@@ -36,6 +36,8 @@ struct AreaAlgorithm {
   /// The pattern a sampling algorithm counts (its samples' fraction inside the triangle is its
   /// exact answer: snapped_sampled_coverage); null for an algorithm that computes the area.
   SamplePattern (*sample_pattern)() = nullptr;
+  /// Composites each triangle "over" the canvas as alpha (c + a(1 - c)) instead of adding it.
+  bool composites_over = false;
 };
 
 /// Chapter 09's algorithms: the exact area by cells (summed, and composited "over" as a 2-D

@@ -119,7 +119,7 @@ std::vector<ScalingDrawer> scaling_drawers(std::span<const TriangleAlgorithm> al
   std::vector<ScalingDrawer> drawers;
   const auto fastest =
       std::find_if(algorithms.begin(), algorithms.end(),
-                   [](const TriangleAlgorithm& a) { return a.name == scaling_algorithm; });
+                   [](const TriangleAlgorithm& a) { return a.role == Role::cost_sweeps; });
   if (fastest != algorithms.end()) {
     drawers.push_back(
         {std::string(fastest->name), std::string(fastest->chapter), false,

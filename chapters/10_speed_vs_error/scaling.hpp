@@ -52,10 +52,8 @@ struct ScalingDrawer {
   std::function<Timing(const PreparedScene&, const TimingPlan&)> time;
 };
 
-/// The name of the algorithm the sweeps follow: the fastest exact one of chapter 08.
-inline constexpr std::string_view scaling_algorithm = "fast_hybrid";
-
-/// scaling_algorithm when it is among `algorithms`, the write ceiling (one fill of the canvas,
+/// The algorithm whose declared role is Role::cost_sweeps (the fastest exact one of chapter 08)
+/// when it is among `algorithms`, the write ceiling (one fill of the canvas,
 /// the faster of memset and vector stores) when any is, then every peer that can time a draw.
 std::vector<ScalingDrawer> scaling_drawers(std::span<const TriangleAlgorithm> algorithms,
                                            std::span<const ExternalPeer> peers);

@@ -164,14 +164,10 @@ extern "C" {
 /// `capacity` bytes with its final zero.
 EMSCRIPTEN_KEEPALIVE std::size_t playground_algorithms(char* out, std::size_t capacity) {
   std::string text;
-  for (const auto& a : tri::registered_algorithms()) {
+  for (const tri::Drawable& a : tri::registered_drawables()) {
     text.append(a.name).append("\t").append(a.chapter).append("\t");
     text.append(tri::rule_name(a.rule)).append(a.threaded ? "\t1\t" : "\t0\t");
     text.append(a.summary).append("\n");
-  }
-  for (const auto& a : tri::registered_area_algorithms()) {
-    text.append(a.name).append("\t").append(a.chapter).append("\t");
-    text.append(tri::rule_name(a.rule)).append("\t0\t").append(a.summary).append("\n");
   }
   if (text.size() < capacity) copy_text(text, out, capacity);
   return text.size();
@@ -190,8 +186,9 @@ EMSCRIPTEN_KEEPALIVE int playground_draw(const char* name, int width, int height
                                          std::uint8_t* oracle_last_writer,
                                          std::uint32_t* outside_writes, char* message,
                                          std::size_t message_capacity) {
-  const auto algorithms = tri::registered_algorithms();
-  const tri::TriangleAlgorithm* algorithm = tri::find_algorithm(algorithms, name);
+  const auto drawables = tri::registered_drawables();
+  const tri::Drawable* drawable = tri::find_drawable(drawables, name);
+  const tri::TriangleAlgorithm* algorithm = drawable != nullptr ? drawable->colours : nullptr;
   if (algorithm == nullptr) {
     copy_text(std::string("no triangle algorithm '") + name + "'", message, message_capacity);
     return 2;
@@ -221,8 +218,9 @@ EMSCRIPTEN_KEEPALIVE int playground_coverage(const char* name, int width, int he
                                              const double* vertices, std::uint16_t* coverage,
                                              std::uint16_t* exact, char* message,
                                              std::size_t message_capacity) {
-  const auto areas = tri::registered_area_algorithms();
-  const tri::ch09::AreaAlgorithm* algorithm = tri::find_area_algorithm(areas, name);
+  const auto drawables = tri::registered_drawables();
+  const tri::Drawable* drawable = tri::find_drawable(drawables, name);
+  const tri::ch09::AreaAlgorithm* algorithm = drawable != nullptr ? drawable->coverage : nullptr;
   if (algorithm == nullptr) {
     copy_text(std::string("no coverage algorithm '") + name + "'", message, message_capacity);
     return 2;
