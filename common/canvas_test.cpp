@@ -27,6 +27,16 @@ std::pair<int, int> xy(glm::ivec2 p) {
   return {p.x, p.y};
 }
 
+// Checks where the centred view of canvas puts each view point: pairs of (view point, pixel).
+void check_view_maps(const Canvas& canvas,
+                     const std::vector<std::pair<glm::ivec2, std::pair<int, int>>>& expected) {
+  const CenteredView view(canvas);
+  for (const auto& [point, pixel] : expected) {
+    CAPTURE(point.x, point.y);
+    CHECK(xy(view.to_canvas(point)) == pixel);
+  }
+}
+
 bool every_pixel_is(const Canvas& canvas, Color color) {
   for (const Color c : canvas.pixels()) {
     if (c != color) return false;
@@ -304,25 +314,21 @@ TEST_CASE("fill_span does exactly what put_pixel does for every x of the span, o
 TEST_CASE("The centred view maps (0, 0) to the middle of the canvas, y up",
           "[common][canvas][view]") {
   Canvas canvas(600, 600);
-  const CenteredView view(canvas);
-  CHECK(xy(view.to_canvas({0, 0})) == std::pair(300, 300));
-  // The first vertex of Gambetta's figure 7-1.
-  CHECK(xy(view.to_canvas({-200, -250})) == std::pair(100, 50));
-  CHECK(xy(view.to_canvas({200, 50})) == std::pair(500, 350));
-  CHECK(xy(view.to_canvas({20, 250})) == std::pair(320, 550));
+  check_view_maps(canvas, {{{0, 0}, {300, 300}},
+                           // The vertices of Gambetta's figure 7-1.
+                           {{-200, -250}, {100, 50}},
+                           {{200, 50}, {500, 350}},
+                           {{20, 250}, {320, 550}},
+                           {{-300, -300}, {0, 0}},
+                           {{299, 299}, {599, 599}}});
   // Up in the view is up on the canvas: no flip.
-  CHECK(view.to_canvas({0, 1}).y == 301);
-  CHECK(xy(view.to_canvas({-300, -300})) == std::pair(0, 0));
-  CHECK(xy(view.to_canvas({299, 299})) == std::pair(599, 599));
+  CHECK(CenteredView(canvas).to_canvas({0, 1}).y == 301);
 }
 
 TEST_CASE("The centred view of an odd-sized canvas rounds the middle down",
           "[common][canvas][view]") {
   Canvas canvas(5, 3);
-  const CenteredView view(canvas);
-  CHECK(xy(view.to_canvas({0, 0})) == std::pair(2, 1));
-  CHECK(xy(view.to_canvas({-2, -1})) == std::pair(0, 0));
-  CHECK(xy(view.to_canvas({2, 1})) == std::pair(4, 2));
+  check_view_maps(canvas, {{{0, 0}, {2, 1}}, {{-2, -1}, {0, 0}}, {{2, 1}, {4, 2}}});
 }
 
 TEST_CASE("The centred view maps points past the canvas's edges to pixels off the canvas",

@@ -39,6 +39,19 @@ struct stat status_of(const fs::path& path) {
   return info;
 }
 
+// The pair most tests write: a.txt replaced, b.txt new.
+void stage_new_a_and_b(OutputTransaction& outputs, const fs::path& folder) {
+  outputs.stage(folder / "a.txt", bytes_of_text("new a"));
+  outputs.stage(folder / "b.txt", bytes_of_text("new b"));
+}
+
+// After the pair's commit the folder holds both new files and nothing else.
+void check_holds_new_a_and_b(const fs::path& folder) {
+  CHECK(read_text(folder / "a.txt") == "new a");
+  CHECK(read_text(folder / "b.txt") == "new b");
+  CHECK(names_in(folder) == std::vector<std::string>{"a.txt", "b.txt"});
+}
+
 // Runs body in a child process whose signals are at their defaults, as in a program (Catch2
 // handles them in the test process), and returns the signal that ended it (0: it exited).
 template <class Body>
@@ -83,21 +96,17 @@ TEST_CASE("Staged outputs replace nothing and leave nothing behind until they ar
   write_text(folder / "a.txt", "old a");
   {
     OutputTransaction outputs;
-    outputs.stage(folder / "a.txt", bytes_of_text("new a"));
-    outputs.stage(folder / "b.txt", bytes_of_text("new b"));
+    stage_new_a_and_b(outputs, folder);
     CHECK(read_text(folder / "a.txt") == "old a");
     CHECK_FALSE(fs::exists(folder / "b.txt"));
   }
   CHECK(names_in(folder) == std::vector<std::string>{"a.txt"});
   {
     OutputTransaction outputs;
-    outputs.stage(folder / "a.txt", bytes_of_text("new a"));
-    outputs.stage(folder / "b.txt", bytes_of_text("new b"));
+    stage_new_a_and_b(outputs, folder);
     outputs.commit();
   }
-  CHECK(read_text(folder / "a.txt") == "new a");
-  CHECK(read_text(folder / "b.txt") == "new b");
-  CHECK(names_in(folder) == std::vector<std::string>{"a.txt", "b.txt"});
+  check_holds_new_a_and_b(folder);
 }
 
 TEST_CASE("A named temporary is a new regular file named .NAME.XXXXXX.tmp beside the output",
@@ -296,13 +305,10 @@ TEST_CASE("Staged outputs leave no name in their folder where unnamed temporarie
   }
   write_text(folder / "a.txt", "old a");
   OutputTransaction outputs;
-  outputs.stage(folder / "a.txt", bytes_of_text("new a"));
-  outputs.stage(folder / "b.txt", bytes_of_text("new b"));
+  stage_new_a_and_b(outputs, folder);
   CHECK(names_in(folder) == std::vector<std::string>{"a.txt"});
   outputs.commit();
-  CHECK(read_text(folder / "a.txt") == "new a");
-  CHECK(read_text(folder / "b.txt") == "new b");
-  CHECK(names_in(folder) == std::vector<std::string>{"a.txt", "b.txt"});
+  check_holds_new_a_and_b(folder);
 }
 
 TEST_CASE("A signal while named temporaries are staged removes them and the folders made for them",

@@ -71,12 +71,8 @@ class Checker {
         if (!(c >= -tolerance && c <= 1 + tolerance)) out_of_range.add(x, y);
       }
     }
-    if (changed.count() != 0) {
-      findings_.push_back(where + ": refused, yet pixels changed " + changed.text());
-    }
-    if (out_of_range.count() != 0) {
-      findings_.push_back(where + ": coverage outside [0, 1] or not finite " + out_of_range.text());
-    }
+    report_pixels(findings_, where + ": refused, yet pixels changed", changed);
+    report_pixels(findings_, where + ": coverage outside [0, 1] or not finite", out_of_range);
     if (drawn) compare_with_truth(canvas, t.vertices, where);
     return canvas;
   }
@@ -106,10 +102,7 @@ class Checker {
         if (!(std::abs(together.at(x, y) - expected) <= allowed)) differs.add(x, y);
       }
     }
-    if (differs.count() != 0) {
-      findings_.push_back(where + ": pixels unlike the triangles drawn one by one " +
-                          differs.text());
-    }
+    report_pixels(findings_, where + ": pixels unlike the triangles drawn one by one", differs);
   }
 
  private:
@@ -156,12 +149,10 @@ class Checker {
         return;  // a triangle too large for the oracle's 128-bit fractions: no truth to compare
       }
     }
-    if (wrong.count() != 0) {
-      findings_.push_back(where +
-                          (algorithm_.sample_pattern ? ": unlike its own samples' count "
-                                                     : ": unlike the exact area ") +
-                          wrong.text());
-    }
+    report_pixels(findings_,
+                  where + (algorithm_.sample_pattern ? ": unlike its own samples' count"
+                                                     : ": unlike the exact area"),
+                  wrong);
   }
 
   const ch09::AreaAlgorithm& algorithm_;

@@ -4,6 +4,7 @@
 
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace tri::fuzz {
 
@@ -27,5 +28,11 @@ class PixelTally {
   int count_ = 0;
   std::ostringstream examples_;
 };
+
+/// Adds the finding "what N: (x, y) ..." when the tally holds any pixel.
+inline void report_pixels(std::vector<std::string>& findings, const std::string& what,
+                          const PixelTally& pixels) {
+  if (pixels.count() != 0) findings.push_back(what + " " + pixels.text());
+}
 
 }  // namespace tri::fuzz

@@ -48,20 +48,13 @@ class Checker {
         if (canvas.write_count(x, y) != 0 && c != t.color) miscolored.add(x, y);
       }
     }
-    if (changed.count() != 0) {
-      findings_.push_back(where + ": " + std::string(describe(result)) + ", yet pixels changed " +
-                          changed.text());
-    }
-    if (foreign.count() != 0) {
-      findings_.push_back(where +
-                          ": pixels in a colour that is neither the background nor the "
-                          "triangle's " +
-                          foreign.text());
-    }
-    if (miscolored.count() != 0) {
-      findings_.push_back(where + ": pixels counted as written but not in the triangle's colour " +
-                          miscolored.text());
-    }
+    report_pixels(findings_, where + ": " + std::string(describe(result)) + ", yet pixels changed",
+                  changed);
+    report_pixels(findings_,
+                  where + ": pixels in a colour that is neither the background nor the triangle's",
+                  foreign);
+    report_pixels(findings_, where + ": pixels counted as written but not in the triangle's colour",
+                  miscolored);
     if (result == DrawResult::drawn && algorithm_.rule == CoverageRule::top_left &&
         on_subpixel_grid(t.vertices)) {
       compare_with_oracle(canvas, t, where);
@@ -93,10 +86,7 @@ class Checker {
         if (batch.pixel(x, y) != one_by_one.pixel(x, y)) different.add(x, y);
       }
     }
-    if (different.count() != 0) {
-      findings_.push_back(where + ": pixels differ from drawing them one by one " +
-                          different.text());
-    }
+    report_pixels(findings_, where + ": pixels differ from drawing them one by one", different);
   }
 
  private:

@@ -1,6 +1,8 @@
 #include "fuzz/rasterizer_input.hpp"
 
+#include <array>
 #include <bit>
+#include <cstddef>
 #include <limits>
 
 namespace tri::fuzz {
@@ -65,49 +67,32 @@ void append_color(std::vector<std::uint8_t>& bytes, Color color) {
 }  // namespace
 
 double base_value(Base base) noexcept {
-  switch (base) {
-    case Base::zero:
-      return 0.0;
-    case Base::limit:
-      return max_scene_coordinate;
-    case Base::minus_limit:
-      return -max_scene_coordinate;
-    case Base::ten_million:
-      return 1e7;
-    case Base::minus_ten_million:
-      return -1e7;
-    case Base::float_gap:
-      return 16777217.0;
-    case Base::minus_float_gap:
-      return -16777217.0;
-    case Base::half_limit:
-      return 536870912.0;
-    case Base::minus_half_limit:
-      return -536870912.0;
-    case Base::beyond_int:
-      return 2147483648.0;
-    case Base::canvas_edge:
-      return max_fuzz_canvas_side;
-    case Base::almost_half:
-      return 0.49999999999999994;
-    case Base::subnormal:
-      return 1e-310;
-    case Base::largest_double:
-      return std::numeric_limits<double>::max();
-    case Base::minus_largest_double:
-      return -std::numeric_limits<double>::max();
-    case Base::not_a_number:
-      return std::numeric_limits<double>::quiet_NaN();
-    case Base::infinity:
-      return std::numeric_limits<double>::infinity();
-    case Base::minus_infinity:
-      return -std::numeric_limits<double>::infinity();
-    case Base::minus_zero:
-      return -0.0;
-    case Base::count:
-      break;
-  }
-  return 0.0;
+  // One value per base, in the enum's order; Base::count (not a base) falls outside and reads 0.
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  constexpr double largest = std::numeric_limits<double>::max();
+  constexpr std::array<double, static_cast<std::size_t>(Base::count)> values{
+      0.0,                                       // zero
+      max_scene_coordinate,                      // limit
+      -max_scene_coordinate,                     // minus_limit
+      1e7,                                       // ten_million
+      -1e7,                                      // minus_ten_million
+      16777217.0,                                // float_gap
+      -16777217.0,                               // minus_float_gap
+      536870912.0,                               // half_limit
+      -536870912.0,                              // minus_half_limit
+      2147483648.0,                              // beyond_int
+      max_fuzz_canvas_side,                      // canvas_edge
+      0.49999999999999994,                       // almost_half
+      1e-310,                                    // subnormal
+      largest,                                   // largest_double
+      -largest,                                  // minus_largest_double
+      std::numeric_limits<double>::quiet_NaN(),  // not_a_number
+      inf,                                       // infinity
+      -inf,                                      // minus_infinity
+      -0.0,                                      // minus_zero
+  };
+  const auto index = static_cast<std::size_t>(base);
+  return index < values.size() ? values[index] : 0.0;
 }
 
 double interesting_value(InterestingValue value) noexcept {

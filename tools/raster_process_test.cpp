@@ -17,6 +17,7 @@
 #include <sstream>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include "tests/support/scratch_folder.hpp"
@@ -33,6 +34,16 @@ using tri::testing::write_text;
 
 constexpr const char* scene_text = "canvas 8 8\nline 0 0 7 7\ntri 1 1 6 1 1 6\n";
 
+// A scratch folder holding the test scene as s.scene and the earlier files given as (name, text).
+struct SceneFolder : ScratchFolder {
+  explicit SceneFolder(const std::string& name,
+                       const std::vector<std::pair<std::string, std::string>>& earlier = {})
+      : ScratchFolder(name) {
+    write_text(*this / "s.scene", scene_text);
+    for (const auto& [file, text] : earlier) write_text(*this / file, text);
+  }
+};
+
 // What raster writes for the scene, run in this process: the PNG and the write counts.
 struct Expected {
   std::string png;
@@ -40,8 +51,7 @@ struct Expected {
 };
 
 Expected expected_outputs() {
-  const ScratchFolder scratch("expected");
-  write_text(scratch / "s.scene", scene_text);
+  const SceneFolder scratch("expected");
   const std::string scene = (scratch / "s.scene").string();
   const std::string png = (scratch / "a.png").string();
   const std::string pgm = (scratch / "c.pgm").string();
@@ -50,6 +60,15 @@ Expected expected_outputs() {
   std::ostringstream out, err;
   REQUIRE(tri::run_raster(9, argv, out, err) == 0);
   return {read_text(png), read_text(pgm)};
+}
+
+// Arguments that draw the scratch folder's s.scene with edge_function, then the output options.
+std::vector<std::string> drawing_the_scene(const SceneFolder& scratch,
+                                           const std::vector<std::string>& outputs) {
+  std::vector<std::string> args{"--algo", "edge_function", "--scene",
+                                (scratch / "s.scene").string()};
+  args.insert(args.end(), outputs.begin(), outputs.end());
+  return args;
 }
 
 // Where the child's standard streams go; -1 leaves one as it is in the test.
@@ -123,15 +142,12 @@ TEST_CASE(
     "The raster executable replaces no file when standard output cannot be written, and says so "
     "once",
     "[raster][process]") {
-  const ScratchFolder scratch("full");
-  write_text(scratch / "s.scene", scene_text);
-  write_text(scratch / "c.pgm", "earlier counts");
+  const SceneFolder scratch("full", {{"c.pgm", "earlier counts"}});
   const OpenFile full("/dev/full", O_WRONLY);
   const OpenFile log(scratch / "log", O_WRONLY | O_CREAT);
-  const pid_t child =
-      start_raster({"--algo", "edge_function", "--scene", (scratch / "s.scene").string(), "--out",
-                    "-", "--counts", (scratch / "c.pgm").string()},
-                   {full.get(), log.get()});
+  const pid_t child = start_raster(
+      drawing_the_scene(scratch, {"--out", "-", "--counts", (scratch / "c.pgm").string()}),
+      {full.get(), log.get()});
   const int status = wait_for(child);
   CHECK(WIFEXITED(status));
   CHECK(WEXITSTATUS(status) == 1);
@@ -143,16 +159,13 @@ TEST_CASE(
 
 TEST_CASE("The raster executable replaces no file when standard output is a closed pipe",
           "[raster][process]") {
-  const ScratchFolder scratch("closed_pipe");
-  write_text(scratch / "s.scene", scene_text);
-  write_text(scratch / "c.pgm", "earlier counts");
+  const SceneFolder scratch("closed_pipe", {{"c.pgm", "earlier counts"}});
   int pipe_ends[2];
   REQUIRE(::pipe2(pipe_ends, O_CLOEXEC) == 0);
   ::close(pipe_ends[0]);  // nobody reads: the first write raises SIGPIPE
-  const pid_t child =
-      start_raster({"--algo", "edge_function", "--scene", (scratch / "s.scene").string(), "--out",
-                    "-", "--counts", (scratch / "c.pgm").string()},
-                   {pipe_ends[1], -1});
+  const pid_t child = start_raster(
+      drawing_the_scene(scratch, {"--out", "-", "--counts", (scratch / "c.pgm").string()}),
+      {pipe_ends[1], -1});
   ::close(pipe_ends[1]);
   const int status = wait_for(child);
   CHECK(WIFSIGNALED(status));
@@ -165,15 +178,12 @@ TEST_CASE(
     "The raster executable with --out /dev/stderr appends the PNG to the log standard error goes "
     "to",
     "[raster][process]") {
-  const ScratchFolder scratch("stderr_log");
-  write_text(scratch / "s.scene", scene_text);
-  write_text(scratch / "run.log", "earlier log line\n");
+  const SceneFolder scratch("stderr_log", {{"run.log", "earlier log line\n"}});
   struct stat before {};
   REQUIRE(::stat((scratch / "run.log").c_str(), &before) == 0);
   const OpenFile log(scratch / "run.log", O_WRONLY | O_APPEND);
   const OpenFile summary(scratch / "summary", O_WRONLY | O_CREAT);
-  const pid_t child = start_raster({"--algo", "edge_function", "--scene",
-                                    (scratch / "s.scene").string(), "--out", "/dev/stderr"},
+  const pid_t child = start_raster(drawing_the_scene(scratch, {"--out", "/dev/stderr"}),
                                    {summary.get(), log.get()});
   REQUIRE(wait_for(child) == 0);
   const std::string png = expected_outputs().png;
@@ -187,8 +197,7 @@ TEST_CASE(
   // /dev/stdout into a pipe is standard output, as '-' is.
   int pipe_ends[2];
   REQUIRE(::pipe2(pipe_ends, O_CLOEXEC) == 0);
-  const pid_t piped = start_raster({"--algo", "edge_function", "--scene",
-                                    (scratch / "s.scene").string(), "--out", "/dev/stdout"},
+  const pid_t piped = start_raster(drawing_the_scene(scratch, {"--out", "/dev/stdout"}),
                                    {pipe_ends[1], summary.get()});
   ::close(pipe_ends[1]);
   std::string received;
@@ -208,15 +217,13 @@ TEST_CASE(
   for (const int stops : {1, 2}) {
     for (const int signal_number : {SIGINT, SIGTERM, SIGKILL}) {
       CAPTURE(stops, signal_number);
-      const ScratchFolder scratch("interrupted");
-      write_text(scratch / "s.scene", scene_text);
-      write_text(scratch / "a.png", "earlier picture");
-      write_text(scratch / "c.pgm", "earlier counts");
+      const SceneFolder scratch("interrupted",
+                                {{"a.png", "earlier picture"}, {"c.pgm", "earlier counts"}});
       const OpenFile quiet("/dev/null", O_WRONLY);
-      const pid_t child = start_raster(
-          {"--algo", "edge_function", "--scene", (scratch / "s.scene").string(), "--out",
-           (scratch / "a.png").string(), "--counts", (scratch / "c.pgm").string()},
-          {quiet.get(), quiet.get()}, true);
+      const pid_t child =
+          start_raster(drawing_the_scene(scratch, {"--out", (scratch / "a.png").string(),
+                                                   "--counts", (scratch / "c.pgm").string()}),
+                       {quiet.get(), quiet.get()}, true);
       for (int stop = 1; stop <= stops; ++stop) {
         const int status = wait_for(child, WUNTRACED);
         REQUIRE(WIFSTOPPED(status));
@@ -245,14 +252,12 @@ TEST_CASE(
     "outputs",
     "[raster][process][interrupts]") {
   for (const int signal_number : {SIGINT, SIGTERM, SIGHUP}) {
-    const ScratchFolder scratch("interrupted_folder");
-    write_text(scratch / "s.scene", scene_text);
+    const SceneFolder scratch("interrupted_folder");
     const OpenFile quiet("/dev/null", O_WRONLY);
-    const pid_t child =
-        start_raster({"--algo", "edge_function", "--scene", (scratch / "s.scene").string(), "--out",
-                      (scratch / "made" / "deeper" / "a.png").string(), "--counts",
-                      (scratch / "made" / "c.pgm").string()},
-                     {quiet.get(), quiet.get()}, true);
+    const pid_t child = start_raster(
+        drawing_the_scene(scratch, {"--out", (scratch / "made" / "deeper" / "a.png").string(),
+                                    "--counts", (scratch / "made" / "c.pgm").string()}),
+        {quiet.get(), quiet.get()}, true);
     REQUIRE(WIFSTOPPED(wait_for(child, WUNTRACED)));
     CHECK(fs::is_directory(scratch / "made" / "deeper"));
     ::kill(child, signal_number);
@@ -269,17 +274,14 @@ TEST_CASE(
     "together",
     "[raster][process][lock]") {
   const Expected expected = expected_outputs();
-  const ScratchFolder scratch("locked");
-  write_text(scratch / "s.scene", scene_text);
-  write_text(scratch / "a.png", "earlier picture");
-  write_text(scratch / "c.pgm", "earlier counts");
+  const SceneFolder scratch("locked", {{"a.png", "earlier picture"}, {"c.pgm", "earlier counts"}});
   std::optional<OpenFile> lock;
   lock.emplace(scratch.path(), O_RDONLY | O_DIRECTORY);
   REQUIRE(::flock(lock->get(), LOCK_EX) == 0);  // as a parallel run holds it while it commits
   const OpenFile quiet("/dev/null", O_WRONLY);
   const pid_t child =
-      start_raster({"--algo", "edge_function", "--scene", (scratch / "s.scene").string(), "--out",
-                    (scratch / "a.png").string(), "--counts", (scratch / "c.pgm").string()},
+      start_raster(drawing_the_scene(scratch, {"--out", (scratch / "a.png").string(), "--counts",
+                                               (scratch / "c.pgm").string()}),
                    {quiet.get(), quiet.get()});
   // Wait (as long as a loaded machine needs) until the kernel lists raster as a lock's waiter.
   const auto give_up = std::chrono::steady_clock::now() + std::chrono::minutes(2);

@@ -81,6 +81,23 @@ bool is_one_line(const std::string& text) {
   return !text.empty() && text.back() == '\n' && text.find('\n') == text.size() - 1;
 }
 
+// The largest difference between a 16-bit coverage PGM (rows top first, after a header of
+// header_size bytes) and truth_16(x, y), the expected value of pixel (x, y) with y up.
+template <typename Truth>
+int worst_coverage_error(const std::string& pgm, std::size_t header_size, int width, int height,
+                         Truth truth_16) {
+  int worst = 0;
+  for (int row = 0; row < height; ++row) {
+    for (int x = 0; x < width; ++x) {
+      const std::size_t k = header_size + 2 * static_cast<std::size_t>(row * width + x);
+      const int value =
+          (static_cast<unsigned char>(pgm[k]) << 8) | static_cast<unsigned char>(pgm[k + 1]);
+      worst = std::max(worst, std::abs(value - truth_16(x, height - 1 - row)));
+    }
+  }
+  return worst;
+}
+
 }  // namespace
 
 TEST_CASE("raster --help describes every form of the command", "[raster]") {
@@ -381,19 +398,10 @@ TEST_CASE(
   // The two triangles share an edge, so the exact coverages add up: the truth, top row first.
   const tri::Triangle a = {{{0.5, 0.25}, {10.75, 2.5}, {3.125, 8.5}}};
   const tri::Triangle b = {{{10.75, 2.5}, {11.5, 8.75}, {3.125, 8.5}}};
-  int worst = 0;
-  for (int row = 0; row < 9; ++row) {
-    for (int x = 0; x < 12; ++x) {
-      const int y = 8 - row;
-      const tri::ch09::Fraction truth =
-          tri::ch09::exact_coverage(a, {x, y}) + tri::ch09::exact_coverage(b, {x, y});
-      const std::size_t k = header.size() + 2 * static_cast<std::size_t>(row * 12 + x);
-      const int value =
-          (static_cast<unsigned char>(pgm[k]) << 8) | static_cast<unsigned char>(pgm[k + 1]);
-      worst = std::max(worst, std::abs(value - tri::ch09::coverage_16(truth)));
-    }
-  }
-  CHECK(worst <= 1);
+  CHECK(worst_coverage_error(pgm, header.size(), 12, 9, [&](int x, int y) {
+          return tri::ch09::coverage_16(tri::ch09::exact_coverage(a, {x, y}) +
+                                        tri::ch09::exact_coverage(b, {x, y}));
+        }) <= 1);
 }
 
 TEST_CASE("raster --coverage draws vertices a subnormal distance apart as their grid triangles",
@@ -415,23 +423,15 @@ TEST_CASE("raster --coverage draws vertices a subnormal distance apart as their 
     const std::string pgm = read_file(pgm_path);
     const std::string header = "P5\n16 16\n65535\n";
     REQUIRE(pgm.size() == header.size() + 16 * 16 * 2);
-    int worst = 0;
-    for (int row = 0; row < 16; ++row) {
-      for (int x = 0; x < 16; ++x) {
-        const int y = 15 - row;
-        // Composited over, each triangle's exact coverage e joins the pixel as v + e (1 - v).
-        double truth = 0;
-        for (const tri::Triangle& t : grid) {
-          const double e = tri::ch09::exact_coverage(t, {x, y}).to_double();
-          truth = algorithm == "area_cells" ? truth + e : truth + e * (1 - truth);
-        }
-        const std::size_t k = header.size() + 2 * static_cast<std::size_t>(row * 16 + x);
-        const int value =
-            (static_cast<unsigned char>(pgm[k]) << 8) | static_cast<unsigned char>(pgm[k + 1]);
-        worst = std::max(worst, std::abs(value - tri::ch09::coverage_16(truth)));
-      }
-    }
-    CHECK(worst <= 1);
+    CHECK(worst_coverage_error(pgm, header.size(), 16, 16, [&](int x, int y) {
+            // Composited over, each triangle's exact coverage e joins the pixel as v + e (1 - v).
+            double truth = 0;
+            for (const tri::Triangle& t : grid) {
+              const double e = tri::ch09::exact_coverage(t, {x, y}).to_double();
+              truth = algorithm == "area_cells" ? truth + e : truth + e * (1 - truth);
+            }
+            return tri::ch09::coverage_16(truth);
+          }) <= 1);
   }
 }
 

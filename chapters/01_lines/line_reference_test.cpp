@@ -61,8 +61,8 @@ TEST_CASE("The exact line is the same list whichever endpoint comes first",
   CHECK(describe(exact_line_pixels({1, 3}, {0, 0})) == "(0,0) (0,1) (1,2) (1,3)");
   tri::testing::Random random(7);
   for (int trial = 0; trial < 300; ++trial) {
-    const glm::ivec2 a{random.integer(-50, 50), random.integer(-50, 50)};
-    const glm::ivec2 b{random.integer(-50, 50), random.integer(-50, 50)};
+    const glm::ivec2 a = tri::testing::random_point(random, -50, 50);
+    const glm::ivec2 b = tri::testing::random_point(random, -50, 50);
     CAPTURE(a.x, a.y, b.x, b.y);
     CHECK(describe(exact_line_pixels(a, b)) == describe(exact_line_pixels(b, a)));
   }
@@ -80,8 +80,8 @@ TEST_CASE("Each exact pixel is within half a pixel of the true line, exactly hal
           "[01_lines][step1][reference]") {
   tri::testing::Random random(11);
   for (int trial = 0; trial < 300; ++trial) {
-    const glm::ivec2 p0{random.integer(-100, 100), random.integer(-100, 100)};
-    const glm::ivec2 p1{random.integer(-100, 100), random.integer(-100, 100)};
+    const glm::ivec2 p0 = tri::testing::random_point(random, -100, 100);
+    const glm::ivec2 p1 = tri::testing::random_point(random, -100, 100);
     CAPTURE(p0.x, p0.y, p1.x, p1.y);
     const bool x_major = std::abs(p1.x - p0.x) >= std::abs(p1.y - p0.y);
     const auto major = [&](glm::ivec2 p) -> std::int64_t { return x_major ? p.x : p.y; };

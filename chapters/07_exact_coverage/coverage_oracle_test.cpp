@@ -146,8 +146,7 @@ TEST_CASE("The oracle gives the same pixels for all six vertex orders",
           "[07_exact_coverage][step1]") {
   tri::testing::Random random(5);
   for (int i = 0; i < 300; ++i) {
-    Triangle t;
-    for (auto& v : t) v = {random.real(-4, 20), random.real(-4, 20)};
+    const Triangle t = tri::testing::random_real_triangle(random, -4, 20);
     const PixelSet expected = oracle_pixels(t);
     for (const Triangle& order : tri::testing::vertex_orders(t)) {
       REQUIRE(oracle_pixels(order) == expected);

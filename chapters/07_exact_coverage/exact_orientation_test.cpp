@@ -110,8 +110,8 @@ TEST_CASE("Orientation's fast and exact paths agree near the line where doubles 
   // Points one ulp off a line with awkward slope: the filter must hand these to the exact path.
   tri::testing::Random random(3);
   for (int i = 0; i < 20000; ++i) {
-    const glm::dvec2 a{random.real(-100, 100), random.real(-100, 100)};
-    const glm::dvec2 b{random.real(-100, 100), random.real(-100, 100)};
+    const glm::dvec2 a = tri::testing::random_real_point(random, -100, 100);
+    const glm::dvec2 b = tri::testing::random_real_point(random, -100, 100);
     const double t = random.real(-2, 3);
     glm::dvec2 p = a + t * (b - a);
     p.y = std::nextafter(p.y, random.integer(0, 1) ? 1e9 : -1e9);

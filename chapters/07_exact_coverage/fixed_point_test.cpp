@@ -126,8 +126,7 @@ TEST_CASE("On arbitrary doubles the only deviations are the ones snapping explai
   tri::testing::Random random(77);
   int differs_from_unsnapped = 0;
   for (int i = 0; i < 2000; ++i) {
-    Triangle t;
-    for (auto& v : t) v = {random.real(-4, 52), random.real(-4, 52)};
+    const Triangle t = tri::testing::random_real_triangle(random, -4, 52);
     const PixelSet fixed = pixels_of(tri::ch07::draw_triangle_fixed_point_8, t);
     // Snap first, then ask the oracle: exactly the same pixels.
     REQUIRE(fixed == pixels_of(tri::ch07::draw_triangle_oracle, snapped(t, 8)));
@@ -143,8 +142,7 @@ TEST_CASE("Fewer fractional bits snap harder and still follow the top-left rule 
   tri::testing::Random random(4);
   for (const int bits : {0, 2, 4}) {
     for (int i = 0; i < 500; ++i) {
-      Triangle t;
-      for (auto& v : t) v = {random.real(-4, 52), random.real(-4, 52)};
+      const Triangle t = tri::testing::random_real_triangle(random, -4, 52);
       tri::Canvas canvas(48, 48);
       canvas.enable_write_counts();
       tri::ch07::draw_triangle_fixed_point(canvas, t, tri::colors::white, bits);

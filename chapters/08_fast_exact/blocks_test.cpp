@@ -1,5 +1,6 @@
 #include <catch2/catch.hpp>
 
+#include <cstdint>
 #include <map>
 #include <utility>
 
@@ -25,11 +26,26 @@ int area(const PixelBox& r) {
   return (r.max.x - r.min.x + 1) * (r.max.y - r.min.y + 1);
 }
 
+// How often each pixel (x, y) was visited.
+using Visits = std::map<std::pair<int, int>, int>;
+
 // Counts one visit of every pixel of the box.
-void count_visits(const PixelBox& box, std::map<std::pair<int, int>, int>& seen) {
+void count_visits(const PixelBox& box, Visits& seen) {
   for (int y = box.min.y; y <= box.max.y; ++y) {
     for (int x = box.min.x; x <= box.max.x; ++x) ++seen[{x, y}];
   }
+}
+
+void require_each_visited_once(const Visits& seen) {
+  for (const auto& [pixel, count] : seen) REQUIRE(count == 1);
+}
+
+// Calls visit(setup) for the triangles both tiling tests walk: 300 of every shape on 70x53.
+template <class Visit>
+void for_each_tiling_setup(std::uint64_t seed, Visit&& visit) {
+  tri::testing::Random random(seed);
+  tri::ch08::testing::for_each_random_setup(
+      random, 300, 70, 53, [&](int, const tri::ch08::TriangleSetup& setup) { visit(setup); });
 }
 
 }  // namespace
@@ -60,42 +76,38 @@ TEST_CASE("An accepted block is covered everywhere and a rejected one nowhere",
 
 TEST_CASE("The blocks tile the candidate pixels exactly once, 8x8 from the range's corner",
           "[08_fast_exact][step4]") {
-  tri::testing::Random random(45);
-  tri::ch08::testing::for_each_random_setup(
-      random, 300, 70, 53, [&](int, const tri::ch08::TriangleSetup& setup) {
-        std::map<std::pair<int, int>, int> seen;
-        tri::ch08::for_each_block(setup, [&](const PixelBox& block, BlockCoverage coverage) {
-          CHECK((block.min.x - setup.range.min.x) % 8 == 0);
-          CHECK((block.min.y - setup.range.min.y) % 8 == 0);
-          CHECK(block.max.x - block.min.x < 8);
-          CHECK(coverage == tri::ch08::classify_block(setup, block));
-          count_visits(block, seen);
-        });
-        REQUIRE(static_cast<int>(seen.size()) == area(setup.range));
-        for (const auto& [pixel, count] : seen) REQUIRE(count == 1);
-      });
+  for_each_tiling_setup(45, [&](const tri::ch08::TriangleSetup& setup) {
+    Visits seen;
+    tri::ch08::for_each_block(setup, [&](const PixelBox& block, BlockCoverage coverage) {
+      CHECK((block.min.x - setup.range.min.x) % 8 == 0);
+      CHECK((block.min.y - setup.range.min.y) % 8 == 0);
+      CHECK(block.max.x - block.min.x < 8);
+      CHECK(coverage == tri::ch08::classify_block(setup, block));
+      count_visits(block, seen);
+    });
+    REQUIRE(static_cast<int>(seen.size()) == area(setup.range));
+    require_each_visited_once(seen);
+  });
 }
 
 TEST_CASE("Runs of inside blocks and partial blocks hold every covered pixel exactly once",
           "[08_fast_exact][step4]") {
-  tri::testing::Random random(46);
-  tri::ch08::testing::for_each_random_setup(
-      random, 300, 70, 53, [&](int, const tri::ch08::TriangleSetup& setup) {
-        std::map<std::pair<int, int>, int> seen;
-        int covered_in_runs = 0, covered_in_partials = 0, run_pixels = 0;
-        tri::ch08::for_each_block_run(
-            setup,
-            [&](const PixelBox& run) {
-              count_visits(run, seen);
-              run_pixels += area(run);
-              covered_in_runs += covered_in(setup, run);
-            },
-            [&](const PixelBox& block) {
-              count_visits(block, seen);
-              covered_in_partials += covered_in(setup, block);
-            });
-        for (const auto& [pixel, count] : seen) REQUIRE(count == 1);
-        CHECK(covered_in_runs == run_pixels);
-        CHECK(covered_in_runs + covered_in_partials == covered_in(setup, setup.range));
-      });
+  for_each_tiling_setup(46, [&](const tri::ch08::TriangleSetup& setup) {
+    Visits seen;
+    int covered_in_runs = 0, covered_in_partials = 0, run_pixels = 0;
+    tri::ch08::for_each_block_run(
+        setup,
+        [&](const PixelBox& run) {
+          count_visits(run, seen);
+          run_pixels += area(run);
+          covered_in_runs += covered_in(setup, run);
+        },
+        [&](const PixelBox& block) {
+          count_visits(block, seen);
+          covered_in_partials += covered_in(setup, block);
+        });
+    require_each_visited_once(seen);
+    CHECK(covered_in_runs == run_pixels);
+    CHECK(covered_in_runs + covered_in_partials == covered_in(setup, setup.range));
+  });
 }

@@ -99,8 +99,7 @@ TEST_CASE("On arbitrary doubles every variant snaps exactly as chapter 07's fixe
           "[08_fast_exact][exactness]") {
   tri::testing::Random random(77);
   for (int i = 0; i < 1500; ++i) {
-    Triangle t;
-    for (auto& v : t) v = {random.real(-6, 38), random.real(-6, 38)};
+    const Triangle t = tri::testing::random_real_triangle(random, -6, 38);
     const Canvas reference = drawn_with_counts(tri::ch07::draw_triangle_fixed_point_8, t, 33, 33);
     for (const TriangleAlgorithm& algorithm : tri::ch08::triangle_algorithms()) {
       INFO(algorithm.name << ", triangle " << i);

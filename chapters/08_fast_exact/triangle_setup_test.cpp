@@ -1,6 +1,8 @@
 #include <catch2/catch.hpp>
 
+#include <array>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 #include "chapters/07_exact_coverage/coverage_oracle.hpp"
@@ -31,6 +33,12 @@ PixelSet oracle_pixels(const Triangle& t, int width, int height) {
   canvas.enable_write_counts();
   tri::ch07::draw_triangle_oracle(canvas, t, tri::colors::white);
   return tri::testing::written_pixels(canvas);
+}
+
+// Asserts an edge function's value and steps (as one array, which Catch prints on a failure).
+void check_edge(const tri::ch08::EdgeFunction& edge, std::int64_t value, std::int64_t step_x,
+                std::int64_t step_y) {
+  CHECK(std::array{edge.value, edge.step_x, edge.step_y} == std::array{value, step_x, step_y});
 }
 
 }  // namespace
@@ -93,17 +101,11 @@ TEST_CASE("edge steps are the vertex differences and values are whole-pixel edge
   const auto& [e0, e1, e2] = setup->edges;
   // Edge b -> c = (4,0) -> (0,4): E = (-1024)(py) - (1024)(px - 1024), at (0,0) E = 2^20 =
   // 4096 * 256; a right edge, so its exact zeros must fail: value 4096 - 1.
-  CHECK(e0.step_x == -1024);
-  CHECK(e0.step_y == -1024);
-  CHECK(e0.value == 4095);
+  check_edge(e0, 4095, -1024, -1024);
   // Edge c -> a = (0,4) -> (0,0), a left edge through the origin: E = 0 and no bias.
-  CHECK(e1.step_x == 1024);
-  CHECK(e1.step_y == 0);
-  CHECK(e1.value == 0);
+  check_edge(e1, 0, 1024, 0);
   // Edge a -> b = (0,0) -> (4,0), a bottom edge through the origin: E = 0, bias -1.
-  CHECK(e2.step_x == 0);
-  CHECK(e2.step_y == 1024);
-  CHECK(e2.value == -1);
+  check_edge(e2, -1, 0, 1024);
 }
 
 TEST_CASE("Direct evaluation of the setup equals the oracle for every shape of triangle",
@@ -124,9 +126,7 @@ TEST_CASE("A triangle around the whole canvas has clamped edges that pass everyw
   const auto setup = tri::ch08::setup_triangle({{{-far, -far}, {far, -far}, {0, far}}}, 20, 10);
   REQUIRE(setup);
   for (const auto& edge : setup->edges) {
-    CHECK(edge.value == tri::ch08::edge_value_limit);
-    CHECK(edge.step_x == 0);
-    CHECK(edge.step_y == 0);
+    check_edge(edge, tri::ch08::edge_value_limit, 0, 0);
   }
   CHECK(covered_by(setup).size() == 200);
 }

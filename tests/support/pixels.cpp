@@ -100,4 +100,17 @@ VertexTriple random_vertices(Random& random, int low, int high) {
   return {a, b, c};
 }
 
+glm::dvec2 random_real_point(Random& random, double low, double high) {
+  const double x = random.real(low, high);
+  const double y = random.real(low, high);
+  return {x, y};
+}
+
+std::array<glm::dvec2, 3> random_real_triangle(Random& random, double low, double high) {
+  const glm::dvec2 a = random_real_point(random, low, high);
+  const glm::dvec2 b = random_real_point(random, low, high);
+  const glm::dvec2 c = random_real_point(random, low, high);
+  return {a, b, c};
+}
+
 }  // namespace tri::testing

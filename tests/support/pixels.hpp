@@ -78,4 +78,10 @@ glm::ivec2 random_point(Random& random, int low, int high);
 /// Three points with coordinates in [low, high], drawn one after the other by random_point.
 VertexTriple random_vertices(Random& random, int low, int high);
 
+/// A point with both coordinates real numbers in [low, high), x drawn first.
+glm::dvec2 random_real_point(Random& random, double low, double high);
+
+/// Three points drawn one after the other by random_real_point: a triangle of doubles.
+std::array<glm::dvec2, 3> random_real_triangle(Random& random, double low, double high);
+
 }  // namespace tri::testing
