@@ -1,13 +1,17 @@
 /// @file
-/// The one home of the book's CPU-specific code: the vector lane types the fast variants compute
-/// in, the instruction sets this build holds copies of its hot loops for, which of them the host
-/// runs (asked at run time), and copy_for, which picks a loop's copy for a set. The default build
-/// is portable x86-64 (SSE2) and runs the AVX2 copies where the processor has AVX2; a build for
-/// another processor (the playground's WebAssembly) has the portable copies only. No other file
-/// names an instruction set: the loops are written once, as templates over the set.
+/// The one home of the book's CPU-specific code (a header only): the vector lane types the fast
+/// variants compute in, the instruction sets this build holds copies of its hot loops for, which of
+/// them the host runs (asked at run time), and copy_for, which picks a loop's copy for a set. The
+/// default build is portable x86-64 (SSE2) and runs the AVX2 copies where the processor has AVX2; a
+/// build for another processor (the playground's WebAssembly) has the portable copies only. No
+/// other file names an instruction set: the loops are written once, as templates over the set.
 #pragma once
 
 #include <array>
+
+#if defined(__SSE__)
+#include <xmmintrin.h>
+#endif
 
 namespace tri::ch08 {
 
@@ -42,14 +46,6 @@ template <class Lane, InstructionSet Set>
 using Register = Vector<Lane, register_bytes(Set) / static_cast<int>(sizeof(Lane))>;
 // [/listing]
 
-/// True when the host runs the copies for `set` in this build: the portable ones always, the
-/// AVX2 ones on an x86-64 processor with AVX2 (the processor is asked when the program loads).
-bool host_runs(InstructionSet set) noexcept;
-
-/// The widest set the host runs: the copy every fast path takes unless its caller (a test)
-/// names another.
-InstructionSet widest_instruction_set() noexcept;
-
 // Copies of one loop: GCC and Clang compile a function with the target attribute for those
 // instructions, and inline into it the loop's always-inline body.
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
@@ -57,6 +53,35 @@ InstructionSet widest_instruction_set() noexcept;
 #else
 #define TUTORIAL_AVX2_COPIES 0
 #endif
+
+/// Each of four float lanes clamped to [0, 1] (a NaN lane gives 0): SSE's max and min, one
+/// instruction each, where the target has them; elsewhere the same choices as generic vectors,
+/// which GCC 12 compiles into several instructions each.
+inline Vector<float, 4> clamp01(Vector<float, 4> v) noexcept {
+#if defined(__SSE__)
+  return _mm_min_ps(_mm_max_ps(v, Vector<float, 4>{}), Vector<float, 4>{} + 1.0f);
+#else
+  const Vector<float, 4> zero = {}, one = zero + 1.0f;
+  v = v > zero ? v : zero;
+  return v < one ? v : one;
+#endif
+}
+
+/// True when the host runs the copies for `set` in this build: the portable ones always, the
+/// AVX2 ones on an x86-64 processor with AVX2. Inline: a bit test of what the runtime library
+/// asked the processor (cpuid) when the program loaded, cheap enough for every triangle.
+inline bool host_runs(InstructionSet set) noexcept {
+#if TUTORIAL_AVX2_COPIES
+  if (set == InstructionSet::avx2) return __builtin_cpu_supports("avx2");
+#endif
+  return set == InstructionSet::portable;
+}
+
+/// The widest set the host runs: the copy every fast path takes unless its caller (a test)
+/// names another.
+inline InstructionSet widest_instruction_set() noexcept {
+  return host_runs(InstructionSet::avx2) ? InstructionSet::avx2 : InstructionSet::portable;
+}
 
 namespace detail {
 

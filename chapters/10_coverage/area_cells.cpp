@@ -7,10 +7,6 @@
 #include <limits>
 #include <utility>
 
-#if defined(__SSE__)
-#include <xmmintrin.h>
-#endif
-
 #include "common/scene.hpp"
 
 namespace tri::ch10 {
@@ -344,16 +340,6 @@ template <int Width>
 using Lanes = ch08::Vector<float, Width>;
 constexpr Lanes<4> centre_offsets = {0.5f, 1.5f, 2.5f, 3.5f};  // i + 1/2 from i = 0
 
-inline Lanes<4> clamp01(Lanes<4> v) {
-#if defined(__SSE__)
-  return _mm_min_ps(_mm_max_ps(v, Lanes<4>{}), Lanes<4>{} + 1.0f);  // one instruction each
-#else
-  const Lanes<4> zero = {}, one = zero + 1.0f;
-  v = v > zero ? v : zero;
-  return v < one ? v : one;
-#endif
-}
-
 struct PieceLanes {
   double lo;              // the piece's least x
   float inverse, half_d;  // 1 / d and d / 2
@@ -364,7 +350,7 @@ struct PieceLanes {
   // P for pixels i .. i + 3.
   [[gnu::always_inline]] Lanes<4> right_of(int i) const {
     const Lanes<4> g0 = static_cast<float>(i - lo) + centre_offsets;
-    const Lanes<4> ta = clamp01((g0 - 1.0f) * inverse), tb = clamp01(g0 * inverse);
+    const Lanes<4> ta = ch08::clamp01((g0 - 1.0f) * inverse), tb = ch08::clamp01(g0 * inverse);
     return ta + (tb - ta) * (g0 - half_d * (ta + tb));
   }
 };
