@@ -66,20 +66,9 @@ class IndexWriter {
   }
   void pixel(int x, int y) noexcept { canvas_.row(y)[x] = index_; }
   int width() const noexcept { return canvas_.width(); }
-
-  /// The span fill's rows from y up: a memset per span, the row's bytes moving up by the width.
-  struct Rows {
-    std::uint8_t* row;
-    std::ptrdiff_t stride;
-    std::uint8_t index;
-    void fill(int x_begin, int x_end) noexcept {
-      std::memset(row + x_begin, index, static_cast<std::size_t>(x_end - x_begin));
-    }
-    void next_row() noexcept { row += stride; }
-  };
   template <InstructionSet>
-  Rows rows_from(int y) noexcept {
-    return {canvas_.row(y), canvas_.width(), index_};
+  SpanRows<IndexWriter> rows_from(int) noexcept {
+    return {*this};
   }
 
  private:
@@ -101,7 +90,7 @@ class MaskWriter {
   struct Rows {
     std::uint64_t* row;
     std::ptrdiff_t stride;
-    void fill(int x_begin, int x_end) noexcept { set_bits(row, x_begin, x_end); }
+    void fill(int, int x_begin, int x_end) noexcept { set_bits(row, x_begin, x_end); }
     void next_row() noexcept { row += stride; }
   };
   template <InstructionSet>

@@ -12,6 +12,8 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <type_traits>
+#include <utility>
 
 #include "chapters/08_fast_exact/instruction_sets.hpp"
 #include "chapters/08_fast_exact/triangle_setup.hpp"
@@ -70,24 +72,20 @@ struct PixelRows {
   Color* row;
   std::ptrdiff_t stride;
   std::uint32_t word;
-  [[gnu::always_inline]] void fill(int x_begin, int x_end) noexcept {
+  [[gnu::always_inline]] void fill(int, int x_begin, int x_end) noexcept {
     fill_pixels_in<Bytes>(row + x_begin, x_end - x_begin, word);
   }
   // After the canvas's top row, row ends one past its last pixel: a valid pointer, never used.
   [[gnu::always_inline]] void next_row() noexcept { row += stride; }
 };
 
-/// The rows of a writer that has only span(): each row's span through it, by y.
+/// The rows of a writer that writes spans by y: each row's span through its span(), nothing to
+/// move from row to row.
 template <class Writer>
-class SpanRows {
- public:
-  SpanRows(Writer& writer, int y) noexcept : writer_(writer), y_(y) {}
-  void fill(int x_begin, int x_end) noexcept { writer_.span(y_, x_begin, x_end); }
-  void next_row() noexcept { ++y_; }
-
- private:
-  Writer& writer_;
-  int y_;
+struct SpanRows {
+  Writer& writer;
+  void fill(int y, int x_begin, int x_end) noexcept { writer.span(y, x_begin, x_end); }
+  void next_row() noexcept {}
 };
 
 /// Writes into Canvas::row, with no per-pixel bounds or counter checks. Callers pass only
@@ -145,8 +143,8 @@ class CountingWriter {
   void pixel(int x, int y) noexcept { canvas_.put_pixel(x, y, color_); }
   int width() const noexcept { return row_end_; }
   template <InstructionSet>
-  SpanRows<CountingWriter> rows_from(int y) noexcept {
-    return {*this, y};
+  SpanRows<CountingWriter> rows_from(int) noexcept {
+    return {*this};
   }
 
  private:
@@ -158,20 +156,33 @@ class CountingWriter {
 // [listing pixel_writer]
 /// What every traversal needs from a writer: whole spans of a row, single pixels, the end of the
 /// pixels of a row it may touch (the canvas width, or a tile's right end), and the row-store hook
-/// of the span fill: rows from y up, filled span by span (fill) and stepped (next_row), in the
-/// stores of an instruction set's copy. RowWriter and CountingWriter are the canvas's two; each
-/// traversal is one template over them.
+/// of the span fill: rows from y up, filled span by span (fill, given the row's y) and stepped
+/// (next_row), in the stores of an instruction set's copy. RowWriter and CountingWriter are the
+/// canvas's two; each traversal is one template over them.
 template <class Writer>
 concept PixelWriter = requires(Writer writer, int x, int y) {
   writer.span(y, x, x + 1);  // pixels x_begin <= x < x_end of row y
   writer.pixel(x, y);
   { writer.width() } -> std::convertible_to<int>;
-  writer.template rows_from<InstructionSet::portable>(y).fill(x, x + 1);
+  writer.template rows_from<InstructionSet::portable>(y).fill(y, x, x + 1);
   writer.template rows_from<InstructionSet::portable>(y).next_row();
 };
 // [/listing]
 
 static_assert(PixelWriter<RowWriter> && PixelWriter<CountingWriter>);
+
+/// True when a writer's row-store hook is the same in every instruction set's copy (no vector
+/// stores to widen): a loop over its rows then needs only the portable copy, and no choice.
+template <class Writer>
+inline constexpr bool same_rows_in_every_copy = []<std::size_t... I>(std::index_sequence<I...>) {
+  using Portable =
+      decltype(std::declval<Writer&>().template rows_from<InstructionSet::portable>(0));
+  return (std::is_same_v<Portable, decltype(std::declval<Writer&>()
+                                                .template rows_from<all_instruction_sets[I]>(0))> &&
+          ...);
+}
+(std::make_index_sequence<all_instruction_sets.size()>{});
+static_assert(!same_rows_in_every_copy<RowWriter> && same_rows_in_every_copy<CountingWriter>);
 
 /// Calls `draw.template operator()<Writer>()` with the writer type that suits the canvas (counting
 /// when it counts writes), for batch loops that make a writer per triangle themselves.

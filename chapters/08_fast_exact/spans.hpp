@@ -154,8 +154,8 @@ struct SpanFill {
       const SpanWalker walker(setup);
       if (walker.first_row() > walker.last_row()) return;
       auto rows = writer.template rows_from<Set>(walker.first_row());
-      walker.for_each_row([&](int, RowSpan s) {
-        if (!s.empty()) rows.fill(s.first, s.last + 1);
+      walker.for_each_row([&](int y, RowSpan s) {
+        if (!s.empty()) rows.fill(y, s.first, s.last + 1);
         rows.next_row();
       });
     }
@@ -164,11 +164,16 @@ struct SpanFill {
 
 /// Draws a prepared triangle the way draw_triangle_spans does, through any writer, with the copy
 /// of the loop for `set` (by default the widest the host runs). Through RowWriter, each span is
-/// one fill_pixels_in with the stores of span_store_bytes(set).
+/// one fill_pixels_in with the stores of span_store_bytes(set); a writer whose rows store alike
+/// in every copy takes the portable one.
 template <PixelWriter Writer>
 void fill_spans(const TriangleSetup& setup, Writer& writer,
                 InstructionSet set = widest_instruction_set()) {
-  copy_for<SpanFill<Writer>::template Loop>(set)(setup, writer);
+  if constexpr (same_rows_in_every_copy<Writer>) {
+    SpanFill<Writer>::template Loop<InstructionSet::portable>::run(setup, writer);
+  } else {
+    copy_for<SpanFill<Writer>::template Loop>(set)(setup, writer);
+  }
 }
 // [/listing]
 
