@@ -9,10 +9,6 @@
 
 #include <array>
 
-#if defined(__SSE__)
-#include <xmmintrin.h>
-#endif
-
 namespace tri::ch08 {
 
 // [listing lane_vectors]
@@ -53,19 +49,6 @@ using Register = Vector<Lane, register_bytes(Set) / static_cast<int>(sizeof(Lane
 #else
 #define TUTORIAL_AVX2_COPIES 0
 #endif
-
-/// Each of four float lanes clamped to [0, 1] (a NaN lane gives 0): SSE's max and min, one
-/// instruction each, where the target has them; elsewhere the same choices as generic vectors,
-/// which GCC 12 compiles into several instructions each.
-inline Vector<float, 4> clamp01(Vector<float, 4> v) noexcept {
-#if defined(__SSE__)
-  return _mm_min_ps(_mm_max_ps(v, Vector<float, 4>{}), Vector<float, 4>{} + 1.0f);
-#else
-  const Vector<float, 4> zero = {}, one = zero + 1.0f;
-  v = v > zero ? v : zero;
-  return v < one ? v : one;
-#endif
-}
 
 /// True when the host runs the copies for `set` in this build: the portable ones always, the
 /// AVX2 ones on an x86-64 processor with AVX2. Inline: a bit test of what the runtime library

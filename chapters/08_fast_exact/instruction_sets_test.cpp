@@ -3,7 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include <cstdint>
-#include <span>
+#include <initializer_list>
 #include <vector>
 
 #include "chapters/08_fast_exact/batched.hpp"
@@ -19,13 +19,18 @@ using tri::ch08::testing::same_canvas;
 
 namespace {
 
-// Every set this host runs but the portable one: the copies compared with the fallback.
-std::vector<InstructionSet> wider_sets_the_host_runs() {
-  std::vector<InstructionSet> sets;
+// Calls check(set, seed) for every set this host runs but the portable one (the copies compared
+// with the fallback) and every seed, both named in a failed check's message.
+template <class Check>
+void for_each_wider_copy(std::initializer_list<std::uint64_t> seeds, Check&& check) {
   for (const InstructionSet set : tri::ch08::all_instruction_sets) {
-    if (set != InstructionSet::portable && tri::ch08::host_runs(set)) sets.push_back(set);
+    if (set == InstructionSet::portable || !tri::ch08::host_runs(set)) continue;
+    INFO("copy " << static_cast<int>(set));
+    for (const std::uint64_t seed : seeds) {
+      INFO("seed " << seed);
+      check(set, seed);
+    }
   }
-  return sets;
 }
 
 // The scene drawn triangle by triangle with fill_spans's copy for `set`, into every writer.
@@ -78,38 +83,30 @@ TEST_CASE("The host runs the portable copies, and the widest set it runs is one 
 
 TEST_CASE("Every copy of the span fill the host runs writes the portable copy's pixels",
           "[08_fast_exact][step3]") {
-  for (const InstructionSet set : wider_sets_the_host_runs()) {
-    INFO("copy " << static_cast<int>(set));
-    for (const std::uint64_t seed : {301u, 302u, 303u}) {
-      INFO("seed " << seed);
-      // Odd sizes: spans that end at every offset of a 32-byte store, at the canvas's right edge.
-      for (const int size : {37, 100}) {
-        const auto scene = overlapping_scene(seed, 300, size);
-        const SpanCanvases portable = spans_drawn(scene, size, InstructionSet::portable);
-        const SpanCanvases forced = spans_drawn(scene, size, set);
-        CHECK(same_canvas(forced.rgba, portable.rgba));
-        CHECK(same_canvas(forced.counted, portable.counted));
-        CHECK(same_narrow(forced, portable, size));
-      }
+  for_each_wider_copy({301, 302, 303}, [](InstructionSet set, std::uint64_t seed) {
+    // Odd sizes: spans that end at every offset of a 32-byte store, at the canvas's right edge.
+    for (const int size : {37, 100}) {
+      const auto scene = overlapping_scene(seed, 300, size);
+      const SpanCanvases portable = spans_drawn(scene, size, InstructionSet::portable);
+      const SpanCanvases forced = spans_drawn(scene, size, set);
+      CHECK(same_canvas(forced.rgba, portable.rgba));
+      CHECK(same_canvas(forced.counted, portable.counted));
+      CHECK(same_narrow(forced, portable, size));
     }
-  }
+  });
 }
 
 TEST_CASE("Every copy of the batched lanes the host runs draws the portable copy's pixels",
           "[08_fast_exact][step10]") {
-  for (const InstructionSet set : wider_sets_the_host_runs()) {
-    INFO("copy " << static_cast<int>(set));
-    for (const std::uint64_t seed : {1001u, 1002u, 1003u}) {
-      INFO("seed " << seed);
-      const auto scene = overlapping_scene(seed, 400, 61);
-      for (const bool counting : {false, true}) {
-        const auto drawn = [&](InstructionSet copy) {
-          return tri::ch08::testing::drawn_on(61, 61, counting, [&](Canvas& canvas) {
-            tri::ch08::draw_batch_batched_with(canvas, scene, copy);
-          });
-        };
-        CHECK(same_canvas(drawn(set), drawn(InstructionSet::portable)));
-      }
+  for_each_wider_copy({1001, 1002, 1003}, [](InstructionSet set, std::uint64_t seed) {
+    const auto scene = overlapping_scene(seed, 400, 61);
+    for (const bool counting : {false, true}) {
+      const auto drawn = [&](InstructionSet copy) {
+        return tri::ch08::testing::drawn_on(61, 61, counting, [&](Canvas& canvas) {
+          tri::ch08::draw_batch_batched_with(canvas, scene, copy);
+        });
+      };
+      CHECK(same_canvas(drawn(set), drawn(InstructionSet::portable)));
     }
-  }
+  });
 }

@@ -7,6 +7,10 @@
 #include <limits>
 #include <utility>
 
+#if defined(__SSE__)
+#include <xmmintrin.h>
+#endif
+
 #include "common/scene.hpp"
 
 namespace tri::ch10 {
@@ -340,6 +344,16 @@ template <int Width>
 using Lanes = ch08::Vector<float, Width>;
 constexpr Lanes<4> centre_offsets = {0.5f, 1.5f, 2.5f, 3.5f};  // i + 1/2 from i = 0
 
+inline Lanes<4> clamp01(Lanes<4> v) {
+#if defined(__SSE__)
+  return _mm_min_ps(_mm_max_ps(v, Lanes<4>{}), Lanes<4>{} + 1.0f);  // one instruction each
+#else
+  const Lanes<4> zero = {}, one = zero + 1.0f;
+  v = v > zero ? v : zero;
+  return v < one ? v : one;
+#endif
+}
+
 struct PieceLanes {
   double lo;              // the piece's least x
   float inverse, half_d;  // 1 / d and d / 2
@@ -350,7 +364,7 @@ struct PieceLanes {
   // P for pixels i .. i + 3.
   [[gnu::always_inline]] Lanes<4> right_of(int i) const {
     const Lanes<4> g0 = static_cast<float>(i - lo) + centre_offsets;
-    const Lanes<4> ta = ch08::clamp01((g0 - 1.0f) * inverse), tb = ch08::clamp01(g0 * inverse);
+    const Lanes<4> ta = clamp01((g0 - 1.0f) * inverse), tb = clamp01(g0 * inverse);
     return ta + (tb - ta) * (g0 - half_d * (ta + tb));
   }
 };
@@ -446,7 +460,8 @@ template <int Width>
 // eight in the AVX2 one. Elsewhere than x86-64 (the playground's WebAssembly) only the portable.
 template <ch08::InstructionSet Set>
 struct SummedRows {
-  [[gnu::always_inline]] static void run(CoverageCanvas& canvas, const ByHeight& v, int first_row,
+  // The vertices by value: a local copy that no pixel store can alias stays in registers.
+  [[gnu::always_inline]] static void run(CoverageCanvas& canvas, ByHeight v, int first_row,
                                          int last_row) {
     constexpr int floats = ch08::register_bytes(Set) / static_cast<int>(sizeof(float));
     add_summed_rows_in<floats>(canvas, v, first_row, last_row);
