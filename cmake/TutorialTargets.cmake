@@ -13,6 +13,13 @@ if(CMAKE_CXX_COMPILER_ID STREQUAL "GNU" AND CMAKE_CXX_COMPILER_VERSION VERSION_G
    AND CMAKE_CXX_COMPILER_VERSION VERSION_LESS 13)
   target_compile_options(tutorial_options INTERFACE -Wno-restrict)
 endif()
+# Opt-in: compile everything for the host's own instructions (the result runs only on processors
+# like the one that built it), every copy of chapter 08's dispatched loops included. Portable
+# x86-64 (SSE2) by default, where those loops' wider copies are chosen at run time.
+option(TUTORIAL_NATIVE "Compile every target with -march=native" OFF)
+if(TUTORIAL_NATIVE)
+  target_compile_options(tutorial_options INTERFACE $<$<CXX_COMPILER_ID:GNU,Clang>:-march=native>)
+endif()
 if(TUTORIAL_SANITIZE)
   # A float-to-integer conversion of a value out of the integer's range is undefined behaviour
   # that GCC's -fsanitize=undefined does not check (Clang's does): asked for by name where known.

@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "chapters/08_fast_exact/hybrid.hpp"
+#include "chapters/08_fast_exact/instruction_sets.hpp"
 #include "chapters/08_fast_exact/pixel_writers.hpp"
 
 // The lane functions take and return vectors by value, and AVX2's are 32 bytes wide. GCC and
@@ -16,21 +17,12 @@
 namespace tri::ch08 {
 namespace {
 
-// The lanes are GCC's and Clang's generic vectors, as in step 5, here exactly one register wide:
-// two doubles with SSE2 (every x86-64, the default build), four with AVX2. Wider generic vectors
-// than the target's registers were split badly: GCC 12 turned their comparisons into one scalar
-// comparison per lane. Every function below is a template over the register (Lanes) and always
-// inlined, so that it is compiled for the instructions of the function that calls it.
-// Comparisons give Integers: all bits set where true.
-typedef double Sse2Lanes __attribute__((vector_size(16)));
-typedef double Avx2Lanes __attribute__((vector_size(32)));
-// What the build's own instructions hold: SSE2's two lanes by default, AVX2's four with
-// -march=native (TUTORIAL_NATIVE) on a host that has them.
-#if defined(__AVX2__)
-using BuildLanes = Avx2Lanes;
-#else
-using BuildLanes = Sse2Lanes;
-#endif
+// The lanes are generic vectors (instruction_sets.hpp), as in step 5, here exactly one register
+// wide: two doubles in the portable copy (SSE2, every x86-64), four in the AVX2 copy. Wider
+// generic vectors than the target's registers were split badly: GCC 12 turned their comparisons
+// into one scalar comparison per lane. Every function below is a template over the register
+// (Lanes) and always inlined, so that it is compiled for the instructions of the copy that calls
+// it. Comparisons give Integers: all bits set where true.
 template <class Lanes>
 using IntegersOf = decltype(Lanes{} < Lanes{});
 template <class Lanes>
@@ -189,35 +181,23 @@ LANE_FUNCTION void set_up_registers(const Vertices& vertices, int width, int hei
   }
 }
 
-#if defined(__x86_64__) && !defined(__AVX2__)
-constexpr bool can_choose_avx2 = true;
-// The same code compiled for AVX2: four lanes per instruction, three operands (no copies).
-__attribute__((target("avx2"))) void set_up_registers_avx2(const Vertices& vertices, int width,
-                                                           int height, SetupLanes& lanes) noexcept {
-  set_up_registers<Avx2Lanes>(vertices, width, height, lanes);
-}
-#else
-constexpr bool can_choose_avx2 = false;  // not x86-64, or a build for AVX2 already
-void set_up_registers_avx2(const Vertices& vertices, int width, int height,
-                           SetupLanes& lanes) noexcept {
-  set_up_registers<BuildLanes>(vertices, width, height, lanes);
-}
-#endif
+// set_up_registers in the copy for Set: SSE2's two lanes per instruction, or AVX2's four with
+// three operands (no copies).
+template <InstructionSet Set>
+struct SetUpRegisters {
+  [[gnu::always_inline]] static void run(const Vertices& vertices, int width, int height,
+                                         SetupLanes& lanes) noexcept {
+    set_up_registers<Register<double, Set>>(vertices, width, height, lanes);
+  }
+};
 
 #undef LANE_FUNCTION
 
 }  // namespace
 
-LaneInstructions widest_lane_instructions() noexcept {
-#if defined(__x86_64__) && !defined(__AVX2__)
-  if (__builtin_cpu_supports("avx2")) return LaneInstructions::avx2;
-#endif
-  return LaneInstructions::portable;
-}
-
 // [listing set_up_lanes]
 void set_up_lanes(std::span<const SceneTriangle> triangles, int width, int height,
-                  SetupLanes& lanes, LaneInstructions instructions) noexcept {
+                  SetupLanes& lanes, InstructionSet set) noexcept {
   // The vertices as a structure of arrays. Lanes past the triangles given keep zeros: zero area.
   Vertices vertices{};
   const std::size_t count = std::min<std::size_t>(triangles.size(), setup_lanes);
@@ -227,11 +207,7 @@ void set_up_lanes(std::span<const SceneTriangle> triangles, int width, int heigh
       vertices[2 * v + 1][i] = triangles[i].vertices[v].y;
     }
   }
-  if (can_choose_avx2 && instructions == LaneInstructions::avx2) {
-    set_up_registers_avx2(vertices, width, height, lanes);
-  } else {
-    set_up_registers<BuildLanes>(vertices, width, height, lanes);
-  }
+  copy_for<SetUpRegisters>(set)(vertices, width, height, lanes);
 }
 // [/listing]
 
@@ -239,13 +215,12 @@ namespace {
 
 // [listing draw_groups]
 template <PixelWriter Writer>
-void draw_groups(Canvas& canvas, std::span<const SceneTriangle> triangles) {
+void draw_groups(Canvas& canvas, std::span<const SceneTriangle> triangles, InstructionSet set) {
   const int width = canvas.width(), height = canvas.height();
   SetupLanes lanes;
-  const LaneInstructions instructions = widest_lane_instructions();
   while (!triangles.empty()) {
     const std::size_t count = std::min<std::size_t>(triangles.size(), setup_lanes);
-    set_up_lanes(triangles, width, height, lanes, instructions);
+    set_up_lanes(triangles, width, height, lanes, set);
     for (std::size_t i = 0; i < count; ++i) {
       if (lanes.result[i] == LaneResult::set_up) {
         Writer writer(canvas, triangles[i].color);
@@ -270,7 +245,12 @@ void draw_triangle_batched(Canvas& canvas, const Triangle& triangle, Color color
 }
 
 void draw_batch_batched(Canvas& canvas, std::span<const SceneTriangle> triangles) {
-  with_writer_type(canvas, [&]<class Writer>() { draw_groups<Writer>(canvas, triangles); });
+  draw_batch_batched_with(canvas, triangles, widest_instruction_set());
+}
+
+void draw_batch_batched_with(Canvas& canvas, std::span<const SceneTriangle> triangles,
+                             InstructionSet set) {
+  with_writer_type(canvas, [&]<class Writer>() { draw_groups<Writer>(canvas, triangles, set); });
 }
 
 }  // namespace tri::ch08

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <span>
 
+#include "chapters/08_fast_exact/instruction_sets.hpp"
 #include "chapters/08_fast_exact/triangle_setup.hpp"
 #include "common/canvas.hpp"
 #include "common/color.hpp"
@@ -56,23 +57,14 @@ struct SetupLanes {
   }
 };
 
-/// The vector instructions set_up_lanes runs on: SSE2's two lanes per instruction, which every
-/// x86-64 has (and, as generic vectors, any other target), or AVX2's four.
-enum class LaneInstructions { portable, avx2 };
-
-/// AVX2 when this build is for x86-64 without it and the host has it (asked at run time), so
-/// that the portable build uses it where it can; portable otherwise (a build for AVX2 or wider
-/// compiles the portable code with its own instructions already).
-LaneInstructions widest_lane_instructions() noexcept;
-
 /// Sets up the first min(setup_lanes, size) triangles of `triangles` for a width x height canvas
 /// (at most 16384 a side) in lanes: the same snapping, zero-area cull, counter-clockwise order,
 /// candidate pixels, edges with the top-left bias and extent as setup_triangle. Vertices must be
-/// finite (draw_triangles checks them); lanes beyond the triangles given are `nothing`. Both
-/// choices of instructions give the same numbers.
+/// finite (draw_triangles checks them); lanes beyond the triangles given are `nothing`. In the
+/// copy for `set` (by default the widest the host runs): SSE2's two lanes per instruction (as
+/// generic vectors, any target's), or AVX2's four. Every copy gives the same numbers.
 void set_up_lanes(std::span<const SceneTriangle> triangles, int width, int height,
-                  SetupLanes& lanes,
-                  LaneInstructions instructions = widest_lane_instructions()) noexcept;
+                  SetupLanes& lanes, InstructionSet set = widest_instruction_set()) noexcept;
 
 /// Step 10 · one triangle: set_up_lanes with one lane used, then fill_hybrid.
 void draw_triangle_batched(Canvas& canvas, const Triangle& triangle, Color color);
@@ -80,5 +72,8 @@ void draw_triangle_batched(Canvas& canvas, const Triangle& triangle, Color color
 /// Step 10 · a batch: set_up_lanes for each group of setup_lanes triangles, then fill_hybrid
 /// for each of them in submission order, so the pixels are draw_batch_hybrid's.
 void draw_batch_batched(Canvas& canvas, std::span<const SceneTriangle> triangles);
+/// The same with the lanes' copy for `set` (the tests force each the host runs).
+void draw_batch_batched_with(Canvas& canvas, std::span<const SceneTriangle> triangles,
+                             InstructionSet set);
 
 }  // namespace tri::ch08

@@ -48,12 +48,11 @@ struct LaneCounts {
 // setup_triangle: a lane set up in lanes has its fields, a lane with nothing to draw has none,
 // and exactly the triangles with a vertex beyond the lanes' bound go to the scalar setup.
 void check_lanes(const std::vector<SceneTriangle>& triangles, int width, int height, int group,
-                 tri::ch08::LaneInstructions instructions, LaneCounts& counts) {
+                 tri::ch08::InstructionSet set, LaneCounts& counts) {
   SetupLanes lanes;
   for (std::size_t first = 0; first < triangles.size(); first += static_cast<std::size_t>(group)) {
     const std::size_t count = std::min(triangles.size() - first, static_cast<std::size_t>(group));
-    tri::ch08::set_up_lanes(std::span(triangles).subspan(first, count), width, height, lanes,
-                            instructions);
+    tri::ch08::set_up_lanes(std::span(triangles).subspan(first, count), width, height, lanes, set);
     for (std::size_t i = 0; i < tri::ch08::setup_lanes; ++i) {
       if (i >= count) {
         REQUIRE(lanes.result[i] == LaneResult::nothing);
@@ -62,7 +61,7 @@ void check_lanes(const std::vector<SceneTriangle>& triangles, int width, int hei
       const Triangle& t = triangles[first + i].vertices;
       INFO("triangle " << first + i << ": " << t[0].x << "," << t[0].y << " " << t[1].x << ","
                        << t[1].y << " " << t[2].x << "," << t[2].y << " on " << width << "x"
-                       << height << ", instructions " << static_cast<int>(instructions));
+                       << height << ", copy " << static_cast<int>(set));
       const auto expected = tri::ch08::setup_triangle(t, width, height);
       REQUIRE((lanes.result[i] == LaneResult::scalar) == beyond_lanes(t));
       if (lanes.result[i] == LaneResult::scalar) {
@@ -79,13 +78,13 @@ void check_lanes(const std::vector<SceneTriangle>& triangles, int width, int hei
   }
 }
 
-// check_lanes with the portable instructions and with the widest this host offers (AVX2 where
-// it has them, else the portable ones again).
+// check_lanes with the portable copy and with the widest this host runs (AVX2 where it has
+// them, else the portable one again).
 void check_lanes(const std::vector<SceneTriangle>& triangles, int width, int height, int group,
                  LaneCounts& counts) {
-  for (const auto instructions :
-       {tri::ch08::LaneInstructions::portable, tri::ch08::widest_lane_instructions()}) {
-    check_lanes(triangles, width, height, group, instructions, counts);
+  for (const auto set :
+       {tri::ch08::InstructionSet::portable, tri::ch08::widest_instruction_set()}) {
+    check_lanes(triangles, width, height, group, set, counts);
   }
 }
 

@@ -2,10 +2,11 @@
 /// Step 8 · only the bytes the picture needs: canvases of one byte per pixel (a palette index,
 /// for a scene of at most 255 colours) and of one bit per pixel (covered or not, for a one-colour
 /// scene or when only coverage is wanted), with the writers that let step 3's span traversal fill
-/// them. The traversal decides which pixels to write exactly as for the RGBA8 canvas; only the
-/// store differs.
+/// them (each writer's row-store hook). The traversal decides which pixels to write exactly as for
+/// the RGBA8 canvas; only the store differs.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <cstring>
 #include <span>
@@ -65,6 +66,10 @@ class IndexWriter {
   }
   void pixel(int x, int y) noexcept { canvas_.row(y)[x] = index_; }
   int width() const noexcept { return canvas_.width(); }
+  template <InstructionSet>
+  SpanRows<IndexWriter> rows_from(int) noexcept {
+    return {*this};
+  }
 
  private:
   IndexCanvas& canvas_;
@@ -80,10 +85,18 @@ class MaskWriter {
   void pixel(int x, int y) noexcept { canvas_.row(y)[x / 64] |= std::uint64_t{1} << (x % 64); }
   int width() const noexcept { return canvas_.width(); }
 
-  /// For code that walks rows itself (spans.cpp): row y's words and the words from one row to the
-  /// next.
-  std::uint64_t* row_words(int y) noexcept { return canvas_.row(y); }
-  int stride() const noexcept { return canvas_.words_per_row(); }
+  /// The span fill's rows from y up: the row's words move up by the stride instead of being asked
+  /// for by y. One bit per pixel needs no vector stores: every copy sets the same words.
+  struct Rows {
+    std::uint64_t* row;
+    std::ptrdiff_t stride;
+    void fill(int, int x_begin, int x_end) noexcept { set_bits(row, x_begin, x_end); }
+    void next_row() noexcept { row += stride; }
+  };
+  template <InstructionSet>
+  Rows rows_from(int y) noexcept {
+    return {canvas_.row(y), canvas_.words_per_row()};
+  }
 
   /// Sets bits x_begin <= x < x_end (0 <= x_begin < x_end) of one row's words.
   static void set_bits(std::uint64_t* words, int x_begin, int x_end) noexcept {

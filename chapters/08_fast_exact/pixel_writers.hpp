@@ -9,9 +9,13 @@
 #include <array>
 #include <bit>
 #include <concepts>
+#include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <type_traits>
+#include <utility>
 
+#include "chapters/08_fast_exact/instruction_sets.hpp"
 #include "chapters/08_fast_exact/triangle_setup.hpp"
 #include "common/canvas.hpp"
 #include "common/color.hpp"
@@ -27,14 +31,14 @@ static_assert(sizeof(Color) == sizeof(std::uint32_t), "a pixel is one 32-bit wor
 /// overlapping the ones before instead of finishing pixel by pixel, with no test of what the loop
 /// left. A span shorter than 2P pixels takes two overlapping stores, or goes to the next narrower
 /// store, and below 4 pixels to single words. The word sits in a local vector that no store can
-/// alias, so it stays in a register. Inlined always, so that a caller compiled for AVX2
-/// (spans.cpp) gets its 32-byte stores; without AVX2, each becomes two 16-byte stores.
+/// alias, so it stays in a register. Inlined always, so that a caller compiled for AVX2 (the span
+/// fill's AVX2 copy) gets its 32-byte stores; without AVX2, each becomes two 16-byte stores.
 template <int Bytes>
 [[gnu::always_inline]] inline void fill_pixels_in(Color* first, int count,
                                                   std::uint32_t word) noexcept {
   static_assert(Bytes == 16 || Bytes == 32);
   constexpr int P = Bytes / 4;
-  typedef std::uint32_t Lanes __attribute__((vector_size(Bytes)));
+  using Lanes = Vector<std::uint32_t, P>;
   const Lanes lanes = Lanes{} + word;
   if (count >= 2 * P) {
     for (int i = 0; i < count - 2 * P; i += 2 * P) {
@@ -54,12 +58,35 @@ template <int Bytes>
 }
 
 /// fill_pixels_in with 16-byte stores, the widest every x86-64 has (SSE2): what the portable
-/// build writes with wherever no wider store was chosen at run time. GCC 12 compiles std::fill
+/// build writes with outside the span fill's copies for wider registers. GCC 12 compiles std::fill
 /// over Color (canvas.cpp) into one 4-byte store per pixel (see the README).
 inline void fill_pixels(Color* first, int count, std::uint32_t word) noexcept {
   fill_pixels_in<16>(first, count, word);
 }
 // [/listing]
+
+/// A RowWriter's rows for the span fill: each span one fill_pixels_in with stores of Bytes bytes,
+/// the row's first pixel moving up by the stride, so nothing of the canvas is read again per row.
+template <int Bytes>
+struct PixelRows {
+  Color* row;
+  std::ptrdiff_t stride;
+  std::uint32_t word;
+  [[gnu::always_inline]] void fill(int, int x_begin, int x_end) noexcept {
+    fill_pixels_in<Bytes>(row + x_begin, x_end - x_begin, word);
+  }
+  // After the canvas's top row, row ends one past its last pixel: a valid pointer, never used.
+  [[gnu::always_inline]] void next_row() noexcept { row += stride; }
+};
+
+/// The rows of a writer that writes spans by y: each row's span through its span(), nothing to
+/// move from row to row.
+template <class Writer>
+struct SpanRows {
+  Writer& writer;
+  void fill(int y, int x_begin, int x_end) noexcept { writer.span(y, x_begin, x_end); }
+  void next_row() noexcept {}
+};
 
 /// Writes into Canvas::row, with no per-pixel bounds or counter checks. Callers pass only
 /// pixels of the canvas. Safe for threads that write disjoint rows, or disjoint tiles when each
@@ -87,6 +114,11 @@ class RowWriter {
   std::uint32_t word() const noexcept { return word_; }
   /// No pixel at or right of this column may be touched, not even rewritten unchanged.
   int width() const noexcept { return row_end_; }
+  /// The rows from y up, for the span fill's copy for Set: stores of Set's register width.
+  template <InstructionSet Set>
+  PixelRows<register_bytes(Set)> rows_from(int y) noexcept {
+    return {row_pixels(y), stride(), word_};
+  }
 
  private:
   Canvas& canvas_;
@@ -110,6 +142,10 @@ class CountingWriter {
   }
   void pixel(int x, int y) noexcept { canvas_.put_pixel(x, y, color_); }
   int width() const noexcept { return row_end_; }
+  template <InstructionSet>
+  SpanRows<CountingWriter> rows_from(int) noexcept {
+    return {*this};
+  }
 
  private:
   Canvas& canvas_;
@@ -118,18 +154,35 @@ class CountingWriter {
 };
 
 // [listing pixel_writer]
-/// What every traversal needs from a writer: whole spans of a row, single pixels, and the end of
-/// the pixels of a row it may touch (the canvas width, or a tile's right end). RowWriter and
-/// CountingWriter are the two; each traversal is one template over them.
+/// What every traversal needs from a writer: whole spans of a row, single pixels, the end of the
+/// pixels of a row it may touch (the canvas width, or a tile's right end), and the row-store hook
+/// of the span fill: rows from y up, filled span by span (fill, given the row's y) and stepped
+/// (next_row), in the stores of an instruction set's copy. RowWriter and CountingWriter are the
+/// canvas's two; each traversal is one template over them.
 template <class Writer>
 concept PixelWriter = requires(Writer writer, int x, int y) {
   writer.span(y, x, x + 1);  // pixels x_begin <= x < x_end of row y
   writer.pixel(x, y);
   { writer.width() } -> std::convertible_to<int>;
+  writer.template rows_from<InstructionSet::portable>(y).fill(y, x, x + 1);
+  writer.template rows_from<InstructionSet::portable>(y).next_row();
 };
 // [/listing]
 
 static_assert(PixelWriter<RowWriter> && PixelWriter<CountingWriter>);
+
+/// True when a writer's row-store hook is the same in every instruction set's copy (no vector
+/// stores to widen): a loop over its rows then needs only the portable copy, and no choice.
+template <class Writer>
+inline constexpr bool same_rows_in_every_copy = []<std::size_t... I>(std::index_sequence<I...>) {
+  using Portable =
+      decltype(std::declval<Writer&>().template rows_from<InstructionSet::portable>(0));
+  return (std::is_same_v<Portable, decltype(std::declval<Writer&>()
+                                                .template rows_from<all_instruction_sets[I]>(0))> &&
+          ...);
+}
+(std::make_index_sequence<all_instruction_sets.size()>{});
+static_assert(!same_rows_in_every_copy<RowWriter> && same_rows_in_every_copy<CountingWriter>);
 
 /// Calls `draw.template operator()<Writer>()` with the writer type that suits the canvas (counting
 /// when it counts writes), for batch loops that make a writer per triangle themselves.

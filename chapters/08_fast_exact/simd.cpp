@@ -4,22 +4,13 @@
 #include <cstring>
 
 #include "chapters/08_fast_exact/blocks.hpp"
+#include "chapters/08_fast_exact/instruction_sets.hpp"
 
 namespace tri::ch08 {
 namespace {
 
-// Lanes as GCC's and Clang's generic vectors: each target lowers them to its own instructions
-// (SSE2 registers by default, AVX2/AVX-512 ones with -march=native, scalar code where there are
-// none). Plain std::array loops were vectorized by GCC 12 at -O2 but not at -O3 (README, step 5).
-// One template serves every lane type and width. It is a typedef: GCC ignores the attribute on a
-// `using` alias of a dependent type.
-template <class Lane, int N>
-struct VectorOf {
-  typedef Lane type __attribute__((vector_size(N * sizeof(Lane))));
-};
-
-template <class Lane, int N>
-using Vector = typename VectorOf<Lane, N>::type;
+// Lanes as generic vectors (instruction_sets.hpp): plain std::array loops were vectorized by
+// GCC 12 at -O2 but not at -O3 (README, step 5).
 
 // [listing lane_test]
 // N neighbouring pixels of a row at once. Per triangle: lane i of offset[e] is edge e's change

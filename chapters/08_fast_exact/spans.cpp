@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cstddef>
 #include <limits>
-#include <type_traits>
 
 namespace tri::ch08 {
 
@@ -108,83 +107,9 @@ SpanWalker::SpanWalker(const TriangleSetup& setup) noexcept
   // [/listing]
 }
 
-namespace {
-
-// [listing fill_rows]
-// fill_spans into the canvas's rows with stores of Bytes bytes: the row's first pixel moves up by
-// the stride, so nothing of the canvas is read again per row.
-template <int Bytes>
-[[gnu::always_inline]] inline void fill_rows_in(const TriangleSetup& setup, RowWriter& writer) {
-  const SpanWalker walker(setup);
-  if (walker.first_row() > walker.last_row()) return;
-  const std::uint32_t word = writer.word();
-  const std::ptrdiff_t stride = writer.stride();
-  Color* row = writer.row_pixels(walker.first_row());
-  // After the canvas's top row, row ends one past its last pixel: a valid pointer, never used.
-  walker.for_each_row([&](int, RowSpan s) {
-    if (!s.empty()) fill_pixels_in<Bytes>(row + s.first, s.last - s.first + 1, word);
-    row += stride;
-  });
+int span_store_bytes(InstructionSet set) noexcept {
+  return register_bytes(set);
 }
-
-}  // namespace
-
-// The widest stores that paid off, chosen once by the loader (GCC's and Clang's function
-// multi-versioning: one body per target, and an ifunc that picks the best the processor
-// supports). Only this loop is compiled for AVX2; everything else stays portable (SSE2). A third
-// version with AVX-512's 64-byte stores was no faster than AVX2 on Zen 4 (see the README).
-// Outside the unnamed namespace: Clang counts the versions there as unused functions.
-#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
-__attribute__((target("default"))) void fill_rows(const TriangleSetup& setup, RowWriter& writer) {
-  fill_rows_in<16>(setup, writer);
-}
-__attribute__((target("avx2"))) void fill_rows(const TriangleSetup& setup, RowWriter& writer) {
-  fill_rows_in<32>(setup, writer);
-}
-__attribute__((target("default"))) int widest_store_bytes() {
-  return 16;
-}
-__attribute__((target("avx2"))) int widest_store_bytes() {
-  return 32;
-}
-#else
-void fill_rows(const TriangleSetup& setup, RowWriter& writer) {
-  fill_rows_in<16>(setup, writer);
-}
-int widest_store_bytes() {
-  return 16;
-}
-#endif
-// [/listing]
-
-int span_store_bytes() noexcept {
-  return widest_store_bytes();
-}
-
-template <PixelWriter Writer>
-void fill_spans(const TriangleSetup& setup, Writer& writer) {
-  if constexpr (std::is_same_v<Writer, RowWriter>) {
-    fill_rows(setup, writer);
-  } else if constexpr (std::is_same_v<Writer, MaskWriter>) {
-    // As fill_rows_in: the row's words move up by the stride instead of being asked for by y.
-    const SpanWalker walker(setup);
-    if (walker.first_row() > walker.last_row()) return;
-    const std::ptrdiff_t stride = writer.stride();
-    std::uint64_t* row = writer.row_words(walker.first_row());
-    walker.for_each_row([&](int, RowSpan s) {
-      if (!s.empty()) MaskWriter::set_bits(row, s.first, s.last + 1);
-      row += stride;
-    });
-  } else {
-    SpanWalker(setup).for_each_row([&](int y, RowSpan s) {
-      if (!s.empty()) writer.span(y, s.first, s.last + 1);
-    });
-  }
-}
-template void fill_spans(const TriangleSetup&, RowWriter&);
-template void fill_spans(const TriangleSetup&, CountingWriter&);
-template void fill_spans(const TriangleSetup&, IndexWriter&);
-template void fill_spans(const TriangleSetup&, MaskWriter&);
 
 void draw_triangle_spans(Canvas& canvas, const Triangle& triangle, Color color) {
   set_up_and_fill(canvas, triangle, color,

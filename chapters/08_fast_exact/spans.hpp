@@ -7,7 +7,7 @@
 #include <array>
 #include <cstdint>
 
-#include "chapters/08_fast_exact/narrow_canvases.hpp"
+#include "chapters/08_fast_exact/instruction_sets.hpp"
 #include "chapters/08_fast_exact/pixel_writers.hpp"
 #include "chapters/08_fast_exact/triangle_setup.hpp"
 #include "common/canvas.hpp"
@@ -139,18 +139,43 @@ class SpanWalker {
 };
 // [/listing]
 
-/// The bytes of each store with which fill_spans fills a span of RowWriter on this host: 32 with
-/// AVX2, else 16 (SSE2, the portable build's), chosen once at load time.
-int span_store_bytes() noexcept;
+/// The bytes of each store with which fill_spans fills a span of RowWriter in the copy for `set`:
+/// 32 with AVX2, else 16 (SSE2, the portable build's); by default the copy the host runs.
+int span_store_bytes(InstructionSet set = widest_instruction_set()) noexcept;
 
-/// Draws a prepared triangle the way draw_triangle_spans does, through either writer. Through
-/// RowWriter, each span is one fill_pixels_in with the widest stores of span_store_bytes().
+// [listing fill_rows]
+/// The span fill's loop, one copy per instruction set: each row's span goes to the writer's rows
+/// (its row-store hook), which move up a row at a time, so nothing is asked for by y per row.
+template <class Writer>
+struct SpanFill {
+  template <InstructionSet Set>
+  struct Loop {
+    [[gnu::always_inline]] static void run(const TriangleSetup& setup, Writer& writer) {
+      const SpanWalker walker(setup);
+      if (walker.first_row() > walker.last_row()) return;
+      auto rows = writer.template rows_from<Set>(walker.first_row());
+      walker.for_each_row([&](int y, RowSpan s) {
+        if (!s.empty()) rows.fill(y, s.first, s.last + 1);
+        rows.next_row();
+      });
+    }
+  };
+};
+
+/// Draws a prepared triangle the way draw_triangle_spans does, through any writer, with the copy
+/// of the loop for `set` (by default the widest the host runs). Through RowWriter, each span is
+/// one fill_pixels_in with the stores of span_store_bytes(set); a writer whose rows store alike
+/// in every copy takes the portable one.
 template <PixelWriter Writer>
-void fill_spans(const TriangleSetup& setup, Writer& writer);
-extern template void fill_spans(const TriangleSetup&, RowWriter&);
-extern template void fill_spans(const TriangleSetup&, CountingWriter&);
-extern template void fill_spans(const TriangleSetup&, IndexWriter&);
-extern template void fill_spans(const TriangleSetup&, MaskWriter&);
+void fill_spans(const TriangleSetup& setup, Writer& writer,
+                InstructionSet set = widest_instruction_set()) {
+  if constexpr (same_rows_in_every_copy<Writer>) {
+    SpanFill<Writer>::template Loop<InstructionSet::portable>::run(setup, writer);
+  } else {
+    copy_for<SpanFill<Writer>::template Loop>(set)(setup, writer);
+  }
+}
+// [/listing]
 
 /// Step 3 · span traversal: setup, then one filled span per row from SpanWalker. A sliver costs
 /// its rows, not its bounding box.

@@ -341,14 +341,8 @@ bool add_band_directly(float* row, int width, const Band& b, Put put) {
 // In floats, since g0 is small where it matters: within 1e-6 of the exact area. A group is four
 // floats; the AVX2 copy of the row loop (below) adds eight at a time between the sides.
 template <int Width>
-struct LanesOf;
-template <>
-struct LanesOf<4> {
-  typedef float type __attribute__((vector_size(16)));
-  static constexpr type offsets = {0.5f, 1.5f, 2.5f, 3.5f};  // i + 1/2 from i = 0
-};
-template <int Width>
-using Lanes = typename LanesOf<Width>::type;
+using Lanes = ch08::Vector<float, Width>;
+constexpr Lanes<4> centre_offsets = {0.5f, 1.5f, 2.5f, 3.5f};  // i + 1/2 from i = 0
 
 inline Lanes<4> clamp01(Lanes<4> v) {
 #if defined(__SSE__)
@@ -360,14 +354,6 @@ inline Lanes<4> clamp01(Lanes<4> v) {
 #endif
 }
 
-#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
-template <>
-struct LanesOf<8> {
-  typedef float type __attribute__((vector_size(32)));
-};
-#endif
-
-template <int Width>
 struct PieceLanes {
   double lo;              // the piece's least x
   float inverse, half_d;  // 1 / d and d / 2
@@ -375,10 +361,10 @@ struct PieceLanes {
       : lo(std::min(x0, x1)),
         inverse(1.0f / (static_cast<float>(std::abs(x1 - x0)) + 1e-30f)),
         half_d(static_cast<float>(std::abs(x1 - x0)) / 2) {}
-  // P for pixels i .. i + Width - 1.
-  [[gnu::always_inline]] Lanes<Width> right_of(int i) const {
-    const Lanes<Width> g0 = static_cast<float>(i - lo) + LanesOf<Width>::offsets;
-    const Lanes<Width> ta = clamp01((g0 - 1.0f) * inverse), tb = clamp01(g0 * inverse);
+  // P for pixels i .. i + 3.
+  [[gnu::always_inline]] Lanes<4> right_of(int i) const {
+    const Lanes<4> g0 = static_cast<float>(i - lo) + centre_offsets;
+    const Lanes<4> ta = clamp01((g0 - 1.0f) * inverse), tb = clamp01(g0 * inverse);
     return ta + (tb - ta) * (g0 - half_d * (ta + tb));
   }
 };
@@ -419,7 +405,7 @@ template <int Width>
                                                   double right1, int left_first, int left_last,
                                                   int right_first, int right_last) {
   if (right_last < 0 || left_first >= width) return;  // wholly off the canvas
-  const PieceLanes<4> left(left0, left1), right(right0, right1);
+  const PieceLanes left(left0, left1), right(right0, right1);
   const auto height = static_cast<float>(y1 - y0);
   int column = std::max(left_first, 0);
   if (right_last < column + 4 && column + 4 <= width) {  // the whole band in one group
@@ -470,40 +456,23 @@ template <int Width>
       });
 }
 
-}  // namespace
-
-// Compiled twice on x86-64 as chapter 08's fill_rows is (GCC's and Clang's function
-// multi-versioning): groups of four floats in the portable copy, eight in the AVX2 one, which the
-// loader binds where the processor has AVX2. Elsewhere (the playground's WebAssembly) only the
-// portable copy. Outside the unnamed namespace: Clang counts the versions there as unused.
-#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
-__attribute__((target("default"))) void add_summed_rows(CoverageCanvas& canvas,
-                                                        const Triangle& sorted, int first_row,
-                                                        int last_row) {
-  add_summed_rows_in<4>(canvas, {sorted[0], sorted[1], sorted[2]}, first_row, last_row);
-}
-__attribute__((target("avx2"))) void add_summed_rows(CoverageCanvas& canvas, const Triangle& sorted,
-                                                     int first_row, int last_row) {
-  add_summed_rows_in<8>(canvas, {sorted[0], sorted[1], sorted[2]}, first_row, last_row);
-}
-__attribute__((target("default"))) int summed_lane_floats() {
-  return 4;
-}
-__attribute__((target("avx2"))) int summed_lane_floats() {
-  return 8;
-}
-#else
-void add_summed_rows(CoverageCanvas& canvas, const Triangle& sorted, int first_row, int last_row) {
-  add_summed_rows_in<4>(canvas, {sorted[0], sorted[1], sorted[2]}, first_row, last_row);
-}
-int summed_lane_floats() {
-  return 4;
-}
-#endif
+// The row loop in the copy for Set (ch08::copy_for): groups of four floats in the portable copy,
+// eight in the AVX2 one. Elsewhere than x86-64 (the playground's WebAssembly) only the portable.
+template <ch08::InstructionSet Set>
+struct SummedRows {
+  // The vertices by value: a local copy that no pixel store can alias stays in registers.
+  [[gnu::always_inline]] static void run(CoverageCanvas& canvas, ByHeight v, int first_row,
+                                         int last_row) {
+    constexpr int floats = ch08::register_bytes(Set) / static_cast<int>(sizeof(float));
+    add_summed_rows_in<floats>(canvas, v, first_row, last_row);
+  }
+};
 // [/listing]
 
-int area_lane_floats() noexcept {
-  return summed_lane_floats();
+}  // namespace
+
+int area_lane_floats(ch08::InstructionSet set) noexcept {
+  return ch08::register_bytes(set) / static_cast<int>(sizeof(float));
 }
 
 namespace {
@@ -571,11 +540,11 @@ void with_rows(const CoverageCanvas& canvas, const Triangle& triangle, AddRows a
 }  // namespace
 
 void draw_triangle_area(CoverageCanvas& canvas, const Triangle& triangle, RowCells& cells,
-                        Blend blend) {
+                        Blend blend, ch08::InstructionSet set) {
   with_rows(canvas, triangle, [&](const ByHeight& sorted, int first_row, int last_row) {
     // One loop per blend, so the rows do not decide the blend at every pixel.
     if (blend == Blend::sum) {
-      add_summed_rows(canvas, {sorted.low, sorted.middle, sorted.high}, first_row, last_row);
+      ch08::copy_for<SummedRows>(set)(canvas, sorted, first_row, last_row);
     } else {
       add_rows_over(canvas, sorted, cells, first_row, last_row,
                     [](float& v, float c) { v += c * (1.0f - v); });
@@ -583,12 +552,6 @@ void draw_triangle_area(CoverageCanvas& canvas, const Triangle& triangle, RowCel
   });
 }
 // [/listing]
-
-void draw_triangle_area_portable(CoverageCanvas& canvas, const Triangle& triangle) {
-  with_rows(canvas, triangle, [&](const ByHeight& sorted, int first_row, int last_row) {
-    add_summed_rows_in<4>(canvas, sorted, first_row, last_row);
-  });
-}
 
 void draw_triangle_area_over(CoverageCanvas& canvas, const Triangle& triangle, RowCells& cells) {
   draw_triangle_area(canvas, triangle, cells, Blend::over);

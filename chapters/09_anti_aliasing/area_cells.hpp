@@ -9,6 +9,7 @@
 #include <climits>
 #include <vector>
 
+#include "chapters/08_fast_exact/instruction_sets.hpp"
 #include "chapters/09_anti_aliasing/coverage_canvas.hpp"
 #include "common/triangle_algorithm.hpp"
 
@@ -73,23 +74,21 @@ void add_edges_in_row(RowCells& cells, const Triangle& triangle, int row);
 
 /// Step 4 · adds the triangle's coverage of every canvas pixel it reaches: its two sides are
 /// walked from the bottom row to the top. Summed, each band of a row is written four or eight
-/// pixels at a time (area_lane_floats()), each pixel's coverage from how much of it lies right of
-/// each side (in floats: within 1e-6 of step 1's exact area in the tests); composited over, the
+/// pixels at a time (area_lane_floats(set)), each pixel's coverage from how much of it lies right
+/// of each side (in floats: within 1e-6 of step 1's exact area in the tests); composited over, the
 /// band is written as the running cover becomes known, and the row's cells serve where a piece
 /// crosses the canvas's left or right edge, where the sides share cells, and in the row of the
 /// middle vertex (within about 1e-12 before the canvas's float rounding). Right for every vertex
 /// within ±2^30, subnormal differences included; a zero-area triangle, or one that
-/// validate_triangle refuses (NaN, infinite, beyond ±2^30), adds nothing.
+/// validate_triangle refuses (NaN, infinite, beyond ±2^30), adds nothing. The summed blend runs
+/// the copy of its row loop for `set` (by default the widest the host runs; the tests force each).
 void draw_triangle_area(CoverageCanvas& canvas, const Triangle& triangle, RowCells& cells,
-                        Blend blend = Blend::sum);
+                        Blend blend = Blend::sum,
+                        ch08::InstructionSet set = ch08::widest_instruction_set());
 
-/// How many floats the summed blend adds to a row at a time: 8 where the loader chose the AVX2
-/// copy of its row loop (an x86-64 processor with AVX2), 4 in the portable copy.
-int area_lane_floats() noexcept;
-
-/// Step 4's summed blend with the portable copy of its row loop (four floats at a time), whichever
-/// copy the loader chose for draw_triangle_area: so that the tests check both on a host with AVX2.
-void draw_triangle_area_portable(CoverageCanvas& canvas, const Triangle& triangle);
+/// How many floats the summed blend adds to a row at a time in the copy of its row loop for
+/// `set`: 8 in the AVX2 copy (by default, on an x86-64 processor with AVX2), 4 in the portable one.
+int area_lane_floats(ch08::InstructionSet set = ch08::widest_instruction_set()) noexcept;
 
 /// Step 5 · the same coverage composited over the canvas as alpha, one triangle after another,
 /// as a 2-D library does when it draws a mesh's triangles one by one with anti-aliasing on.

@@ -14,17 +14,15 @@ namespace tri::ch09 {
 
 namespace {
 
+using tri::ch08::InstructionSet;
+
 // The largest |canvas - exact| over every pixel of the canvas, for one triangle drawn alone;
-// summed, through the row loop's copy the loader chose or (portable) its four-float copy.
+// summed, through the row loop's copy for `set` (by default the widest the host runs).
 double largest_difference(const Triangle& t, int width, int height, Blend blend = Blend::sum,
-                          bool portable = false) {
+                          InstructionSet set = tri::ch08::widest_instruction_set()) {
   CoverageCanvas canvas(width, height);
   RowCells cells;
-  if (portable) {
-    draw_triangle_area_portable(canvas, t);
-  } else {
-    draw_triangle_area(canvas, t, cells, blend);
-  }
+  draw_triangle_area(canvas, t, cells, blend, set);
   double largest = 0;
   for (int y = 0; y < height; ++y) {
     for (int x = 0; x < width; ++x) {
@@ -46,10 +44,10 @@ std::string describe(const Triangle& t) {
 // Each triangle drawn alone on a 12 x 12 canvas: every pixel within 1e-6 of the exact area, well
 // within one unit of the 16-bit output, 1/65535.
 void check_against_oracle(const std::vector<Triangle>& triangles, Blend blend = Blend::sum,
-                          bool portable = false) {
+                          InstructionSet set = tri::ch08::widest_instruction_set()) {
   for (std::size_t trial = 0; trial < triangles.size(); ++trial) {
     INFO("trial " << trial << ": " << describe(triangles[trial]));
-    CHECK(largest_difference(triangles[trial], 12, 12, blend, portable) < 1e-6);
+    CHECK(largest_difference(triangles[trial], 12, 12, blend, set) < 1e-6);
   }
 }
 
@@ -136,13 +134,15 @@ TEST_CASE("Slivers whose two sides share the same cells get the exact area",
 TEST_CASE("The portable copy of the summed row loop gives the exact area too",
           "[09_anti_aliasing][step4]") {
   // On a host with AVX2 the tests above run the copy with groups of eight; this is the other one.
-  check_against_oracle(test::random_triangles(300, 42, {-2, -2}, {14, 14}), Blend::sum, true);
-  check_against_oracle(test::random_triangles(300, 43, {-20, -20}, {32, 32}), Blend::sum, true);
+  check_against_oracle(test::random_triangles(300, 42, {-2, -2}, {14, 14}), Blend::sum,
+                       InstructionSet::portable);
+  check_against_oracle(test::random_triangles(300, 43, {-20, -20}, {32, 32}), Blend::sum,
+                       InstructionSet::portable);
   std::vector<Triangle> needles;
   for (const Triangle& t : test::random_triangles(200, 44, {0, 0}, {12, 12})) {
     needles.push_back({{t[0], t[1], t[1] + glm::dvec2{1 / 256.0, 0}}});
   }
-  check_against_oracle(needles, Blend::sum, true);
+  check_against_oracle(needles, Blend::sum, InstructionSet::portable);
 }
 
 TEST_CASE("On a wide canvas, runs of whole groups between the sides get the exact area",
@@ -152,24 +152,28 @@ TEST_CASE("On a wide canvas, runs of whole groups between the sides get the exac
   for (const Triangle& t : test::random_triangles(60, 46, {-6, -6}, {46, 46})) {
     INFO(describe(t));
     CHECK(largest_difference(t, 40, 40) < 1e-6);
-    CHECK(largest_difference(t, 40, 40, Blend::sum, true) < 1e-6);
+    CHECK(largest_difference(t, 40, 40, Blend::sum, InstructionSet::portable) < 1e-6);
   }
 }
 
 TEST_CASE("Both copies of the summed row loop give every pixel the same bits",
           "[09_anti_aliasing][step4]") {
   // The playground's WebAssembly has only the portable copy and must draw what raster draws.
-  for (const Triangle& t : test::random_triangles(500, 47, {-6, -6}, {46, 46})) {
-    INFO(describe(t));
-    CoverageCanvas chosen(40, 40), portable(40, 40);
-    RowCells cells;
-    draw_triangle_area(chosen, t, cells);
-    draw_triangle_area_portable(portable, t);
-    int differing = 0;
-    for (int y = 0; y < 40; ++y) {
-      for (int x = 0; x < 40; ++x) differing += chosen.at(x, y) != portable.at(x, y);
+  for (const InstructionSet set : tri::ch08::all_instruction_sets) {
+    if (!tri::ch08::host_runs(set)) continue;
+    INFO("copy " << static_cast<int>(set));
+    for (const Triangle& t : test::random_triangles(500, 47, {-6, -6}, {46, 46})) {
+      INFO(describe(t));
+      CoverageCanvas forced(40, 40), portable(40, 40);
+      RowCells cells;
+      draw_triangle_area(forced, t, cells, Blend::sum, set);
+      draw_triangle_area(portable, t, cells, Blend::sum, InstructionSet::portable);
+      int differing = 0;
+      for (int y = 0; y < 40; ++y) {
+        for (int x = 0; x < 40; ++x) differing += forced.at(x, y) != portable.at(x, y);
+      }
+      CHECK(differing == 0);
     }
-    CHECK(differing == 0);
   }
 }
 
