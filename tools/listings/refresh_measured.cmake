@@ -2,7 +2,7 @@
 # snapshot, then the listings tool refills every measured number in the Markdown from it.
 # Called as cmake -DROOT=... -DREPORT=... -DLISTINGS=... -DOUT=... [-DNOTE=...] -P this file.
 execute_process(COMMAND git -C "${ROOT}" describe --always --dirty --abbrev=12
-  OUTPUT_VARIABLE commit OUTPUT_STRIP_TRAILING_WHITESPACE RESULT_VARIABLE git_result)
+  OUTPUT_VARIABLE commit OUTPUT_STRIP_TRAILING_WHITESPACE RESULT_VARIABLE git_result ERROR_QUIET)
 if(NOT git_result EQUAL 0)
   set(commit unknown)
 endif()
