@@ -13,6 +13,7 @@
 #include "chapters/10_speed_vs_error/measure.hpp"
 #include "chapters/10_speed_vs_error/report.hpp"
 #include "chapters/10_speed_vs_error/scaling.hpp"
+#include "chapters/10_speed_vs_error/snapshot.hpp"
 #include "chapters/10_speed_vs_error/suites.hpp"
 #include "common/cli.hpp"
 #include "common/output_files.hpp"
@@ -108,7 +109,12 @@ int main(int argc, char** argv) {
         "measure only these (comma-separated registry names, or an external peer's name)"},
        {"scene", "KIND",
         "only the scenes of this kind (tiny, medium, large, slivers, mesh, fan, mixed)"},
-       {"grid", "GRID", "only the scenes on this vertex grid (integer or 1/256)"}});
+       {"grid", "GRID", "only the scenes on this vertex grid (integer or 1/256)"},
+       {"snapshot", "FILE",
+        "also write the measurement snapshot the book's measured numbers come from "
+        "(docs/measurements/)"},
+       {"commit", "TEXT", "the commit measured, for the snapshot's header (default: unknown)"},
+       {"note", "TEXT", "a note for the snapshot's header, e.g. that the machine was shared"}});
   return tri::run_command_line(
       command_line, argc, argv, std::cout, std::cerr, [](const tri::CliArguments& args) {
         const auto size =
@@ -117,7 +123,10 @@ int main(int argc, char** argv) {
         // The report's folder and files are checked before minutes of measuring, not after.
         const std::filesystem::path folder = args.value_or("out", "out");
         tri::check_output_folder(folder);
-        tri::check_outputs(tri::ch10::report_paths(folder));
+        auto outputs = tri::ch10::report_paths(folder);
+        const auto snapshot = args.value("snapshot");
+        if (snapshot) outputs.emplace_back(*snapshot);
+        tri::check_outputs(outputs);
         tri::ch10::BenchSettings settings = tri::ch10::bench_settings(size);
         settings.scenes =
             filtered(std::move(settings.scenes), args.value("scene"), args.value("grid"));
@@ -142,6 +151,13 @@ int main(int argc, char** argv) {
           scaling = tri::ch10::run_scaling(drawers, tri::ch10::scaling_settings(size), std::cout);
         }
         tri::ch10::save_report(folder, report, coverage, scaling, std::cout);
+        if (snapshot) {
+          const tri::ch10::SnapshotHeader header{args.value_or("commit", "unknown"),
+                                                 tri::ch10::utc_date(), args.value_or("note", "")};
+          tri::write_file_safely(
+              *snapshot, tri::bytes_of_text(tri::ch10::snapshot_text(report, coverage, header)));
+          std::cout << "wrote " << *snapshot << '\n';
+        }
         return 0;
       });
 }

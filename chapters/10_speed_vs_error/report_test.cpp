@@ -19,6 +19,7 @@
 #include "chapters/10_speed_vs_error/report.hpp"
 #include "chapters/10_speed_vs_error/report_csv.hpp"
 #include "chapters/10_speed_vs_error/report_markdown.hpp"
+#include "chapters/10_speed_vs_error/snapshot.hpp"
 #include "chapters/10_speed_vs_error/summary.hpp"
 #include "measure/error_metrics.hpp"
 #include "measure/registry.hpp"
@@ -514,4 +515,39 @@ TEST_CASE("Every line of the coverage CSV has as many fields as its header, peer
   const auto lines = lines_of(tiny_run().files.coverage_csv);
   REQUIRE(lines.size() > 1);
   for (const std::string& line : lines) CHECK(occurrences(line, ",") == occurrences(lines[0], ","));
+}
+
+TEST_CASE("The snapshot names the run's header, then one KEY,VALUE line per quoted number",
+          "[10_speed_vs_error][snapshot]") {
+  const TinyRun& run = tiny_run();
+  const std::string text =
+      tri::ch10::snapshot_text(run.report, run.coverage, {"0123abc", "2026-01-02", "shared"});
+  const auto lines = lines_of(text);
+  const auto summaries = tri::ch10::summarize(run.report.rows);
+  const auto coverage = tri::ch10::summarize_coverage(run.coverage.rows, run.report.rows);
+  REQUIRE(lines.size() ==
+          7 + 6 * summaries.size() + 4 * run.report.rows.size() + 4 * coverage.size());
+  CHECK(lines[0] == "# Measurement snapshot of chapter 10's report, tiny setting");
+  CHECK(lines[1].starts_with("# machine: " + run.report.machine.cpu_model));
+  CHECK(lines[2] ==
+        "# compiler: " + run.report.machine.compiler + " (" + run.report.machine.build_type + ")");
+  CHECK(lines[3] == "# commit: 0123abc");
+  CHECK(lines[4] == "# date: 2026-01-02");
+  CHECK(lines[5] == "# note: shared");
+  CHECK(lines[6] == "key,value");
+  std::map<std::string, std::string> values;
+  for (std::size_t i = 7; i < lines.size(); ++i) {
+    const auto comma = lines[i].find(',');
+    REQUIRE(comma != std::string::npos);
+    const std::string key = lines[i].substr(0, comma);
+    CHECK(key.find('/') == std::string::npos);  // a ratio marker splits its keys at '/'
+    CHECK(values.emplace(key, lines[i].substr(comma + 1)).second);  // every key once
+  }
+  CHECK(values.at("area_cells.cost_vs_fastest") ==
+        tri::format_number(coverage.front().cost_vs_fastest, 6));
+  const tri::ch10::Measurement& row = run.report.rows.back();
+  std::string grid = row.grid;
+  std::replace(grid.begin(), grid.end(), '/', '_');
+  CHECK(values.at(row.algorithm + "." + row.scene + "_" + grid + ".median_s") ==
+        tri::format_number(row.timing.seconds.median, 6));
 }

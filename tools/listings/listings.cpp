@@ -1,5 +1,7 @@
 #include "tools/listings/listings.hpp"
 
+#include "tools/listings/measured.hpp"
+
 #include <algorithm>
 #include <cctype>
 #include <fstream>
@@ -245,6 +247,7 @@ void process_markdown(const std::string& name, const std::string& text, SourceCa
 Report run(const fs::path& root, bool write) {
   Report report;
   SourceCache sources(root);
+  SnapshotCache snapshots(root);
   // Every source's markers must balance, whether a README shows them or not.
   for (const auto& source : files_under(root, {".cpp", ".hpp", ".h"})) {
     sources.find(relative_name(source, root), report.problems);
@@ -260,6 +263,7 @@ Report run(const fs::path& root, bool write) {
     Report found;
     process_markdown(name, *text, sources, found, out_lines);
     report.listings += found.listings;
+    report.measured += fill_measured(name, out_lines, snapshots, found.problems);
     for (auto& problem : found.problems) {
       // --update fixes the listings that differ or lack their block; the rest stay reported.
       if (!write || !problem.refreshable) {

@@ -19,6 +19,10 @@ namespace tri::listings {
 inline constexpr std::string_view kRefreshCommand =
     "cmake --build --preset release --target listings";
 
+/// The command that measures a quick run into its snapshot and refills every measured number.
+inline constexpr std::string_view kMeasuredRefreshCommand =
+    "cmake --build --preset release --target measured_numbers";
+
 /// One thing wrong, at a line of a file (the path relative to the root, line counted from 1).
 struct Problem {
   std::string file;
@@ -49,16 +53,19 @@ Markers parse_markers(std::string_view text, const std::string& file);
 /// What a run over a repository found.
 struct Report {
   int listings = 0;                    ///< listing comments read in the Markdown files
+  int measured = 0;                    ///< measured-number markers read (see measured.hpp)
   std::vector<std::string> rewritten;  ///< Markdown files --update changed
   std::vector<Problem> problems;
 };
 
 /// Checks that every listing in the Markdown files under `root` equals its marked region, that
-/// every listing names an existing file and region, and that every source's markers balance.
+/// every listing names an existing file and region, that every source's markers balance, and
+/// that every measured number equals its snapshot (see measured.hpp).
 Report check_listings(const std::filesystem::path& root);
 
 /// Rewrites every listing from its region (adding the fenced block after a comment that has
-/// none). Listings whose file or region is missing are left as they are and reported.
+/// none) and every measured number from its snapshot. Listings whose file or region is missing,
+/// and markers whose snapshot or key is missing, are left as they are and reported.
 Report update_listings(const std::filesystem::path& root);
 
 }  // namespace tri::listings

@@ -12,8 +12,11 @@ constexpr std::string_view kUsage =
     "Usage: listings_tool --check ROOT | --update ROOT\n"
     "  --check ROOT   fail when a listing in a Markdown file under ROOT differs from the source\n"
     "                 region it names, names a missing file or region, or when markers do not\n"
-    "                 balance (// [listing NAME] ... // [/listing])\n"
-    "  --update ROOT  rewrite every listing from its region\n";
+    "                 balance (// [listing NAME] ... // [/listing]), or when a measured number\n"
+    "                 (<!-- measured: FILE KEY [FORMAT] -->value<!-- /measured -->) differs\n"
+    "                 from its snapshot or names a missing snapshot or key\n"
+    "  --update ROOT  rewrite every listing from its region and every measured number from\n"
+    "                 its snapshot\n";
 
 int run(std::string_view mode, const std::filesystem::path& root) {
   namespace ls = tri::listings;
@@ -25,8 +28,8 @@ int run(std::string_view mode, const std::filesystem::path& root) {
     std::cerr << report.problems.size() << " listing problem(s) in " << root.string() << '\n';
     return EXIT_FAILURE;
   }
-  std::cout << report.listings << " listings " << (update ? "refreshed" : "match their sources")
-            << '\n';
+  std::cout << report.listings << " listings and " << report.measured << " measured numbers "
+            << (update ? "refreshed" : "match their sources and snapshots") << '\n';
   return EXIT_SUCCESS;
 }
 

@@ -1,0 +1,12 @@
+# The measured_numbers target's steps: chapter 10's report in its quick setting writes the book's
+# snapshot, then the listings tool refills every measured number in the Markdown from it.
+# Called as cmake -DROOT=... -DREPORT=... -DLISTINGS=... -DOUT=... [-DNOTE=...] -P this file.
+execute_process(COMMAND git -C "${ROOT}" describe --always --dirty --abbrev=12
+  OUTPUT_VARIABLE commit OUTPUT_STRIP_TRAILING_WHITESPACE RESULT_VARIABLE git_result ERROR_QUIET)
+if(NOT git_result EQUAL 0)
+  set(commit unknown)
+endif()
+execute_process(COMMAND "${REPORT}" --out "${OUT}"
+    --snapshot "${ROOT}/docs/measurements/report_quick.csv" --commit "${commit}" --note "${NOTE}"
+  COMMAND_ERROR_IS_FATAL ANY)
+execute_process(COMMAND "${LISTINGS}" --update "${ROOT}" COMMAND_ERROR_IS_FATAL ANY)
