@@ -1,14 +1,17 @@
 // Chapter 08's figures: which edges each pixel passes (the one-branch test), the spans of a
 // sliver against its bounding box, a triangle's 8x8 blocks by class, which path the hybrid takes
-// per triangle (and close up, which pixels each path tests), and the bands the threads share out.
+// per triangle (and close up, which pixels each path tests), the bands the threads share out, the
+// bytes of each pixel format, the tiles a scene is binned into and eight triangles' lanes.
 #include <array>
 #include <string>
 #include <vector>
 
+#include "chapters/08_fast_exact/batched.hpp"
 #include "chapters/08_fast_exact/blocks.hpp"
 #include "chapters/08_fast_exact/simd.hpp"
 #include "chapters/08_fast_exact/spans.hpp"
 #include "chapters/08_fast_exact/threaded.hpp"
+#include "chapters/08_fast_exact/tiled.hpp"
 #include "chapters/08_fast_exact/triangle_setup.hpp"
 #include "common/figures.hpp"
 #include "common/pixel_diagram.hpp"
@@ -55,6 +58,15 @@ void draw_triangle(PixelDiagram& d, const Triangle& t, std::array<LabelPlace, 3>
   d.vertex(t[0], "A", places[0]);
   d.vertex(t[1], "B", places[1]);
   d.vertex(t[2], "C", places[2]);
+}
+
+// A triangle of random vertices within `extent` of `centre` on each axis.
+Triangle triangle_around(tri::Random& random, glm::dvec2 centre, double extent) {
+  Triangle t;
+  for (auto& v : t) {
+    v = centre + glm::dvec2(random.real(-extent, extent), random.real(-extent, extent));
+  }
+  return t;
 }
 
 // Step 2: every candidate pixel by the edges it passes (the setup's edges 0, 1, 2 are BC, CA and
@@ -190,10 +202,7 @@ std::string hybrid_paths_figure() {
   for (int i = 0; i < 140; ++i) {
     const double extent = i % 3 == 0 ? random.real(8, 30) : random.real(1, 4);
     const glm::dvec2 centre(random.real(0, 160), random.real(0, 120));
-    Triangle t;
-    for (auto& v : t) {
-      v = centre + glm::dvec2(random.real(-extent, extent), random.real(-extent, extent));
-    }
+    const Triangle t = triangle_around(random, centre, extent);
     const auto setup = tri::ch08::setup_triangle(t, 160, 120);
     if (!setup) continue;
     const bool one_block = tri::ch08::fits_one_block(*setup);
@@ -267,10 +276,7 @@ std::string bands_figure() {
   for (int i = 0; i < 24; ++i) {
     const glm::dvec2 centre(random.real(0, 128), random.real(0, 96));
     const double extent = random.real(10, 40);
-    Triangle t;
-    for (auto& v : t) {
-      v = centre + glm::dvec2(random.real(-extent, extent), random.real(-extent, extent));
-    }
+    const Triangle t = triangle_around(random, centre, extent);
     const auto level = static_cast<std::uint8_t>(random.integer(120, 255));
     scene.push_back({t, Color{level, level, level, 255}});
   }
@@ -303,6 +309,141 @@ std::string bands_figure() {
   return d.svg();
 }
 
+// Step 8: the bytes one row of 16 pixels takes in each format, one cell per byte: RGBA8 (4 bytes
+// a pixel), a palette index (1 byte) and a mask (1 bit: 8 pixels a byte).
+std::string bytes_per_pixel_figure() {
+  constexpr int pixels = 16;
+  constexpr int rgba_bytes = static_cast<int>(sizeof(Color));
+  PixelDiagram d({0, 0}, {pixels * rgba_bytes - 1, 4},
+                 "The same 16 pixels: 4 bytes each, 1 byte each, 1 bit each", 18);
+  d.show_centres(false);
+  const std::array<Color, 2> alternate{dc::sky_blue, light_blue};
+  const std::array<const char*, 4> channels{"R", "G", "B", "A"};
+  for (int p = 0; p < pixels; ++p) {
+    const Color c = alternate[static_cast<std::size_t>(p % 2)];
+    for (int b = 0; b < rgba_bytes; ++b) {
+      d.fill({p * rgba_bytes + b, 4}, c);
+      d.pixel_text({p * rgba_bytes + b, 4}, channels[static_cast<std::size_t>(b)]);
+    }
+    d.fill({p, 2}, p % 2 == 0 ? dc::orange : light_orange);
+    d.pixel_text({p, 2}, std::to_string(p));
+  }
+  for (int byte = 0; byte < pixels / 8; ++byte) {
+    d.fill({byte, 0}, byte % 2 == 0 ? dc::purple : light_purple);
+  }
+  d.legend_fill(
+      "RGBA8 (row 4): " + std::to_string(pixels * rgba_bytes) + " bytes, one pixel = R, G, B, A",
+      dc::sky_blue);
+  d.legend_fill("palette index (row 2): " + std::to_string(pixels) + " bytes, one per pixel",
+                dc::orange);
+  d.legend_fill("mask (row 0): " + std::to_string(pixels / 8) +
+                    " bytes, pixels 0-7 in the first, 8-15 in the second",
+                dc::purple);
+  d.legend_note("Each cell is one byte; the write ceiling limits bytes, not pixels.");
+  return d.svg();
+}
+
+// Step 9: a scene binned into the tiles of its canvas: each triangle by whether it lies in one
+// tile (listed by index) or over several (set up once, listed in each), each tile with its count.
+std::string tiles_figure() {
+  constexpr int width = 160, height = 120;
+  const Color background{255, 255, 255, 255};
+  Canvas canvas(width, height, background);
+  tri::Random random(9);
+  std::vector<tri::SceneTriangle> scene;
+  for (int i = 0; i < 40; ++i) {
+    const double extent = i % 4 == 0 ? random.real(15, 40) : random.real(2, 6);
+    const glm::dvec2 centre(random.real(0, width), random.real(0, height));
+    const Triangle t = triangle_around(random, centre, extent);
+    scene.push_back({t, tri::colors::black});
+  }
+  tri::ch08::TileBins bins;
+  bins.start(scene, width, height);
+  for (int chunk = 0; chunk < bins.chunks(); ++chunk) bins.bin_chunk(chunk);
+  const tri::ch08::TileGrid& grid = bins.grid();
+  std::vector<int> tiles_of(scene.size(), 0);
+  for (int tile = 0; tile < grid.count(); ++tile) {
+    for (const std::uint32_t i : bins.triangles_of(tile)) ++tiles_of[i];
+  }
+  int one = 0, several = 0;
+  for (std::size_t i = 0; i < scene.size(); ++i) {
+    if (tiles_of[i] == 0) continue;
+    (tiles_of[i] == 1 ? one : several) += 1;
+    tri::ch08::draw_triangle_spans(canvas, scene[i].vertices,
+                                   tiles_of[i] == 1 ? dc::purple : dc::sky_blue);
+  }
+  PixelDiagram d({0, 0}, {width - 1, height - 1},
+                 "Binning: " + std::to_string(grid.count()) + " tiles of " +
+                     std::to_string(grid.tile_width()) + "x" + std::to_string(grid.tile_height()) +
+                     " pixels, cut by the canvas",
+                 4);
+  d.show_centres(false);
+  d.fill_from(canvas, background);
+  for (const auto& t : scene) edges(d, t.vertices, 0.75);
+  for (int tile = 0; tile < grid.count(); ++tile) {
+    const PixelBox box = grid.tile(tile, width, height);
+    outline(d, box, dc::vermillion, 2);
+    d.label({box.max.x - 0.5, (box.min.y + box.max.y) / 2.0},
+            "tile " + std::to_string(tile) + ": " + std::to_string(bins.triangles_of(tile).size()) +
+                " listed",
+            LabelPlace::left);
+  }
+  d.legend_fill("in one tile: listed by index (" + std::to_string(one) + " triangles)", dc::purple);
+  d.legend_fill(
+      "over several tiles: set up once, listed in each (" + std::to_string(several) + " triangles)",
+      dc::sky_blue);
+  d.legend_line("tile border", dc::vermillion);
+  d.legend_line("ideal triangle edges", dc::black);
+  d.legend_note("Tiles are 512 pixels wide: on this 160-pixel canvas each tile is a band of rows.");
+  return d.svg();
+}
+
+// Step 10: eight small triangles set up together, one per lane, each field an array over the
+// lanes; with AVX2 one instruction holds four lanes, so lanes 0-3 and 4-7 are two passes.
+std::string setup_lanes_figure() {
+  constexpr int width = 64, height = 12;
+  tri::Random random(10);
+  std::vector<tri::SceneTriangle> scene;
+  for (int lane = 0; lane < tri::ch08::setup_lanes; ++lane) {
+    const glm::dvec2 centre(4 + 8 * lane, 5.5);
+    const Triangle t = triangle_around(random, centre, 3.5);
+    scene.push_back({t, tri::colors::black});
+  }
+  tri::ch08::SetupLanes lanes;
+  tri::ch08::set_up_lanes(scene, width, height, lanes, tri::ch08::LaneInstructions::portable);
+  PixelDiagram d({0, 0}, {width - 1, height - 1},
+                 "Eight triangles set up at once: one lane each, fields as arrays of eight", 14);
+  const std::array<Color, 2> pass_colors{dc::sky_blue, dc::orange};
+  const std::array<Color, 2> pass_light{light_blue, light_orange};
+  for (int lane = 0; lane < tri::ch08::setup_lanes; ++lane) {
+    const auto i = static_cast<std::size_t>(lane);
+    const std::size_t pass = i / 4;
+    if (lanes.result[i] == tri::ch08::LaneResult::set_up) {
+      const tri::ch08::TriangleSetup setup = lanes.setup(lane);
+      const PixelBox& r = setup.range;
+      for (int y = r.min.y; y <= r.max.y; ++y) {
+        for (int x = r.min.x; x <= r.max.x; ++x) {
+          d.fill({x, y}, setup.covers(x, y) ? pass_colors[pass] : pass_light[pass]);
+        }
+      }
+      outline(d, r, dc::dark_gray, 1.5, true);
+    }
+    edges(d, scene[i].vertices, 1.5);
+    d.label({4.0 + 8 * lane, 10.5}, "lane " + std::to_string(lane), LabelPlace::above_right);
+  }
+  d.legend_fill("lanes 0-3, covered: the first AVX2 pass (4 doubles per instruction)",
+                dc::sky_blue);
+  d.legend_fill("lanes 4-7, covered: the second pass", dc::orange);
+  d.legend_fill("candidate pixel, not covered (lanes 0-3)", light_blue);
+  d.legend_fill("candidate pixel, not covered (lanes 4-7)", light_orange);
+  d.legend_line("candidate pixels of a lane (its min/max fields)", dc::dark_gray, true);
+  d.legend_line("ideal triangle", dc::black);
+  d.legend_note(
+      "Every field (snapped vertices, edge values and steps, candidate box) is an array of 8; "
+      "then each lane goes to fill_hybrid in order.");
+  return d.svg();
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -311,7 +452,9 @@ int main(int argc, char** argv) {
       "Chapter 08, fast and still exact: which edges each pixel passes (08_edge_signs.svg), the\n"
       "spans of a sliver in its bounding box (08_sliver_spans.svg), a triangle's 8x8 blocks by\n"
       "class (08_blocks.svg), the path the hybrid takes per triangle (08_hybrid_paths.svg, close\n"
-      "up in 08_hybrid_paths_zoom.svg), and the bands two threads share (08_bands.svg).",
+      "up in 08_hybrid_paths_zoom.svg), the bands two threads share (08_bands.svg), the bytes of\n"
+      "each pixel format (08_bytes_per_pixel.svg), a scene binned into tiles (08_tiles.svg) and\n"
+      "eight triangles set up in lanes (08_setup_lanes.svg).",
       [](tri::FigureWriter& figures) {
         figures.save_svg("08_edge_signs", edge_signs_figure());
         figures.save_svg("08_sliver_spans", sliver_spans_figure());
@@ -319,5 +462,8 @@ int main(int argc, char** argv) {
         figures.save_svg("08_hybrid_paths", hybrid_paths_figure());
         figures.save_svg("08_hybrid_paths_zoom", hybrid_paths_zoom_figure());
         figures.save_svg("08_bands", bands_figure());
+        figures.save_svg("08_bytes_per_pixel", bytes_per_pixel_figure());
+        figures.save_svg("08_tiles", tiles_figure());
+        figures.save_svg("08_setup_lanes", setup_lanes_figure());
       });
 }
