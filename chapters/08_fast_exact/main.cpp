@@ -410,7 +410,7 @@ std::string setup_lanes_figure() {
     scene.push_back({t, tri::colors::black});
   }
   tri::ch08::SetupLanes lanes;
-  tri::ch08::set_up_lanes(scene, width, height, lanes, tri::ch08::LaneInstructions::portable);
+  tri::ch08::set_up_lanes(scene, width, height, lanes, tri::ch08::InstructionSet::portable);
   PixelDiagram d({0, 0}, {width - 1, height - 1},
                  "Eight triangles set up at once: one lane each, fields as arrays of eight", 14);
   const std::array<Color, 2> pass_colors{dc::sky_blue, dc::orange};
