@@ -36,16 +36,14 @@ std::uint64_t scene_hash(const Scene& scene) {
 }
 
 SceneRecipe recipe(SceneRecipe::Kind kind, int grid_bits, std::uint64_t seed) {
-  SceneRecipe r;
-  r.kind = kind;
-  r.width = 256;
-  r.height = 192;
-  r.triangles = 500;
-  r.min_extent = 1;
-  r.max_extent = 20;
-  r.grid_bits = grid_bits;
-  r.seed = seed;
-  return r;
+  return {.kind = kind,
+          .width = 256,
+          .height = 192,
+          .triangles = 500,
+          .min_extent = 1,
+          .max_extent = 20,
+          .grid_bits = grid_bits,
+          .seed = seed};
 }
 
 }  // namespace
