@@ -26,7 +26,7 @@ namespace tri {
 namespace diagram_colors {
 inline constexpr Color orange{230, 159, 0, 255};
 inline constexpr Color sky_blue{86, 180, 233, 255};
-inline constexpr Color green{0, 158, 115, 255};
+inline constexpr Color bluish_green{0, 158, 115, 255};
 inline constexpr Color yellow{240, 228, 66, 255};
 inline constexpr Color blue{0, 114, 178, 255};
 inline constexpr Color vermillion{213, 94, 0, 255};

@@ -31,7 +31,7 @@ TEST_CASE("A pixel diagram puts pixel (i, j) in the cell of column i, counted fr
 TEST_CASE("A pixel diagram merges a run of equal pixels along a row into one rectangle",
           "[common][pixel_diagram]") {
   PixelDiagram diagram({0, 0}, {9, 0}, "t", 10);
-  for (int x = 2; x <= 6; ++x) diagram.fill({x, 0}, dc::green);
+  for (int x = 2; x <= 6; ++x) diagram.fill({x, 0}, dc::bluish_green);
   const std::string svg = diagram.svg();
   CHECK(occurrences(svg, "fill=\"#009e73\"") == 1);
   CHECK(svg.find("width=\"50\" height=\"10\" fill=\"#009e73\"") != std::string::npos);

@@ -19,6 +19,20 @@ void add(Scene& scene, Random& random, glm::dvec2 a, glm::dvec2 b, glm::dvec2 c,
       SceneTriangle{{snapped(a, bits), snapped(b, bits), snapped(c, bits)}, random_color(random)});
 }
 
+// A point drawn uniformly from the box [low, high]: y is drawn before x, the order the scenes
+// were first generated in. Each draw is its own statement, since a call's arguments are evaluated
+// in an order the language leaves open (and GCC and Clang choose differently).
+glm::dvec2 random_point(Random& random, glm::dvec2 low, glm::dvec2 high) {
+  const double y = random.real(low.y, high.y);
+  const double x = random.real(low.x, high.x);
+  return {x, y};
+}
+
+// A point drawn uniformly from the square [low, high]^2, y before x.
+glm::dvec2 random_point(Random& random, double low, double high) {
+  return random_point(random, {low, low}, {high, high});
+}
+
 double area_of(const SceneTriangle& t) {
   const auto& [a, b, c] = t.vertices;
   return std::abs((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x)) / 2;
@@ -27,11 +41,13 @@ double area_of(const SceneTriangle& t) {
 void random_triangles(const SceneRecipe& r, Scene& scene, Random& random) {
   for (int i = 0; i < r.triangles;) {
     const double extent = random.real(r.min_extent, r.max_extent);
-    const glm::dvec2 centre(random.real(0, r.width), random.real(0, r.height));
-    const auto vertex = [&] {
-      return centre + glm::dvec2(random.real(-extent, extent), random.real(-extent, extent));
-    };
-    add(scene, random, vertex(), vertex(), vertex(), r.grid_bits);
+    const glm::dvec2 centre = random_point(random, {0, 0}, {r.width, r.height});
+    const auto vertex = [&] { return centre + random_point(random, -extent, extent); };
+    // The third vertex is drawn first, as the scenes were first generated.
+    const glm::dvec2 c = vertex();
+    const glm::dvec2 b = vertex();
+    const glm::dvec2 a = vertex();
+    add(scene, random, a, b, c, r.grid_bits);
     const double area = area_of(std::get<SceneTriangle>(scene.primitives.back()));
     if (area < r.min_area || area > r.max_area) {
       scene.primitives.pop_back();  // outside the asked areas: drawn again
@@ -45,20 +61,21 @@ void slivers(const SceneRecipe& r, Scene& scene, Random& random) {
   for (int i = 0; i < r.triangles; ++i) {
     const double length = random.real(r.min_extent, r.max_extent);
     const double angle = random.real(0, 2 * std::numbers::pi);
-    const glm::dvec2 a(random.real(0, r.width), random.real(0, r.height));
+    const glm::dvec2 a = random_point(random, {0, 0}, {r.width, r.height});
     const glm::dvec2 direction(std::cos(angle), std::sin(angle));
     const glm::dvec2 b = a + length * direction;
     // The third vertex sits less than half a pixel off the long edge.
     const glm::dvec2 normal(-direction.y, direction.x);
-    const glm::dvec2 c =
-        a + random.real(0.2, 0.8) * length * direction + random.real(-0.5, 0.5) * normal;
+    // The offset across is drawn before the position along, as the scenes were first generated.
+    const double across = random.real(-0.5, 0.5);
+    const double along = random.real(0.2, 0.8);
+    const glm::dvec2 c = a + along * length * direction + across * normal;
     add(scene, random, a, b, c, r.grid_bits);
   }
 }
 
 void fan(const SceneRecipe& r, Scene& scene, Random& random) {
-  const glm::dvec2 centre(r.width / 2.0 + random.real(-0.5, 0.5),
-                          r.height / 2.0 + random.real(-0.5, 0.5));
+  const glm::dvec2 centre = glm::dvec2(r.width, r.height) / 2.0 + random_point(random, -0.5, 0.5);
   const double radius = 0.45 * std::min(r.width, r.height);
   // Rim points are snapped once and shared by both neighbours, so the edges match exactly.
   std::vector<glm::dvec2> rim;

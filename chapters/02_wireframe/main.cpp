@@ -72,7 +72,7 @@ struct DiagramColor {
 const std::array<DiagramColor, 3> tinyrenderer_diagram_colors{{
     {dc::vermillion, "vermillion (red in tinyrenderer)"},
     {dc::black, "black (white in tinyrenderer)"},
-    {dc::green, "green"},
+    {dc::bluish_green, "green"},
 }};
 
 constexpr glm::ivec2 apex_first{40, 146}, apex_last{60, 163};
@@ -118,7 +118,7 @@ std::string edges_diagram(const Vertices& v, glm::ivec2 first, glm::ivec2 last,
                           const std::string& title, const std::array<LabelPlace, 3>& places,
                           double cell) {
   PixelDiagram diagram(first, last, title, cell);
-  const std::array<tri::Color, 3> colors{dc::orange, dc::sky_blue, dc::green};
+  const std::array<tri::Color, 3> colors{dc::orange, dc::sky_blue, dc::bluish_green};
   const std::array<std::string, 3> names{"P0-P1", "P1-P2", "P2-P0"};
   const auto edges = tri::ch02::outline_edge_pixels(v[0], v[1], v[2]);
   std::map<std::pair<int, int>, int> writes;

@@ -22,7 +22,7 @@ using WholePixelFill = std::function<void(Canvas&, glm::ivec2, glm::ivec2, glm::
 /// The figures' colours for tinyrenderer's triangles (its white would vanish on the diagrams'
 /// light background), and the names the legends give them.
 inline constexpr std::array<Color, 3> tinyrenderer_figure_colors{
-    diagram_colors::vermillion, diagram_colors::blue, diagram_colors::green};
+    diagram_colors::vermillion, diagram_colors::blue, diagram_colors::bluish_green};
 inline constexpr std::array<const char*, 3> tinyrenderer_names{"first", "second", "third"};
 
 /// A whole 200x200 scene at 3 units per pixel, without centre dots.

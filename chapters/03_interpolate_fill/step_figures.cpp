@@ -79,19 +79,19 @@ SvgFigure step2_edges() {
       "Step 2: interpolate gives each edge one x per row, both end rows included", false);
   diagram.line(t.p0, t.p2, dc::blue);
   diagram.line(t.p0, t.p1, dc::vermillion);
-  diagram.line(t.p1, t.p2, dc::green);
+  diagram.line(t.p1, t.p2, dc::bluish_green);
   plot_values(diagram, t.p0.y, e.x02, dc::blue, LabelPlace::left);
   plot_values(diagram, t.p0.y, e.x01, dc::vermillion, LabelPlace::right, e.x01.size() - 1);
   // x12[0] sits on x01[3] (P1): a smaller dot on top shows both, one label says so.
   for (std::size_t i = 0; i < e.x12.size(); ++i) {
     const glm::dvec2 p(e.x12[i], t.p1.y + static_cast<int>(i));
-    diagram.point(p, dc::green, i == 0 ? 3 : 5);
-    if (i > 0) diagram.label(p, short_number(e.x12[i]), LabelPlace::right, dc::green);
+    diagram.point(p, dc::bluish_green, i == 0 ? 3 : 5);
+    if (i > 0) diagram.label(p, short_number(e.x12[i]), LabelPlace::right, dc::bluish_green);
   }
   diagram.label(t.p1, "x01[3] = x12[0] = 6", LabelPlace::above_left);
   diagram.legend_line("x02: tall side P0-P2, rows 0-5", dc::blue);
   diagram.legend_line("x01: P0-P1, rows 0-3", dc::vermillion);
-  diagram.legend_line("x12: P1-P2, rows 3-5", dc::green);
+  diagram.legend_line("x12: P1-P2, rows 3-5", dc::bluish_green);
   diagram.legend_note("Dots: the exact x on each row, labelled. Row y1 = 3 is in x01 and in x12:");
   diagram.legend_note("P1's x is computed twice (the small green dot on the vermillion one).");
   diagram.legend_note("x02 = " + joined(e.x02) + " · x01 = " + joined(e.x01) +

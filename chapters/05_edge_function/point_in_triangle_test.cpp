@@ -79,7 +79,9 @@ TEST_CASE("The inside test answers the same for both windings and all six vertex
 TEST_CASE("The article's all-non-negative test alone loses every clockwise triangle",
           "[05_edge_function][step3][inside][winding]") {
   // tinyrenderer's first triangle is clockwise with y up: AB x AC < 0.
-  const auto [t0, t1, t2] = tri::ch02::tinyrenderer_triangles[0].vertices;
+  // Named copies rather than a structured binding, which lambdas capture only from Clang 16 on.
+  const auto& vertices = tri::ch02::tinyrenderer_triangles[0].vertices;
+  const glm::ivec2 t0 = vertices[0], t1 = vertices[1], t2 = vertices[2];
   REQUIRE(edge_cross(t0, t1, t2) == -5000);
   const auto all_non_negative = [](glm::i64vec3 e) { return e.x >= 0 && e.y >= 0 && e.z >= 0; };
   CHECK(pixels_passing(200, 200, [&](glm::ivec2 p) {

@@ -93,10 +93,14 @@ TEST_CASE("Orientation is antisymmetric and cyclic on random doubles of every ma
   tri::testing::Random random(11);
   for (int i = 0; i < 20000; ++i) {
     const auto coordinate = [&] {
-      return std::ldexp(random.real(-1, 1), random.integer(-1070, 1020));
+      // One draw a statement: a call's arguments are evaluated in an order the language leaves
+      // open.
+      const int exponent = random.integer(-1070, 1020);
+      return std::ldexp(random.real(-1, 1), exponent);
     };
-    const glm::dvec2 a(coordinate(), coordinate()), b(coordinate(), coordinate()),
-        p(coordinate(), coordinate());
+    // Braces evaluate left to right, so every compiler draws the same points.
+    const glm::dvec2 a{coordinate(), coordinate()}, b{coordinate(), coordinate()},
+        p{coordinate(), coordinate()};
     const int s = exact_orientation(a, b, p);
     REQUIRE(exact_orientation(b, a, p) == -s);
     REQUIRE(exact_orientation(b, p, a) == s);

@@ -139,7 +139,7 @@ std::vector<NamedTriangle> rule_fan() {
   return {
       {"A", {{v, {12, 6}, {10, 10}}}, palette::orange, {9.3, 7.5}},
       {"B", {{v, {10, 10}, {2, 10}}}, palette::sky_blue, {5.5, 8.5}},
-      {"C", {{v, {2, 10}, {0, 6}}}, palette::green, {2.2, 7.5}},
+      {"C", {{v, {2, 10}, {0, 6}}}, palette::bluish_green, {2.2, 7.5}},
       {"D", {{v, {0, 6}, {2, 2}}}, palette::yellow, {2.2, 4.5}},
       {"E", {{v, {2, 2}, {10, 2}}}, palette::purple, {5.5, 3.5}},
       {"F", {{v, {10, 2}, {12, 6}}}, palette::covered, {9.3, 4.5}},

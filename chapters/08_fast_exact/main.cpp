@@ -64,7 +64,11 @@ void draw_triangle(PixelDiagram& d, const Triangle& t, std::array<LabelPlace, 3>
 Triangle triangle_around(tri::Random& random, glm::dvec2 centre, double extent) {
   Triangle t;
   for (auto& v : t) {
-    v = centre + glm::dvec2(random.real(-extent, extent), random.real(-extent, extent));
+    // y before x, one draw a statement: the order the figures were first drawn in, on every
+    // compiler.
+    const double dy = random.real(-extent, extent);
+    const double dx = random.real(-extent, extent);
+    v = centre + glm::dvec2(dx, dy);
   }
   return t;
 }
@@ -201,7 +205,10 @@ std::string hybrid_paths_figure() {
   int lanes = 0, spans = 0;
   for (int i = 0; i < 140; ++i) {
     const double extent = i % 3 == 0 ? random.real(8, 30) : random.real(1, 4);
-    const glm::dvec2 centre(random.real(0, 160), random.real(0, 120));
+    // y before x, one draw a statement: the order the figure was first drawn in, on every compiler.
+    const double centre_y = random.real(0, 120);
+    const double centre_x = random.real(0, 160);
+    const glm::dvec2 centre(centre_x, centre_y);
     const Triangle t = triangle_around(random, centre, extent);
     const auto setup = tri::ch08::setup_triangle(t, 160, 120);
     if (!setup) continue;
@@ -274,7 +281,10 @@ std::string bands_figure() {
   tri::Random random(3);
   std::vector<tri::SceneTriangle> scene;
   for (int i = 0; i < 24; ++i) {
-    const glm::dvec2 centre(random.real(0, 128), random.real(0, 96));
+    // y before x, one draw a statement: the order the figure was first drawn in, on every compiler.
+    const double centre_y = random.real(0, 96);
+    const double centre_x = random.real(0, 128);
+    const glm::dvec2 centre(centre_x, centre_y);
     const double extent = random.real(10, 40);
     const Triangle t = triangle_around(random, centre, extent);
     const auto level = static_cast<std::uint8_t>(random.integer(120, 255));

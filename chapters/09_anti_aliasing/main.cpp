@@ -108,7 +108,7 @@ tri::SvgFigure edge_pieces_figure(MeasuredFrom from) {
   d.fill(pixel, shade(coverage.to_double()));
   d.frame(pixel, pixel, dc::black, 3);
   const double x0 = pixel.x - 0.5, x1 = pixel.x + 0.5, y0 = pixel.y - 0.5, y1 = pixel.y + 0.5;
-  const std::array<tri::Color, 3> colors = {dc::blue, dc::green, dc::purple};
+  const std::array<tri::Color, 3> colors = {dc::blue, dc::bluish_green, dc::purple};
   const std::array<std::string, 3> names = {"AB", "BC", "CA"};
   Fraction sum = 0;
   std::string sum_text;
