@@ -363,7 +363,10 @@ std::string tiles_figure() {
   std::vector<tri::SceneTriangle> scene;
   for (int i = 0; i < 40; ++i) {
     const double extent = i % 4 == 0 ? random.real(15, 40) : random.real(2, 6);
-    const glm::dvec2 centre(random.real(0, width), random.real(0, height));
+    // y before x, one draw a statement: the order the figure was first drawn in, on every compiler.
+    const double centre_y = random.real(0, height);
+    const double centre_x = random.real(0, width);
+    const glm::dvec2 centre(centre_x, centre_y);
     const Triangle t = triangle_around(random, centre, extent);
     scene.push_back({t, tri::colors::black});
   }
