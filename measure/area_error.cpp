@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "chapters/09_anti_aliasing/area_oracle.hpp"
+#include "chapters/09_anti_aliasing/coverage_error.hpp"
 
 namespace tri {
 namespace {
@@ -26,23 +27,6 @@ AreaTruth::TriangleTruth region_of(const Triangle& t, int width, int height) {
 bool empty(const AreaTruth::TriangleTruth& r) {
   return r.first_x > r.last_x || r.first_y > r.last_y;
 }
-
-/// Sums of absolute differences, for a mean, an RMS and a maximum.
-struct Differences {
-  std::uint64_t count = 0;
-  double sum = 0, sum_of_squares = 0, max = 0;
-
-  void add(double difference) {
-    ++count;
-    sum += difference;
-    sum_of_squares += difference * difference;
-    max = std::max(max, difference);
-  }
-  double mean() const { return count == 0 ? 0 : sum / static_cast<double>(count); }
-  double rms() const {
-    return count == 0 ? 0 : std::sqrt(sum_of_squares / static_cast<double>(count));
-  }
-};
 
 /// Draws one triangle alone on the canvas (empty before and after), calling visit(k, value) for
 /// the k-th pixel of its region, row by row from the bottom.
@@ -117,38 +101,38 @@ AreaErrorReport measure_area_error(const CoverageDraw& draw, const AreaTruth& tr
   report.triangles = truth.triangles().size();
   report.rejected = truth.rejected();
   ch09::CoverageCanvas canvas(truth.width(), truth.height());
-  Differences each;
+  ch09::AreaDifferences each;
   for (std::size_t i = 0; i < truth.triangles().size(); ++i) {
     const AreaTruth::TriangleTruth& t = truth.truths()[i];
     if (empty(t)) continue;
     draw_alone(draw, canvas, truth.triangles()[i], t, [&](std::size_t k, double estimate) {
-      if (estimate == 0 && t.coverage[k] == 0) return;
-      each.add(std::abs(estimate - t.coverage[k]));
+      if (!each.add(estimate, t.coverage[k])) return;
       report.max_units =
           std::max(report.max_units, std::abs(ch09::coverage_16(estimate) - int{t.units[k]}));
     });
   }
-  report.pixels = each.count;
-  report.mean = each.mean();
-  report.rms = each.rms();
-  report.max = each.max;
+  const ch09::CoverageError alone = each.summary();
+  report.pixels = alone.pixels;
+  report.mean = alone.mean;
+  report.rms = alone.rms;
+  report.max = alone.max;
 
   draw(canvas, truth.triangles());
-  Differences composed;
+  ch09::AreaDifferences composed;
   std::size_t k = 0;
   for (int y = 0; y < truth.height(); ++y) {
     for (int x = 0; x < truth.width(); ++x, ++k) {
       const double estimate = std::clamp(static_cast<double>(canvas.at(x, y)), 0.0, 1.0);
       const double exact = std::clamp(truth.summed()[k], 0.0, 1.0);
-      if (estimate == 0 && exact == 0) continue;
-      composed.add(std::abs(estimate - exact));
+      if (!composed.add(estimate, exact)) continue;
       report.composed_off_pixels +=
           std::abs(ch09::coverage_16(estimate) - ch09::coverage_16(exact)) > 1 ? 1 : 0;
     }
   }
-  report.composed_pixels = composed.count;
-  report.composed_mean = composed.mean();
-  report.composed_max = composed.max;
+  const ch09::CoverageError whole = composed.summary();
+  report.composed_pixels = whole.pixels;
+  report.composed_mean = whole.mean;
+  report.composed_max = whole.max;
   return report;
 }
 

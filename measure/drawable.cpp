@@ -33,12 +33,6 @@ std::vector<Drawable> describe_all(std::span<const TriangleAlgorithm> colours,
   return all;
 }
 
-const Drawable* find_drawable(std::span<const Drawable> drawables, std::string_view name) noexcept {
-  const auto it = std::find_if(drawables.begin(), drawables.end(),
-                               [&](const Drawable& d) { return d.name == name; });
-  return it == drawables.end() ? nullptr : &*it;
-}
-
 std::vector<const Drawable*> drawables_writing(std::span<const Drawable> drawables, Output output) {
   std::vector<const Drawable*> found;
   for (const Drawable& d : drawables) {

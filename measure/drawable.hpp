@@ -4,6 +4,8 @@
 /// (@ref design_registry "docs/DESIGN.md section 5"). Programs ask a Drawable, never a name.
 #pragma once
 
+#include <algorithm>
+#include <iterator>
 #include <span>
 #include <string_view>
 #include <vector>
@@ -41,8 +43,16 @@ Drawable describe(const ch09::AreaAlgorithm& algorithm) noexcept;
 std::vector<Drawable> describe_all(std::span<const TriangleAlgorithm> colours,
                                    std::span<const ch09::AreaAlgorithm> coverage);
 
-/// The drawable with this name, or nullptr.
-const Drawable* find_drawable(std::span<const Drawable> drawables, std::string_view name) noexcept;
+/// The entry with this name in a list of named entries (drawables, algorithms, peers), or nullptr:
+/// the one lookup by name, so every list is searched the same way.
+template <class Entries>
+auto find_named(const Entries& entries, std::string_view name) noexcept
+    -> decltype(&*std::begin(entries)) {
+  // std::find_if, not std::ranges: the playground's libc++ has no ranges algorithms yet.
+  const auto it = std::find_if(std::begin(entries), std::end(entries),
+                               [&](const auto& e) { return e.name == name; });
+  return it == std::end(entries) ? nullptr : &*it;
+}
 
 /// The drawables that can write `output`, in order.
 std::vector<const Drawable*> drawables_writing(std::span<const Drawable> drawables, Output output);

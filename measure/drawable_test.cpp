@@ -15,7 +15,7 @@ TEST_CASE("Every registered algorithm is described once, with one entry point of
   CHECK(drawables.size() == registered_algorithms().size() + registered_area_algorithms().size());
   for (const Drawable& d : drawables) {
     INFO(d.name);
-    CHECK(find_drawable(drawables, d.name) == &d);  // names are unique
+    CHECK(find_named(drawables, d.name) == &d);  // names are unique
     REQUIRE((d.colours == nullptr) != (d.coverage == nullptr));
     if (d.colours != nullptr) {
       CHECK(d.name == d.colours->name);
@@ -37,8 +37,8 @@ TEST_CASE("Each role a measuring program asks for is declared by exactly one alg
           "[measure][drawables]") {
   std::map<Role, int> declared;
   for (const Drawable& d : registered_drawables()) ++declared[d.role];
-  for (const Role role : {Role::oracle, Role::speed_baseline, Role::fast_exact_starting,
-                          Role::cost_sweeps}) {
+  for (const Role role :
+       {Role::oracle, Role::speed_baseline, Role::fast_exact_starting, Role::cost_sweeps}) {
     CHECK(declared[role] == 1);
   }
   const auto algorithms = registered_algorithms();

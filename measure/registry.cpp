@@ -43,25 +43,4 @@ std::vector<ch09::AreaAlgorithm> registered_area_algorithms() {
   return {chapter.begin(), chapter.end()};
 }
 
-namespace {
-
-template <class Algorithm>
-const Algorithm* find_named(const std::vector<Algorithm>& algorithms, std::string_view name) {
-  const auto it = std::find_if(algorithms.begin(), algorithms.end(),
-                               [&](const Algorithm& a) { return a.name == name; });
-  return it == algorithms.end() ? nullptr : &*it;
-}
-
-}  // namespace
-
-const TriangleAlgorithm* find_algorithm(const std::vector<TriangleAlgorithm>& algorithms,
-                                        std::string_view name) {
-  return find_named(algorithms, name);
-}
-
-const ch09::AreaAlgorithm* find_area_algorithm(const std::vector<ch09::AreaAlgorithm>& algorithms,
-                                               std::string_view name) {
-  return find_named(algorithms, name);
-}
-
 }  // namespace tri

@@ -20,16 +20,8 @@ std::vector<Drawable> registered_drawables();
 /// an algorithm is covered the moment its chapter lists it.
 std::vector<TriangleAlgorithm> registered_algorithms();
 
-/// The algorithm with this name, or nullptr.
-const TriangleAlgorithm* find_algorithm(const std::vector<TriangleAlgorithm>& algorithms,
-                                        std::string_view name);
-
 /// All registered coverage algorithms (rule `area`), in chapter order: they draw onto a coverage
 /// canvas, not a colour one, so they are listed apart from the triangle algorithms.
 std::vector<ch09::AreaAlgorithm> registered_area_algorithms();
-
-/// The coverage algorithm with this name, or nullptr.
-const ch09::AreaAlgorithm* find_area_algorithm(const std::vector<ch09::AreaAlgorithm>& algorithms,
-                                               std::string_view name);
 
 }  // namespace tri

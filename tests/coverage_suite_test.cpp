@@ -17,7 +17,7 @@ constexpr auto recipe = tri::test::ten_thousand;
 
 const tri::ch09::AreaAlgorithm& area_cells() {
   static const auto algorithms = tri::registered_area_algorithms();
-  return *tri::find_area_algorithm(algorithms, "area_cells");
+  return *tri::find_named(algorithms, "area_cells");
 }
 
 }  // namespace
@@ -46,7 +46,7 @@ TEST_CASE("area_cells is within one 16-bit unit of the exact area on 10,000-tria
 TEST_CASE("A mesh composited as alpha shows seams and a summed mesh does not", "[coverage_suite]") {
   const tri::Scene mesh = tri::generate_scene(recipe(Kind::jittered_grid, 0, 0, 25));
   const auto algorithms = tri::registered_area_algorithms();
-  const auto* over = tri::find_area_algorithm(algorithms, "area_cells_over");
+  const auto* over = tri::find_named(algorithms, "area_cells_over");
   REQUIRE(over != nullptr);
   const tri::AreaErrorReport summed = tri::measure_area_error(area_cells(), mesh);
   const tri::AreaErrorReport composited = tri::measure_area_error(*over, mesh);

@@ -117,7 +117,7 @@ std::vector<TriangleAlgorithm> compared_algorithms() {
     }
   }
   for (const auto& a : tri::ch08::triangle_algorithms()) {
-    if (tri::find_algorithm(algorithms, a.name) == nullptr) algorithms.push_back(a);
+    if (tri::find_named(algorithms, a.name) == nullptr) algorithms.push_back(a);
   }
   return algorithms;
 }

@@ -289,7 +289,7 @@ int run(std::span<const Drawable> drawables, const CliArguments& args, std::ostr
   progress_after(args);  // a bad value is a usage error before any work
   const Drawable* drawable = nullptr;
   if (const auto name = args.value("algo")) {
-    drawable = find_drawable(drawables, *name);
+    drawable = find_named(drawables, *name);
     if (drawable == nullptr) {
       throw UsageError("unknown algorithm '" + printable_excerpt(*name) +
                        "' (raster --list shows the names)");

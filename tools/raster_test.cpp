@@ -487,7 +487,7 @@ TEST_CASE("The rate of a rule-area algorithm counts the pixels each triangle tou
     for (int x = 0; x < 8; ++x) sampled += tri::ch09::sampled_coverage(t, {x, y}, pattern) > 0;
   }
   const auto algorithms = tri::registered_area_algorithms();
-  const auto* standard_4 = tri::find_area_algorithm(algorithms, "samples_standard_4");
+  const auto* standard_4 = tri::find_named(algorithms, "samples_standard_4");
   REQUIRE(standard_4 != nullptr);
   const std::vector<tri::SceneTriangle> twice = {{t}, {t}};
   CHECK(sampled > 28);

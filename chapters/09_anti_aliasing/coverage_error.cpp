@@ -8,12 +8,8 @@
 namespace tri::ch09 {
 namespace {
 
-struct ErrorSums {
-  double absolute = 0, squared = 0, max = 0;
-  std::size_t pixels = 0;
-};
-
-void add_triangle(const Triangle& triangle, const PixelCoverageFunction& estimate, ErrorSums& s) {
+void add_triangle(const Triangle& triangle, const PixelCoverageFunction& estimate,
+                  AreaDifferences& differences) {
   const auto reach = [&](int axis, auto pick) {
     return pick({triangle[0][axis], triangle[1][axis], triangle[2][axis]});
   };
@@ -24,36 +20,40 @@ void add_triangle(const Triangle& triangle, const PixelCoverageFunction& estimat
     for (int x = static_cast<int>(std::floor(reach(0, lowest))) - 1;
          x <= static_cast<int>(std::ceil(reach(0, highest))) + 1; ++x) {
       const double exact = exact_coverage(triangle, {x, y}).to_double();
-      const double estimated = estimate(triangle, {x, y});
-      if (exact == 0 && estimated == 0) continue;
-      const double difference = std::abs(estimated - exact);
-      s.absolute += difference;
-      s.squared += difference * difference;
-      s.max = std::max(s.max, difference);
-      ++s.pixels;
+      differences.add(estimate(triangle, {x, y}), exact);
     }
   }
 }
 
-CoverageError summary(const ErrorSums& s) {
-  if (s.pixels == 0) return {};
-  const auto n = static_cast<double>(s.pixels);
-  return {s.absolute / n, std::sqrt(s.squared / n), s.max, s.pixels};
-}
-
 }  // namespace
 
+bool AreaDifferences::add(double estimate, double exact) noexcept {
+  if (estimate == 0 && exact == 0) return false;
+  const double difference = std::abs(estimate - exact);
+  absolute_ += difference;
+  squared_ += difference * difference;
+  max_ = std::max(max_, difference);
+  ++pixels_;
+  return true;
+}
+
+CoverageError AreaDifferences::summary() const noexcept {
+  if (pixels_ == 0) return {};
+  const auto n = static_cast<double>(pixels_);
+  return {absolute_ / n, std::sqrt(squared_ / n), max_, pixels_};
+}
+
 CoverageError coverage_error(const Triangle& triangle, const PixelCoverageFunction& estimate) {
-  ErrorSums sums;
-  add_triangle(triangle, estimate, sums);
-  return summary(sums);
+  AreaDifferences differences;
+  add_triangle(triangle, estimate, differences);
+  return differences.summary();
 }
 
 CoverageError coverage_error(const std::vector<Triangle>& triangles,
                              const PixelCoverageFunction& estimate) {
-  ErrorSums sums;
-  for (const auto& t : triangles) add_triangle(t, estimate, sums);
-  return summary(sums);
+  AreaDifferences differences;
+  for (const auto& t : triangles) add_triangle(t, estimate, differences);
+  return differences.summary();
 }
 
 }  // namespace tri::ch09

@@ -23,6 +23,19 @@ struct CoverageError {
   std::size_t pixels = 0;  ///< how many pixels were compared
 };
 
+/// The one area-error metric of the book (this chapter's tests, the report and `raster` use it):
+/// |estimate - exact| summed over the pixels where either is above zero.
+class AreaDifferences {
+ public:
+  /// Counts one pixel unless both are zero; returns whether it counted.
+  bool add(double estimate, double exact) noexcept;
+  [[nodiscard]] CoverageError summary() const noexcept;
+
+ private:
+  double absolute_ = 0, squared_ = 0, max_ = 0;
+  std::size_t pixels_ = 0;
+};
+
 /// Compares `estimate` with the exact coverage on every pixel of the triangle's bounding box
 /// (plus one pixel around it), counting the pixels where either is above zero.
 CoverageError coverage_error(const Triangle& triangle, const PixelCoverageFunction& estimate);

@@ -14,7 +14,7 @@ TEST_CASE("External peers have their own names, filed under 'external'",
   for (const tri::ch10::ExternalPeer& peer : peers) {
     CAPTURE(peer.name);
     CHECK(names.insert(peer.name).second);
-    CHECK(tri::find_algorithm(algorithms, peer.name) == nullptr);  // --only can tell them apart
+    CHECK(tri::find_named(algorithms, peer.name) == nullptr);  // --only can tell them apart
     CHECK(peer.chapter == "external");
     CHECK(static_cast<bool>(peer.measure));
   }

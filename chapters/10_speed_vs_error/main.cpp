@@ -52,9 +52,9 @@ Selection selected(const std::optional<std::string>& names) {
   Selection chosen;
   for (const std::string& name : chosen_names) {
     const auto named = [&](const auto& p) { return p.name == name; };
-    if (const tri::TriangleAlgorithm* algorithm = tri::find_algorithm(all.algorithms, name)) {
+    if (const tri::TriangleAlgorithm* algorithm = tri::find_named(all.algorithms, name)) {
       chosen.algorithms.push_back(*algorithm);
-    } else if (const auto* area = tri::find_area_algorithm(all.area_algorithms, name)) {
+    } else if (const auto* area = tri::find_named(all.area_algorithms, name)) {
       chosen.area_algorithms.push_back(*area);
     } else if (const auto peer = std::find_if(all.peers.begin(), all.peers.end(), named);
                peer != all.peers.end()) {

@@ -25,7 +25,7 @@ namespace tri::ch10::test {
 /// The exact oracle's write counts of the triangles on a width x height canvas.
 inline WriteCounts oracle_counts(int width, int height, std::span<const SceneTriangle> triangles) {
   const auto all = registered_algorithms();
-  return draw_write_counts(*find_algorithm(all, "exact_oracle"), width, height, triangles);
+  return draw_write_counts(*find_named(all, "exact_oracle"), width, height, triangles);
 }
 
 /// 300 seeded triangles of one kind on a 64x48 canvas, vertices on a 1/2^grid_bits grid.

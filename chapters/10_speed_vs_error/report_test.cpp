@@ -45,7 +45,7 @@ std::vector<tri::TriangleAlgorithm> chosen_algorithms() {
   const auto all = tri::registered_algorithms();
   std::vector<tri::TriangleAlgorithm> chosen;
   for (const std::string& name : tiny_algorithms) {
-    const tri::TriangleAlgorithm* algorithm = tri::find_algorithm(all, name);
+    const tri::TriangleAlgorithm* algorithm = tri::find_named(all, name);
     REQUIRE(algorithm != nullptr);
     chosen.push_back(*algorithm);
   }
@@ -60,7 +60,7 @@ std::vector<tri::ch09::AreaAlgorithm> chosen_area_algorithms() {
   const auto all = tri::registered_area_algorithms();
   std::vector<tri::ch09::AreaAlgorithm> chosen;
   for (const std::string& name : tiny_area_algorithms) {
-    const auto* algorithm = tri::find_area_algorithm(all, name);
+    const auto* algorithm = tri::find_named(all, name);
     REQUIRE(algorithm != nullptr);
     chosen.push_back(*algorithm);
   }

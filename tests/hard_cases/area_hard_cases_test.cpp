@@ -10,7 +10,7 @@
 TEST_CASE("area_cells is within one 16-bit unit of the exact area on every hard case on the grid",
           "[hard_cases][area]") {
   const auto algorithms = tri::registered_area_algorithms();
-  const auto* area_cells = tri::find_area_algorithm(algorithms, "area_cells");
+  const auto* area_cells = tri::find_named(algorithms, "area_cells");
   REQUIRE(area_cells != nullptr);
   int measured = 0;
   for (const auto& hard_case : tri::hard_cases::all_cases()) {

@@ -187,7 +187,7 @@ EMSCRIPTEN_KEEPALIVE int playground_draw(const char* name, int width, int height
                                          std::uint32_t* outside_writes, char* message,
                                          std::size_t message_capacity) {
   const auto drawables = tri::registered_drawables();
-  const tri::Drawable* drawable = tri::find_drawable(drawables, name);
+  const tri::Drawable* drawable = tri::find_named(drawables, name);
   const tri::TriangleAlgorithm* algorithm = drawable != nullptr ? drawable->colours : nullptr;
   if (algorithm == nullptr) {
     copy_text(std::string("no triangle algorithm '") + name + "'", message, message_capacity);
@@ -219,7 +219,7 @@ EMSCRIPTEN_KEEPALIVE int playground_coverage(const char* name, int width, int he
                                              std::uint16_t* exact, char* message,
                                              std::size_t message_capacity) {
   const auto drawables = tri::registered_drawables();
-  const tri::Drawable* drawable = tri::find_drawable(drawables, name);
+  const tri::Drawable* drawable = tri::find_named(drawables, name);
   const tri::ch09::AreaAlgorithm* algorithm = drawable != nullptr ? drawable->coverage : nullptr;
   if (algorithm == nullptr) {
     copy_text(std::string("no coverage algorithm '") + name + "'", message, message_capacity);
