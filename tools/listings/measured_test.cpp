@@ -51,6 +51,18 @@ void write_repo(const TempRepo& repo, const std::string& line) {
   repo.write("ch/README.md", "# Cost\n\nThe area took " + line + " the time.\n");
 }
 
+// Update writes `file` as `expected` from the snapshot, with one marker, and the check then passes.
+void check_update_fills(const TempRepo& repo, const std::string& file,
+                        const std::string& expected) {
+  const auto updated = update_listings(repo.root());
+  CHECK(updated.problems.empty());
+  CHECK(updated.measured == 1);
+  CHECK(repo.read(file) == expected);
+  const auto checked = check_listings(repo.root());
+  CHECK(checked.problems.empty());
+  CHECK(checked.measured == 1);
+}
+
 }  // namespace
 
 TEST_CASE("A snapshot's numbers are its KEY,VALUE lines after the header", "[listings]") {
@@ -87,15 +99,9 @@ TEST_CASE("Update fills a measured marker from its snapshot, and the check then 
           "[listings]") {
   TempRepo repo;
   write_repo(repo, marker("area_cells.cost_vs_fastest s3×", ""));
-  const auto updated = update_listings(repo.root());
-  CHECK(updated.problems.empty());
-  CHECK(updated.measured == 1);
-  CHECK(repo.read("ch/README.md") == "# Cost\n\nThe area took " +
-                                         marker("area_cells.cost_vs_fastest s3×", "2.97×") +
-                                         " the time.\n");
-  const auto checked = check_listings(repo.root());
-  CHECK(checked.problems.empty());
-  CHECK(checked.measured == 1);
+  check_update_fills(repo, "ch/README.md",
+                     "# Cost\n\nThe area took " +
+                         marker("area_cells.cost_vs_fastest s3×", "2.97×") + " the time.\n");
 }
 
 TEST_CASE("A ratio marker shows the quotient of two keys of the snapshot", "[listings]") {
@@ -204,13 +210,7 @@ TEST_CASE("A measured table block is written from its snapshot, one row per algo
   TempRepo repo;
   repo.write(kSnapshotFile, kSnapshot);
   repo.write("README.md", table_readme("| old |\n| table |\n| of three lines |\n"));
-  const auto updated = update_listings(repo.root());
-  CHECK(updated.problems.empty());
-  CHECK(updated.measured == 1);
-  CHECK(repo.read("README.md") == table_readme(kSummaryTable));
-  const auto checked = check_listings(repo.root());
-  CHECK(checked.problems.empty());
-  CHECK(checked.measured == 1);
+  check_update_fills(repo, "README.md", table_readme(kSummaryTable));
 }
 
 TEST_CASE("One cell of a measured table that differs from its snapshot fails the check",
