@@ -147,4 +147,8 @@ CoveragePeer cairo_coverage_peer() {
                                         cairo_coordinate_limit);
 }
 
+std::string cairo_version() {
+  return std::string("cairo ") + cairo_version_string();
+}
+
 }  // namespace tri::ch10

@@ -28,4 +28,21 @@ std::string external_peer_status(std::span<const ExternalPeer> measured) {
          library_status("cairo", cairo_not_built, "cairo", measured);
 }
 
+std::string peer_versions() {
+  std::string versions;
+  const auto add = [&versions](const std::string& version) {
+    versions += (versions.empty() ? "" : ", ") + version;
+  };
+#if TUTORIAL_WITH_OSMESA
+  add(mesa_version());
+#endif
+#if TUTORIAL_WITH_PIXMAN
+  add(pixman_version());
+#endif
+#if TUTORIAL_WITH_CAIRO
+  add(cairo_version());
+#endif
+  return versions.empty() ? "none" : versions;
+}
+
 }  // namespace tri::ch10

@@ -17,4 +17,8 @@ std::vector<ExternalPeer> external_peers();
 /// `measured` are the peers the run actually measured (--only can leave them out).
 std::string external_peer_status(std::span<const ExternalPeer> measured);
 
+/// The releases of the peer libraries this build measures, e.g. "Mesa 22.3.6, pixman 0.42.2,
+/// cairo 1.16.0"; "none" when it has none.
+std::string peer_versions();
+
 }  // namespace tri::ch10

@@ -1,6 +1,8 @@
 #include "chapters/10_speed_vs_error/external_peers.hpp"
 
 #include <catch2/catch.hpp>
+#include <iterator>
+#include <regex>
 #include <set>
 #include <string>
 
@@ -47,4 +49,20 @@ TEST_CASE("The Machine line says which peers were measured, or why each was not"
       CHECK(says(all, library.name + ": not built ("));
     }
   }
+}
+
+TEST_CASE("The snapshot's peers line names the release of each library this build measures",
+          "[10_speed_vs_error][external_peers]") {
+  const std::string versions = tri::ch10::peer_versions();
+  CAPTURE(versions);
+  const std::regex release_of(R"((Mesa|pixman|cairo) \d+\.\d+\.\d+)");
+  const std::size_t built =
+      (TUTORIAL_WITH_OSMESA != 0) + (TUTORIAL_WITH_PIXMAN != 0) + (TUTORIAL_WITH_CAIRO != 0);
+  const auto found = std::distance(
+      std::sregex_iterator(versions.begin(), versions.end(), release_of), std::sregex_iterator());
+  CHECK(static_cast<std::size_t>(found) == built);
+  CHECK((versions.find("Mesa ") != std::string::npos) == (TUTORIAL_WITH_OSMESA != 0));
+  CHECK((versions.find("pixman ") != std::string::npos) == (TUTORIAL_WITH_PIXMAN != 0));
+  CHECK((versions.find("cairo ") != std::string::npos) == (TUTORIAL_WITH_CAIRO != 0));
+  if (built == 0) CHECK(versions == "none");
 }

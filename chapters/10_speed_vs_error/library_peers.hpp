@@ -7,6 +7,7 @@
 #pragma once
 
 #include <span>
+#include <string>
 
 #include "chapters/10_speed_vs_error/coverage_measure.hpp"
 #include "chapters/10_speed_vs_error/measure.hpp"
@@ -38,6 +39,12 @@ ExternalPeer pixman_peer();
 /// "cairo_no_antialias": cairo_fill of one triangle path per triangle on an ARGB32 surface of the
 /// canvas size, with CAIRO_ANTIALIAS_NONE, timed like the book's algorithms.
 ExternalPeer cairo_peer();
+
+/// "pixman 0.42.2": the pixman this process runs with.
+std::string pixman_version();
+
+/// "cairo 1.16.0": the cairo this process runs with.
+std::string cairo_version();
 
 /// "agg_scanline_aa": agg::rasterizer_scanline_aa (no gamma) into a gray8 image, one path per
 /// triangle, rendered with render_scanlines_aa_solid.

@@ -96,6 +96,11 @@ std::string LlvmpipeCanvas::renderer() const {
   return name == nullptr ? "unknown" : reinterpret_cast<const char*>(name);
 }
 
+std::string LlvmpipeCanvas::version() const {
+  const auto* text = glGetString(GL_VERSION);
+  return text == nullptr ? "unknown" : reinterpret_cast<const char*>(text);
+}
+
 void LlvmpipeCanvas::upload(std::span<const SceneTriangle> triangles) {
   std::vector<Vertex> vertices;
   vertices.reserve(triangles.size() * 3);

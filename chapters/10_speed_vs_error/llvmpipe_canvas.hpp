@@ -36,6 +36,9 @@ class LlvmpipeCanvas {
   /// GL_RENDERER, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)".
   std::string renderer() const;
 
+  /// GL_VERSION, e.g. "4.5 (Compatibility Profile) Mesa 22.3.6".
+  std::string version() const;
+
   /// Copies the triangles into a GL vertex buffer, once, so draw() only draws.
   void upload(std::span<const SceneTriangle> triangles);
 

@@ -4,8 +4,8 @@
 #include <optional>
 #include <string>
 
-#include "measure/child_process.hpp"
 #include "chapters/10_speed_vs_error/llvmpipe_canvas.hpp"
+#include "measure/child_process.hpp"
 
 namespace tri::ch10 {
 
@@ -62,6 +62,13 @@ ExternalPeer llvmpipe_peer(std::string name, bool threaded, std::optional<std::s
 std::vector<ExternalPeer> llvmpipe_peers() {
   return {llvmpipe_peer("mesa_llvmpipe_1_thread", false, "0"),
           llvmpipe_peer("mesa_llvmpipe_default", true, std::nullopt)};
+}
+
+std::string mesa_version() {
+  const std::string version = run_in_child_process(
+      [] { return LlvmpipeCanvas(1, 1, LlvmpipeCanvas::Pixels::rgba8).version(); });
+  const auto mesa = version.find("Mesa ");
+  return mesa == std::string::npos ? "Mesa (" + version + ")" : version.substr(mesa);
 }
 
 }  // namespace tri::ch10

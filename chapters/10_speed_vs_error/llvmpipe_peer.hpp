@@ -3,6 +3,7 @@
 /// calling thread, and Mesa's default of one rasterizer thread per core. Built only with OSMesa.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "chapters/10_speed_vs_error/measure.hpp"
@@ -22,5 +23,8 @@ PeerResult measure_llvmpipe_here(const PreparedScene& prepared, const TimingPlan
 /// never start Mesa itself (a child forked from a process with llvmpipe's threads can hang).
 /// Their rule is "bottom-left": the oracle's top-left rule upside down, as the tests show.
 std::vector<ExternalPeer> llvmpipe_peers();
+
+/// "Mesa 22.3.6": the Mesa release behind llvmpipe, asked in a child process (see above).
+std::string mesa_version();
 
 }  // namespace tri::ch10

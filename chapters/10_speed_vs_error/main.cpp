@@ -153,7 +153,8 @@ int main(int argc, char** argv) {
         tri::ch10::save_report(folder, report, coverage, scaling, std::cout);
         if (snapshot) {
           const tri::ch10::SnapshotHeader header{args.value_or("commit", "unknown"),
-                                                 tri::ch10::utc_date(), args.value_or("note", "")};
+                                                 tri::ch10::utc_date(), tri::ch10::peer_versions(),
+                                                 args.value_or("note", "")};
           tri::write_file_safely(
               *snapshot, tri::bytes_of_text(tri::ch10::snapshot_text(report, coverage, header)));
           std::cout << "wrote " << *snapshot << '\n';

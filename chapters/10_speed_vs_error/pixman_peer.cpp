@@ -125,4 +125,8 @@ CoveragePeer pixman_coverage_peer() {
                                          pixman_coordinate_limit);
 }
 
+std::string pixman_version() {
+  return std::string("pixman ") + pixman_version_string();
+}
+
 }  // namespace tri::ch10

@@ -10,8 +10,7 @@ namespace tri::ch10 {
 namespace {
 
 std::string error_cell(const AlgorithmSummary& s) {
-  if (s.missed == 0 && s.extra == 0) return "0 (exact)";
-  return format_number(s.error_rate(), 3);
+  return format_error_rate(s.missed == 0 && s.extra == 0 ? 0.0 : s.error_rate());
 }
 
 std::string scene_list(const BenchReport& report) {
@@ -30,23 +29,6 @@ std::size_t scene_count(const BenchReport& report) {
   for (const Measurement& m : report.rows) scenes.emplace(m.scene, m.grid);
   return scenes.size();
 }
-
-}  // namespace
-
-std::string human_rate(double per_second) {
-  if (!(per_second > 0)) return "–";
-  if (per_second >= 1e9) return format_number(per_second / 1e9, 3) + " G";
-  if (per_second >= 1e6) return format_number(per_second / 1e6, 3) + " M";
-  if (per_second >= 1e3) return format_number(per_second / 1e3, 3) + " k";
-  return format_number(per_second, 3);
-}
-
-std::string format_mpix(double mpix_per_s) {
-  if (mpix_per_s >= 100) return std::to_string(static_cast<long long>(std::llround(mpix_per_s)));
-  return format_number(mpix_per_s, 3);
-}
-
-namespace {
 
 // "X Mpix/s (memset A, vector stores B)": the ceiling and the two fills it is the faster of.
 std::string ceiling_cell(const FillCeiling& ceiling) {

@@ -309,19 +309,26 @@ TEST_CASE("Text in the SVG is escaped", "[10_speed_vs_error][step5][report]") {
 }
 
 TEST_CASE("Rates are written with a k, M or G suffix", "[10_speed_vs_error][step5][report]") {
-  CHECK(tri::ch10::human_rate(0) == "–");
-  CHECK(tri::ch10::human_rate(950) == "950");
-  CHECK(tri::ch10::human_rate(12'345) == "12.3 k");
-  CHECK(tri::ch10::human_rate(4'560'000) == "4.56 M");
-  CHECK(tri::ch10::human_rate(2e9) == "2 G");
+  CHECK(tri::human_rate(0) == "–");
+  CHECK(tri::human_rate(950) == "950");
+  CHECK(tri::human_rate(12'345) == "12.3 k");
+  CHECK(tri::human_rate(4'560'000) == "4.56 M");
+  CHECK(tri::human_rate(2e9) == "2 G");
 }
 
 TEST_CASE("Table speeds are whole numbers from 100 Mpix/s up",
           "[10_speed_vs_error][step5][report]") {
-  CHECK(tri::ch10::format_mpix(1559.6) == "1560");
-  CHECK(tri::ch10::format_mpix(100.0) == "100");
-  CHECK(tri::ch10::format_mpix(22.94) == "22.9");
-  CHECK(tri::ch10::format_mpix(0.0) == "0");
+  CHECK(tri::format_mpix(1559.6) == "1560");
+  CHECK(tri::format_mpix(100.0) == "100");
+  CHECK(tri::format_mpix(22.94) == "22.9");
+  CHECK(tri::format_mpix(0.0) == "0");
+}
+
+TEST_CASE("Error rates are exact at zero, else three significant digits",
+          "[10_speed_vs_error][step5][report]") {
+  CHECK(tri::format_error_rate(0) == "0 (exact)");
+  CHECK(tri::format_error_rate(0.0022419) == "0.00224");
+  CHECK(tri::format_error_rate(5.41e-06) == "5.41e-06");
 }
 
 TEST_CASE("save_report writes the eight files the run rendered", "[10_speed_vs_error][report]") {
@@ -520,29 +527,35 @@ TEST_CASE("Every line of the coverage CSV has as many fields as its header, peer
 TEST_CASE("The snapshot names the run's header, then one KEY,VALUE line per quoted number",
           "[10_speed_vs_error][snapshot]") {
   const TinyRun& run = tiny_run();
-  const std::string text =
-      tri::ch10::snapshot_text(run.report, run.coverage, {"0123abc", "2026-01-02", "shared"});
+  const std::string text = tri::ch10::snapshot_text(
+      run.report, run.coverage, {"0123abc", "2026-01-02", "pixman 1.2", "shared"});
   const auto lines = lines_of(text);
   const auto summaries = tri::ch10::summarize(run.report.rows);
   const auto coverage = tri::ch10::summarize_coverage(run.coverage.rows, run.report.rows);
   REQUIRE(lines.size() ==
-          7 + 6 * summaries.size() + 4 * run.report.rows.size() + 4 * coverage.size());
+          8 + 8 * summaries.size() + 4 * run.report.rows.size() + 4 * coverage.size());
   CHECK(lines[0] == "# Measurement snapshot of chapter 10's report, tiny setting");
   CHECK(lines[1].starts_with("# machine: " + run.report.machine.cpu_model));
   CHECK(lines[2] ==
         "# compiler: " + run.report.machine.compiler + " (" + run.report.machine.build_type + ")");
   CHECK(lines[3] == "# commit: 0123abc");
   CHECK(lines[4] == "# date: 2026-01-02");
-  CHECK(lines[5] == "# note: shared");
-  CHECK(lines[6] == "key,value");
+  CHECK(lines[5] == "# peers: pixman 1.2");
+  CHECK(lines[6] == "# note: shared");
+  CHECK(lines[7] == "key,value");
+  // The summaries come first, in the report's order, each led by its chapter.
+  CHECK(lines[8] == summaries.front().algorithm + ".chapter," + summaries.front().chapter);
+  CHECK(lines[8 + 8] == summaries[1].algorithm + ".chapter," + summaries[1].chapter);
   std::map<std::string, std::string> values;
-  for (std::size_t i = 7; i < lines.size(); ++i) {
+  for (std::size_t i = 8; i < lines.size(); ++i) {
     const auto comma = lines[i].find(',');
     REQUIRE(comma != std::string::npos);
     const std::string key = lines[i].substr(0, comma);
     CHECK(key.find('/') == std::string::npos);  // a ratio marker splits its keys at '/'
     CHECK(values.emplace(key, lines[i].substr(comma + 1)).second);  // every key once
   }
+  CHECK(values.at(summaries.front().algorithm + ".threaded") ==
+        (summaries.front().threaded ? "1" : "0"));
   CHECK(values.at("area_cells.cost_vs_fastest") ==
         tri::format_number(coverage.front().cost_vs_fastest, 6));
   const tri::ch10::Measurement& row = run.report.rows.back();

@@ -20,6 +20,7 @@ class KeyValues {
   void add(const std::string& key, double value) {
     text_ << key << ',' << format_number(value, kDigits) << '\n';
   }
+  void add(const std::string& key, const std::string& text) { text_ << key << ',' << text << '\n'; }
   std::string text() const { return text_.str(); }
 
  private:
@@ -42,11 +43,14 @@ std::string snapshot_text(const BenchReport& report, const CoverageReport& cover
       << " hardware threads\n"
       << "# compiler: " << report.machine.compiler << " (" << report.machine.build_type << ")\n"
       << "# commit: " << header.commit << '\n'
-      << "# date: " << header.date << '\n';
+      << "# date: " << header.date << '\n'
+      << "# peers: " << header.peers << '\n';
   if (!header.note.empty()) out << "# note: " << header.note << '\n';
   out << "key,value\n";
   KeyValues keys;
   for (const AlgorithmSummary& s : summarize(report.rows)) {
+    keys.add(s.algorithm + ".chapter", s.chapter);
+    keys.add(s.algorithm + ".threaded", s.threaded ? 1.0 : 0.0);
     keys.add(s.algorithm + ".mpix_per_s", s.mpix_per_s);
     keys.add(s.algorithm + ".large_mpix_per_s", s.large_mpix_per_s);
     keys.add(s.algorithm + ".tiny_tris_per_s", s.tiny_tris_per_s);

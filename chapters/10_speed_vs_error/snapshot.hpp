@@ -9,15 +9,19 @@
 
 namespace tri::ch10 {
 
-/// What the header says beyond what the report knows: the commit measured, the UTC date, and a
-/// note on the run (for example that the machine was shared).
+/// What the header says beyond what the report knows: the commit measured, the UTC date, the
+/// peer libraries' releases (external_peers.hpp's peer_versions) and a note on the run (for
+/// example that the machine was shared).
 struct SnapshotHeader {
   std::string commit;
   std::string date;
+  std::string peers;
   std::string note;
 };
 
-/// The snapshot text. Keys: `<algorithm>.<metric>` for the summaries (mpix_per_s,
+/// The snapshot text. Header lines `# NAME: TEXT` (machine, compiler, commit, date, peers, note),
+/// then keys: `<algorithm>.<metric>` for the summaries, in the report's order (chapter, a text
+/// such as `03` or `external`; threaded, 1 or 0; mpix_per_s,
 /// large_mpix_per_s, tiny_tris_per_s, mesh_tris_per_s, ratio_to_ceiling, error_rate; the coverage
 /// algorithms' cost_vs_fastest, tris_per_s, mean_error, max_error) and
 /// `<algorithm>.<scene>_<grid>.<metric>` per scene (median_s, tris_per_s, mpix_per_s,

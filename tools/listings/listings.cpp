@@ -1,6 +1,7 @@
 #include "tools/listings/listings.hpp"
 
 #include "tools/listings/measured.hpp"
+#include "tools/listings/unmarked.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -264,6 +265,7 @@ Report run(const fs::path& root, bool write) {
     process_markdown(name, *text, sources, found, out_lines);
     report.listings += found.listings;
     report.measured += fill_measured(name, out_lines, snapshots, found.problems);
+    if (quotes_measurements(name)) find_unmarked_measurements(name, out_lines, found.problems);
     for (auto& problem : found.problems) {
       // --update fixes the listings that differ or lack their block; the rest stay reported.
       if (!write || !problem.refreshable) {

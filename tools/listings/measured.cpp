@@ -3,10 +3,11 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
-#include <cstdio>
 #include <fstream>
 #include <iterator>
 #include <sstream>
+
+#include "measure/number_format.hpp"
 
 namespace tri::listings {
 
@@ -16,8 +17,9 @@ constexpr std::string_view kMarkerOpen = "<!-- measured:";
 constexpr std::string_view kMarkerEnd = "-->";
 constexpr std::string_view kMarkerClose = "<!-- /measured -->";
 constexpr std::string_view kRatio = "ratio:";
-
-using Numbers = std::map<std::string, double, std::less<>>;
+constexpr std::string_view kHeader = "header:";
+constexpr std::string_view kTableOpen = "<!-- measured-table:";
+constexpr std::string_view kTableClose = "<!-- /measured-table -->";
 
 std::optional<double> parse_number(std::string_view text) {
   double value = 0;
@@ -32,9 +34,14 @@ struct Lookup {
   std::string missing;
 };
 
-Lookup look_up(const Numbers& numbers, std::string_view key, const std::string& file) {
+Lookup look_up(const Snapshot& snapshot, std::string_view key, const std::string& file) {
   const auto one = [&](std::string_view k) -> Lookup {
-    if (const auto it = numbers.find(k); it != numbers.end()) return {it->second, {}};
+    if (const auto it = snapshot.numbers.find(k); it != snapshot.numbers.end()) {
+      return {it->second, {}};
+    }
+    if (snapshot.texts.contains(k)) {
+      return {std::nullopt, "key '" + std::string(k) + "' of " + file + " is text, not a number"};
+    }
     return {std::nullopt, "key '" + std::string(k) + "' is not in " + file};
   };
   if (!key.starts_with(kRatio)) return one(key);
@@ -51,6 +58,40 @@ Lookup look_up(const Numbers& numbers, std::string_view key, const std::string& 
   return {*top.value / *bottom.value, {}};
 }
 
+// The text a marker shows: a header line, a text key, or a number in FORMAT.
+struct Shown {
+  std::optional<std::string> text;
+  std::string missing;
+};
+
+Shown shown_value(const Snapshot& snapshot, std::string_view key, std::string_view format,
+                  const std::string& file) {
+  const auto as_text = [&](const auto& texts, std::string_view name,
+                           const std::string& what) -> Shown {
+    if (!format.empty())
+      return {std::nullopt, what + " '" + std::string(name) + "' takes no format"};
+    if (const auto it = texts.find(name); it != texts.end()) return {it->second, {}};
+    return {std::nullopt, what + " '" + std::string(name) + "' is not in " + file};
+  };
+  if (key.starts_with(kHeader))
+    return as_text(snapshot.header, key.substr(kHeader.size()), "header");
+  if (snapshot.texts.contains(key)) return as_text(snapshot.texts, key, "key");
+  const Lookup found = look_up(snapshot, key, file);
+  if (!found.value) return {std::nullopt, found.missing};
+  auto text = format_measured(*found.value, format);
+  if (!text) {
+    return {std::nullopt,
+            "format '" + std::string(format) + "' is not sN or fN with an optional suffix"};
+  }
+  return {std::move(text), {}};
+}
+
+// The first non-blank part of a line.
+std::string_view trimmed_start(std::string_view line) {
+  const auto first = line.find_first_not_of(" \t");
+  return first == std::string_view::npos ? std::string_view() : line.substr(first);
+}
+
 // True when the text before `position` holds an odd number of backticks: inside inline code.
 bool inside_inline_code(std::string_view line, std::size_t position) {
   return std::count(line.begin(), line.begin() + static_cast<std::ptrdiff_t>(position), '`') % 2 ==
@@ -59,13 +100,23 @@ bool inside_inline_code(std::string_view line, std::size_t position) {
 
 }  // namespace
 
-std::optional<Numbers> parse_snapshot(std::string_view text) {
-  Numbers numbers;
+std::optional<Snapshot> parse_snapshot(std::string_view text) {
+  Snapshot snapshot;
   bool seen_columns = false;
   std::istringstream lines{std::string(text)};
   for (std::string line; std::getline(lines, line);) {
     if (!line.empty() && line.back() == '\r') line.pop_back();
-    if (line.empty() || line.front() == '#') continue;
+    if (!line.empty() && line.front() == '#') {
+      // "# NAME: TEXT"; the title line has no such colon.
+      const auto colon = line.find(": ");
+      const auto name = colon == std::string::npos ? std::string() : line.substr(1, colon - 1);
+      const auto start = name.find_first_not_of(' ');
+      if (start != std::string::npos && name.find(' ', start) == std::string::npos) {
+        snapshot.header.insert_or_assign(name.substr(start), line.substr(colon + 2));
+      }
+      continue;
+    }
+    if (line.empty()) continue;
     if (!seen_columns) {
       if (line != "key,value") return std::nullopt;
       seen_columns = true;
@@ -73,12 +124,60 @@ std::optional<Numbers> parse_snapshot(std::string_view text) {
     }
     const auto comma = line.find(',');
     if (comma == std::string::npos) return std::nullopt;
-    const auto value = parse_number(std::string_view(line).substr(comma + 1));
-    if (!value) return std::nullopt;
-    numbers.insert_or_assign(line.substr(0, comma), *value);
+    const std::string key = line.substr(0, comma);
+    const std::string value = line.substr(comma + 1);
+    if (value.empty()) return std::nullopt;
+    if (const auto number = parse_number(value)) {
+      snapshot.numbers.insert_or_assign(key, *number);
+    } else {
+      snapshot.texts.insert_or_assign(key, value);
+    }
+    snapshot.keys.push_back(key);
   }
   if (!seen_columns) return std::nullopt;
-  return numbers;
+  return snapshot;
+}
+
+std::optional<std::vector<std::string>> measured_table(const Snapshot& snapshot,
+                                                       std::string_view name,
+                                                       std::string& missing) {
+  if (name != "summary") {
+    missing = "table '" + std::string(name) + "' is not one the tool writes (summary)";
+    return std::nullopt;
+  }
+  std::vector<std::string> lines{
+      "| algorithm | chapter | Mpix/s large | tris/s tiny | tris/s mesh | Mpix/s all | error rate "
+      "|",
+      "|---|---|--:|--:|--:|--:|--:|"};
+  constexpr std::string_view kChapter = ".chapter";
+  for (const std::string& key : snapshot.keys) {
+    if (!key.ends_with(kChapter)) continue;
+    const std::string algorithm = key.substr(0, key.size() - kChapter.size());
+    const auto number = [&](const std::string& metric) -> std::optional<double> {
+      const auto it = snapshot.numbers.find(algorithm + "." + metric);
+      if (it == snapshot.numbers.end()) {
+        missing = "key '" + algorithm + "." + metric + "' is not a number of the snapshot";
+        return std::nullopt;
+      }
+      return it->second;
+    };
+    const auto threaded = number("threaded");
+    const auto large = number("large_mpix_per_s");
+    const auto tiny = number("tiny_tris_per_s");
+    const auto mesh = number("mesh_tris_per_s");
+    const auto all = number("mpix_per_s");
+    const auto error = number("error_rate");
+    if (!threaded || !large || !tiny || !mesh || !all || !error) return std::nullopt;
+    lines.push_back("| `" + algorithm + "`" + (*threaded != 0 ? " (threaded)" : "") + " | " +
+                    snapshot.texts.at(key) + " | " + format_mpix(*large) + " | " +
+                    human_rate(*tiny) + " | " + human_rate(*mesh) + " | " + format_mpix(*all) +
+                    " | " + format_error_rate(*error) + " |");
+  }
+  if (lines.size() == 2) {
+    missing = "the snapshot has no algorithm (no KEY.chapter line)";
+    return std::nullopt;
+  }
+  return lines;
 }
 
 std::optional<std::string> format_measured(double value, std::string_view format) {
@@ -89,31 +188,78 @@ std::optional<std::string> format_measured(double value, std::string_view format
   const auto [end, error] = std::from_chars(first, format.data() + format.size(), digits);
   if (error != std::errc() || digits < 0 || digits > 12) return std::nullopt;
   const std::string_view suffix(end, format.data() + format.size() - end);
-  int decimals = digits;
-  if (format[0] == 's') {
-    if (digits == 0) return std::nullopt;
-    // Decimals that leave `digits` significant ones; never fewer than none (12345 stays 12345).
-    const int magnitude =
-        value == 0 ? 0 : static_cast<int>(std::floor(std::log10(std::fabs(value))));
-    decimals = std::max(0, digits - 1 - magnitude);
-  }
-  char text[64];
-  std::snprintf(text, sizeof text, "%.*f", decimals, value);
-  return std::string(text) + std::string(suffix);
+  if (format[0] == 's' && digits == 0) return std::nullopt;
+  // Digits left of the point are always kept (12345 stays 12345, never 1.23e+04).
+  const int whole_digits =
+      value == 0 ? 1 : static_cast<int>(std::floor(std::log10(std::fabs(value)))) + 1;
+  const int significant =
+      format[0] == 's' ? std::max(digits, whole_digits) : std::max(1, whole_digits + digits);
+  return format_number(value, significant) + std::string(suffix);
 }
 
-const Numbers* SnapshotCache::find(const std::string& file) {
+const Snapshot* SnapshotCache::find(const std::string& file) {
   if (const auto it = files_.find(file); it != files_.end()) {
     return it->second ? &*it->second : nullptr;
   }
-  std::optional<Numbers> numbers;
+  std::optional<Snapshot> snapshot;
   if (std::ifstream in(root_ / file, std::ios::binary); in) {
-    numbers = parse_snapshot(
+    snapshot = parse_snapshot(
         std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()));
   }
-  const auto& stored = files_.emplace(file, std::move(numbers)).first->second;
+  const auto& stored = files_.emplace(file, std::move(snapshot)).first->second;
   return stored ? &*stored : nullptr;
 }
+
+namespace {
+
+// The block of table lines opened at lines[open] checked against its snapshot and rewritten from
+// it; returns the index of its closing line (or of the opening line when it is malformed).
+std::size_t fill_table(const std::string& name, std::vector<std::string>& lines, std::size_t open,
+                       SnapshotCache& snapshots, std::vector<Problem>& problems) {
+  const int line_number = static_cast<int>(open) + 1;
+  const auto add = [&](int at, const std::string& message, bool refreshable = false) {
+    problems.push_back({name, at, message, refreshable});
+  };
+  const std::string_view head = trimmed_start(lines[open]);
+  std::istringstream words{std::string(head.substr(kTableOpen.size()))};
+  std::string file, table, end;
+  std::size_t close = open + 1;
+  while (close < lines.size() && trimmed_start(lines[close]) != kTableClose) ++close;
+  if (!(words >> file >> table >> end) || end != kMarkerEnd || close == lines.size()) {
+    add(line_number,
+        "malformed measured table; write <!-- measured-table: FILE TABLE --> on a "
+        "line, then the table, then <!-- /measured-table --> on a line");
+    return open;
+  }
+  const Snapshot* snapshot = snapshots.find(file);
+  if (snapshot == nullptr) {
+    add(line_number, "measured table names " + file + ", which is missing or not a snapshot");
+    return close;
+  }
+  std::string missing;
+  const auto table_lines = measured_table(*snapshot, table, missing);
+  if (!table_lines) {
+    add(line_number, "measured table: " + missing);
+    return close;
+  }
+  const auto first = lines.begin() + static_cast<std::ptrdiff_t>(open + 1);
+  const auto last = lines.begin() + static_cast<std::ptrdiff_t>(close);
+  if (std::equal(first, last, table_lines->begin(), table_lines->end())) return close;
+  const auto differs = std::mismatch(first, last, table_lines->begin(), table_lines->end());
+  const int at = static_cast<int>(differs.first - lines.begin()) + 1;
+  add(at,
+      "measured table line '" + (differs.first == last ? std::string("(none)") : *differs.first) +
+          "' differs from '" +
+          (differs.second == table_lines->end() ? std::string("(none)") : *differs.second) + "' (" +
+          table + " of " + file + "); refresh with: " + std::string(kMeasuredRefreshCommand),
+      true);
+  lines.erase(first, last);
+  lines.insert(lines.begin() + static_cast<std::ptrdiff_t>(open + 1), table_lines->begin(),
+               table_lines->end());
+  return open + 1 + table_lines->size();
+}
+
+}  // namespace
 
 int fill_measured(const std::string& name, std::vector<std::string>& lines,
                   SnapshotCache& snapshots, std::vector<Problem>& problems) {
@@ -122,12 +268,16 @@ int fill_measured(const std::string& name, std::vector<std::string>& lines,
   for (std::size_t i = 0; i < lines.size(); ++i) {
     std::string& line = lines[i];
     const int line_number = static_cast<int>(i) + 1;
-    if (line.find_first_not_of(" \t") != std::string::npos &&
-        std::string_view(line).substr(line.find_first_not_of(" \t")).starts_with("```")) {
+    if (trimmed_start(line).starts_with("```")) {
       in_fence = !in_fence;
       continue;
     }
     if (in_fence) continue;
+    if (trimmed_start(line).starts_with(kTableOpen)) {
+      ++markers;
+      i = fill_table(name, lines, i, snapshots, problems);
+      continue;
+    }
     for (auto open = line.find(kMarkerOpen); open != std::string::npos;
          open = line.find(kMarkerOpen, open + 1)) {
       if (inside_inline_code(line, open)) continue;
@@ -149,28 +299,23 @@ int fill_measured(const std::string& name, std::vector<std::string>& lines,
         add("malformed measured marker; write <!-- measured: FILE KEY [FORMAT] -->");
         continue;
       }
-      const Numbers* numbers = snapshots.find(file);
-      if (numbers == nullptr) {
+      const Snapshot* snapshot = snapshots.find(file);
+      if (snapshot == nullptr) {
         add("measured marker names " + file + ", which is missing or not a snapshot");
         continue;
       }
-      const Lookup found = look_up(*numbers, key, file);
-      if (!found.value) {
-        add("measured marker: " + found.missing);
-        continue;
-      }
-      const auto shown = format_measured(*found.value, format);
-      if (!shown) {
-        add("measured marker: format '" + format + "' is not sN or fN with an optional suffix");
+      const Shown shown = shown_value(*snapshot, key, format, file);
+      if (!shown.text) {
+        add("measured marker: " + shown.missing);
         continue;
       }
       const auto value_begin = end + kMarkerEnd.size();
       const std::string_view current(line.data() + value_begin, close - value_begin);
-      if (current != *shown) {
-        add("measured value " + std::string(current) + " differs from " + *shown + " (" + key +
+      if (current != *shown.text) {
+        add("measured value " + std::string(current) + " differs from " + *shown.text + " (" + key +
                 " in " + file + "); refresh with: " + std::string(kMeasuredRefreshCommand),
             true);
-        line.replace(value_begin, close - value_begin, *shown);
+        line.replace(value_begin, close - value_begin, *shown.text);
       }
     }
   }
