@@ -115,20 +115,16 @@ SvgFigure timing_plan_figure() {
             "Scripted draws: about 2.5 ms at first, settling to about 1 ms; another process takes "
             "the core for 4 ms during one draw.");
   open_group(svg, {{"stroke", "#ddd"}});
-  for (double ms = 5; ms <= axis_ms; ms += 5)
+  for (double ms = 5; ms <= axis_ms; ms += 5) {
     line(svg, box.left, y_of(ms / 1e3), box.right, y_of(ms / 1e3));
+  }
   close_group(svg);
   open_group(svg, {{"text-anchor", "end"}});
   for (double ms = 0; ms <= axis_ms; ms += 5) {
     element(svg, "text", {{"x", box.left - 6}, {"y", y_of(ms / 1e3) + 4}}, fp::fixed(ms, 0));
   }
   close_group(svg);
-  element(svg, "text",
-          {{"transform", "translate(" + svg_number(box.left - 40) + ' ' +
-                             svg_number((box.top + box.bottom) / 2) + ") rotate(-90)"},
-           {"text-anchor", "middle"},
-           {"font-size", "13"}},
-          "milliseconds a batch took");
+  y_axis_title(svg, box, 40, "milliseconds a batch took");
 
   open_group(svg, {{"text-anchor", "middle"}});
   for (std::size_t i = 0; i < trace.batches.size(); ++i) {
