@@ -13,10 +13,14 @@ using Clock = std::chrono::steady_clock;
 
 }  // namespace
 
-double seconds_of(const std::function<void()>& run, int repetitions) {
-  const auto start = Clock::now();
+Clock::time_point steady_now() noexcept {
+  return Clock::now();
+}
+
+double seconds_of(const std::function<void()>& run, int repetitions, const TimingClock& clock) {
+  const auto start = clock();
   for (int i = 0; i < repetitions; ++i) run();
-  return std::chrono::duration<double>(Clock::now() - start).count();
+  return std::chrono::duration<double>(clock() - start).count();
 }
 
 int next_repetitions(int repetitions, double elapsed_seconds, double target_seconds,
@@ -32,13 +36,14 @@ int next_repetitions(int repetitions, double elapsed_seconds, double target_seco
 
 namespace {
 
-int calibrated_repetitions(const std::function<void()>& run, const TimingPlan& plan) {
+int calibrated_repetitions(const std::function<void()>& run, const TimingPlan& plan,
+                           const TimingClock& clock) {
   run();  // warm-up: caches, page faults, branch predictors
   if (plan.repetitions > 0) return plan.repetitions;
   const int max_repetitions = std::max(1, plan.max_repetitions);
   int repetitions = 1;
   for (;;) {
-    const double elapsed = seconds_of(run, repetitions);
+    const double elapsed = seconds_of(run, repetitions, clock);
     if (elapsed >= plan.min_sample_seconds || repetitions >= max_repetitions) return repetitions;
     repetitions = next_repetitions(repetitions, elapsed, plan.min_sample_seconds, max_repetitions);
   }
@@ -49,14 +54,15 @@ int calibrated_repetitions(const std::function<void()>& run, const TimingPlan& p
 // [listing interleaved_rounds]
 std::vector<Timing> time_interleaved(std::span<const std::function<void()>> runs,
                                      const TimingPlan& plan,
-                                     const std::function<void(int rounds_done)>& after_round) {
+                                     const std::function<void(int rounds_done)>& after_round,
+                                     const TimingClock& clock) {
   std::vector<int> repetitions;
-  for (const auto& run : runs) repetitions.push_back(calibrated_repetitions(run, plan));
+  for (const auto& run : runs) repetitions.push_back(calibrated_repetitions(run, plan, clock));
   const int samples = std::max(1, plan.samples);
   std::vector<std::vector<double>> per_run(runs.size());
   for (int round = 0; round < samples; ++round) {
     for (std::size_t i = 0; i < runs.size(); ++i) {
-      per_run[i].push_back(seconds_of(runs[i], repetitions[i]) / repetitions[i]);
+      per_run[i].push_back(seconds_of(runs[i], repetitions[i], clock) / repetitions[i]);
     }
     if (after_round) after_round(round + 1);
   }
@@ -68,8 +74,9 @@ std::vector<Timing> time_interleaved(std::span<const std::function<void()>> runs
 }
 // [/listing]
 
-Timing time_runs(const std::function<void()>& run, const TimingPlan& plan) {
-  return time_interleaved(std::span(&run, 1), plan).front();
+Timing time_runs(const std::function<void()>& run, const TimingPlan& plan,
+                 const TimingClock& clock) {
+  return time_interleaved(std::span(&run, 1), plan, {}, clock).front();
 }
 
 double mpix_per_second(double pixels, double seconds) noexcept {

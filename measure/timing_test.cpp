@@ -1,5 +1,7 @@
-// No test here reads a clock's value: the timing code is checked by what it runs and fills.
+// No test here reads a real clock's value: the timing code is checked by what it runs and fills,
+// and by what it makes of durations a scripted clock gives it.
 #include <algorithm>
+#include <chrono>
 #include <functional>
 #include <string>
 #include <vector>
@@ -70,6 +72,26 @@ TEST_CASE("Interleaved timing warms up and calibrates each run, then samples the
     CHECK(timing.seconds.min <= timing.seconds.median);
     CHECK(timing.seconds.median <= timing.seconds.max);
   }
+}
+
+TEST_CASE(
+    "On a scripted clock, calibration reaches the target and the median ignores one slow sample",
+    "[measure][timing]") {
+  using namespace std::chrono_literals;
+  std::chrono::steady_clock::time_point now{};
+  int runs = 0;
+  // Every run takes 1.5 ms, except the eight of the second sample (runs 18 to 25): 3 ms each.
+  const auto run = [&] {
+    now += runs >= 18 && runs < 26 ? 3000us : 1500us;
+    ++runs;
+  };
+  const Timing timing = tri::time_runs(run, TimingPlan{0.01, 3, 1000}, [&] { return now; });
+  // Warm-up, then 1 run (1.5 ms, short of 10 ms): 1.2 * 10 / 1.5 = 8 runs, 12 ms, enough.
+  CHECK(timing.repetitions == 8);
+  CHECK(runs == 1 + (1 + 8) + 3 * 8);
+  CHECK(timing.seconds.median == Approx(0.0015).epsilon(1e-12));
+  CHECK(timing.seconds.min == Approx(0.0015).epsilon(1e-12));
+  CHECK(timing.seconds.max == Approx(0.003).epsilon(1e-12));
 }
 
 TEST_CASE("Mpixels per second divide pixels by seconds, and no time gives 0", "[measure][timing]") {

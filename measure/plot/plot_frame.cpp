@@ -2,8 +2,8 @@
 
 #include <cmath>
 
-#include "measure/plot/svg_elements.hpp"
 #include "common/printable_text.hpp"
+#include "measure/plot/svg_elements.hpp"
 
 namespace tri {
 
@@ -61,8 +61,12 @@ void y_decade_labels(std::ostream& svg, const LogScale& y, const PlotBox& box,
     element(svg, "text", {{"x", box.left - 6}, {"y", y.position(std::pow(10.0, k)) + 4}}, label(k));
   }
   close_group(svg);
+  y_axis_title(svg, box, 58, title);
+}
+
+void y_axis_title(std::ostream& svg, const PlotBox& box, double distance, std::string_view title) {
   element(svg, "text",
-          {{"transform", "translate(" + svg_number(box.left - 58) + ' ' +
+          {{"transform", "translate(" + svg_number(box.left - distance) + ' ' +
                              svg_number((box.top + box.bottom) / 2) + ") rotate(-90)"},
            {"text-anchor", "middle"},
            {"font-size", "13"}},

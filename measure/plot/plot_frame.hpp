@@ -29,6 +29,9 @@ void log_grid_and_axes(std::ostream& svg, const LogScale& x, const LogScale& y, 
 void x_decade_labels(std::ostream& svg, const LogScale& x, const PlotBox& box,
                      std::string_view title);
 
+/// An upright axis title centred beside the box's left side, `distance` pixels left of it.
+void y_axis_title(std::ostream& svg, const PlotBox& box, double distance, std::string_view title);
+
 /// The decades of y labelled left of the box by `label`, and the axis's title turned upright.
 void y_decade_labels(std::ostream& svg, const LogScale& y, const PlotBox& box,
                      std::string (*label)(int), std::string_view title);
