@@ -6,10 +6,10 @@
 
 #include <catch2/catch.hpp>
 
-#include "chapters/10_speed_vs_error/snapshot_reading.hpp"
 #include "chapters/10_speed_vs_error/suites.hpp"
 #include "chapters/10_speed_vs_error/timing_figure.hpp"
 #include "chapters/10_speed_vs_error/two_speeds_figure.hpp"
+#include "measure/snapshot_reading.hpp"
 #include "tests/support/text.hpp"
 
 using tri::ch10::TimedBatch;
@@ -93,22 +93,9 @@ TEST_CASE("The timing figure runs the quick plan to the target and marks the med
   CHECK(figure.svg.find("a batch must last 10 ms") != std::string::npos);
 }
 
-TEST_CASE("parse_snapshot_values reads the header and the numbers, and rejects a bad number",
-          "[10_speed_vs_error][step3]") {
-  const auto snapshot = tri::ch10::parse_snapshot_values(small_snapshot);
-  CHECK(snapshot.header_text("machine") == "Test CPU, 4 hardware threads");
-  CHECK(snapshot.header_text("date") == "2030-01-02");
-  CHECK(snapshot.header_text("note") == "unknown");
-  CHECK(snapshot.header.size() == 4);
-  CHECK(snapshot.number("fast_hybrid.tiny_tris_per_s") == 3e6);
-  CHECK_FALSE(snapshot.number("fast_hybrid.mesh_tris_per_s"));
-  CHECK_THROWS(tri::ch10::parse_snapshot_values("key,value\nfast_hybrid.x,fast\n"));
-  CHECK_THROWS(tri::ch10::parse_snapshot_values("# machine: none\nfast_hybrid.x,1\n"));
-}
-
 TEST_CASE("two_speeds_of takes each algorithm's two speeds and the large scenes' mean ceiling",
           "[10_speed_vs_error][step3]") {
-  const auto speeds = tri::ch10::two_speeds_of(tri::ch10::parse_snapshot_values(small_snapshot));
+  const auto speeds = tri::ch10::two_speeds_of(tri::parse_snapshot(small_snapshot));
   REQUIRE(speeds.rows.size() == 2);
   CHECK(speeds.rows[0].algorithm == "edge_function");  // the figure's order, not the snapshot's
   CHECK(speeds.rows[0].large_mpix_per_s == 9.5);
@@ -117,13 +104,12 @@ TEST_CASE("two_speeds_of takes each algorithm's two speeds and the large scenes'
   CHECK(speeds.rows[1].large_mpix_per_s == 900);
   // 10 / 0.005 = 2000 and 9 / 0.005 = 1800 Mpix/s: their geometric mean.
   CHECK(speeds.ceiling_mpix_per_s == Approx(std::sqrt(2000.0 * 1800.0)));
-  CHECK_THROWS(tri::ch10::two_speeds_of(tri::ch10::parse_snapshot_values("key,value\n")));
+  CHECK_THROWS(tri::ch10::two_speeds_of(tri::parse_snapshot("key,value\n")));
 }
 
 TEST_CASE("The two-speeds figure draws a bar per speed and names the snapshot's machine and date",
           "[10_speed_vs_error][step3]") {
-  const tri::SvgFigure figure =
-      tri::ch10::two_speeds_figure(tri::ch10::parse_snapshot_values(small_snapshot));
+  const tri::SvgFigure figure = tri::ch10::two_speeds_figure(tri::parse_snapshot(small_snapshot));
   CHECK(figure.name == "10_two_speeds");
   CHECK(figure.svg.find("Measured on Test CPU, 4 hardware threads · GCC 99 (Release) · "
                         "2030-01-02 · commit abc123") != std::string::npos);

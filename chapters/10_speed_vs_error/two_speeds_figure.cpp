@@ -63,7 +63,7 @@ std::vector<std::string> two_speeds_algorithms() {
           "fast_hybrid",          "fast_batched",  "pixman_a1"};
 }
 
-TwoSpeeds two_speeds_of(const SnapshotValues& snapshot) {
+TwoSpeeds two_speeds_of(const Snapshot& snapshot) {
   TwoSpeeds speeds;
   for (const std::string& algorithm : two_speeds_algorithms()) {
     const auto large = snapshot.number(algorithm + ".large_mpix_per_s");
@@ -87,7 +87,7 @@ TwoSpeeds two_speeds_of(const SnapshotValues& snapshot) {
   return speeds;
 }
 
-SvgFigure two_speeds_figure(const SnapshotValues& snapshot) {
+SvgFigure two_speeds_figure(const Snapshot& snapshot) {
   const TwoSpeeds speeds = two_speeds_of(snapshot);
   std::vector<double> large{speeds.ceiling_mpix_per_s}, tiny;
   for (const auto& row : speeds.rows) {

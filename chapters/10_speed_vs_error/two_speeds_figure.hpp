@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "chapters/10_speed_vs_error/snapshot_reading.hpp"
 #include "common/figures.hpp"
+#include "measure/snapshot_reading.hpp"
 
 namespace tri::ch10 {
 
@@ -31,10 +31,10 @@ std::vector<std::string> two_speeds_algorithms();
 
 /// The figure's numbers from a snapshot; throws std::runtime_error when it holds none of the
 /// algorithms or no ratio to the ceiling for the large scenes.
-TwoSpeeds two_speeds_of(const SnapshotValues& snapshot);
+TwoSpeeds two_speeds_of(const Snapshot& snapshot);
 
 /// The figure: Mpixels/s on large triangles as bars beside the write ceiling, triangles/s on tiny
 /// triangles beside them, the machine, compiler, date and commit from the snapshot's header.
-SvgFigure two_speeds_figure(const SnapshotValues& snapshot);
+SvgFigure two_speeds_figure(const Snapshot& snapshot);
 
 }  // namespace tri::ch10

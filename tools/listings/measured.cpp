@@ -21,13 +21,6 @@ constexpr std::string_view kHeader = "header:";
 constexpr std::string_view kTableOpen = "<!-- measured-table:";
 constexpr std::string_view kTableClose = "<!-- /measured-table -->";
 
-std::optional<double> parse_number(std::string_view text) {
-  double value = 0;
-  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (error != std::errc() || end != text.data() + text.size()) return std::nullopt;
-  return value;
-}
-
 // The number a KEY names in a snapshot, or an explanation of why there is none.
 struct Lookup {
   std::optional<double> value;
@@ -100,44 +93,6 @@ bool inside_inline_code(std::string_view line, std::size_t position) {
 
 }  // namespace
 
-std::optional<Snapshot> parse_snapshot(std::string_view text) {
-  Snapshot snapshot;
-  bool seen_columns = false;
-  std::istringstream lines{std::string(text)};
-  for (std::string line; std::getline(lines, line);) {
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    if (!line.empty() && line.front() == '#') {
-      // "# NAME: TEXT"; the title line has no such colon.
-      const auto colon = line.find(": ");
-      const auto name = colon == std::string::npos ? std::string() : line.substr(1, colon - 1);
-      const auto start = name.find_first_not_of(' ');
-      if (start != std::string::npos && name.find(' ', start) == std::string::npos) {
-        snapshot.header.insert_or_assign(name.substr(start), line.substr(colon + 2));
-      }
-      continue;
-    }
-    if (line.empty()) continue;
-    if (!seen_columns) {
-      if (line != "key,value") return std::nullopt;
-      seen_columns = true;
-      continue;
-    }
-    const auto comma = line.find(',');
-    if (comma == std::string::npos) return std::nullopt;
-    const std::string key = line.substr(0, comma);
-    const std::string value = line.substr(comma + 1);
-    if (value.empty()) return std::nullopt;
-    if (const auto number = parse_number(value)) {
-      snapshot.numbers.insert_or_assign(key, *number);
-    } else {
-      snapshot.texts.insert_or_assign(key, value);
-    }
-    snapshot.keys.push_back(key);
-  }
-  if (!seen_columns) return std::nullopt;
-  return snapshot;
-}
-
 std::optional<std::vector<std::string>> measured_table(const Snapshot& snapshot,
                                                        std::string_view name,
                                                        std::string& missing) {
@@ -203,8 +158,12 @@ const Snapshot* SnapshotCache::find(const std::string& file) {
   }
   std::optional<Snapshot> snapshot;
   if (std::ifstream in(root_ / file, std::ios::binary); in) {
-    snapshot = parse_snapshot(
-        std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()));
+    try {
+      snapshot = parse_snapshot(
+          std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()));
+    } catch (const std::runtime_error&) {
+      // Not a snapshot: its markers are reported as such.
+    }
   }
   const auto& stored = files_.emplace(file, std::move(snapshot)).first->second;
   return stored ? &*stored : nullptr;

@@ -27,20 +27,10 @@
 #include <string_view>
 #include <vector>
 
+#include "measure/snapshot_reading.hpp"
 #include "tools/listings/listings.hpp"
 
 namespace tri::listings {
-
-/// One snapshot's header lines, numbers and texts.
-struct Snapshot {
-  std::map<std::string, std::string, std::less<>> header;  ///< `# NAME: TEXT` lines by NAME
-  std::map<std::string, double, std::less<>> numbers;      ///< the values that are numbers
-  std::map<std::string, std::string, std::less<>> texts;   ///< the values that are not
-  std::vector<std::string> keys;                           ///< every key, in the file's order
-};
-
-/// The snapshot a text holds; nullopt when the text is not a snapshot.
-std::optional<Snapshot> parse_snapshot(std::string_view text);
 
 /// The lines of table `name` of a snapshot (see above), or nullopt with `missing` saying why.
 std::optional<std::vector<std::string>> measured_table(const Snapshot& snapshot,

@@ -65,22 +65,6 @@ void check_update_fills(const TempRepo& repo, const std::string& file,
 
 }  // namespace
 
-TEST_CASE("A snapshot's numbers are its KEY,VALUE lines after the header", "[listings]") {
-  const auto snapshot = parse_snapshot(kSnapshot);
-  REQUIRE(snapshot);
-  CHECK(snapshot->numbers.size() == 15);
-  CHECK(snapshot->numbers.at("area_cells.cost_vs_fastest") == 2.96831);
-  CHECK(snapshot->texts.size() == 2);
-  CHECK(snapshot->texts.at("peer.chapter") == "external");
-  CHECK(snapshot->keys.size() == 17);
-  CHECK(snapshot->keys.front() == "fast.chapter");
-  CHECK(snapshot->header.size() == 3);  // the title line names nothing
-  CHECK(snapshot->header.at("peers") == "pixman 0.42.2, cairo 1.16.0");
-  CHECK_FALSE(parse_snapshot("area_cells.cost_vs_fastest,2.9\n"));  // no key,value line
-  CHECK_FALSE(parse_snapshot("key,value\narea_cells\n"));           // no value
-  CHECK_FALSE(parse_snapshot("key,value\narea_cells,\n"));          // an empty value
-}
-
 TEST_CASE("A format gives significant digits or decimals, then its suffix", "[listings]") {
   CHECK(format_measured(2.96831, "s3×") == "2.97×");
   CHECK(format_measured(29.345, "s3×") == "29.3×");

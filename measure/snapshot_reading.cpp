@@ -1,12 +1,13 @@
-#include "chapters/10_speed_vs_error/snapshot_reading.hpp"
+#include "measure/snapshot_reading.hpp"
 
 #include <charconv>
 #include <fstream>
 #include <iterator>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
-namespace tri::ch10 {
+namespace tri {
 namespace {
 
 std::runtime_error bad_line(int number, std::string_view why) {
@@ -15,19 +16,19 @@ std::runtime_error bad_line(int number, std::string_view why) {
 
 }  // namespace
 
-std::string SnapshotValues::header_text(std::string_view name) const {
+std::string Snapshot::header_text(std::string_view name) const {
   const auto found = header.find(name);
   return found == header.end() ? "unknown" : found->second;
 }
 
-std::optional<double> SnapshotValues::number(std::string_view key) const {
+std::optional<double> Snapshot::number(std::string_view key) const {
   const auto found = numbers.find(key);
   if (found == numbers.end()) return std::nullopt;
   return found->second;
 }
 
-SnapshotValues parse_snapshot_values(std::string_view text) {
-  SnapshotValues snapshot;
+Snapshot parse_snapshot(std::string_view text) {
+  Snapshot snapshot;
   bool seen_columns = false;
   std::istringstream lines{std::string(text)};
   int number = 0;
@@ -51,26 +52,32 @@ SnapshotValues parse_snapshot_values(std::string_view text) {
     }
     const auto comma = line.find(',');
     if (comma == std::string::npos) throw bad_line(number, "no comma");
-    double value = 0;
-    const char* first = line.data() + comma + 1;
-    const char* last = line.data() + line.size();
-    const auto [end, error] = std::from_chars(first, last, value);
-    if (error != std::errc() || end != last) throw bad_line(number, "not a number");
-    snapshot.numbers.insert_or_assign(line.substr(0, comma), value);
+    std::string key = line.substr(0, comma);
+    const std::string value = line.substr(comma + 1);
+    if (key.empty()) throw bad_line(number, "no key");
+    if (value.empty()) throw bad_line(number, "no value");
+    double parsed = 0;
+    const auto [end, error] = std::from_chars(value.data(), value.data() + value.size(), parsed);
+    if (error == std::errc() && end == value.data() + value.size()) {
+      snapshot.numbers.insert_or_assign(key, parsed);
+    } else {
+      snapshot.texts.insert_or_assign(key, value);
+    }
+    snapshot.keys.push_back(std::move(key));
   }
   if (!seen_columns) throw std::runtime_error("not a snapshot: no line key,value");
   return snapshot;
 }
 
-SnapshotValues read_snapshot_values(const std::filesystem::path& file) {
+Snapshot read_snapshot(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
   if (!in) throw std::runtime_error("cannot read the snapshot " + file.string());
   const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
   try {
-    return parse_snapshot_values(text);
+    return parse_snapshot(text);
   } catch (const std::runtime_error& e) {
     throw std::runtime_error(file.string() + ": " + e.what());
   }
 }
 
-}  // namespace tri::ch10
+}  // namespace tri
