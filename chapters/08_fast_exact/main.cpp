@@ -8,6 +8,7 @@
 
 #include "chapters/08_fast_exact/batched.hpp"
 #include "chapters/08_fast_exact/blocks.hpp"
+#include "chapters/08_fast_exact/incremental.hpp"
 #include "chapters/08_fast_exact/simd.hpp"
 #include "chapters/08_fast_exact/spans.hpp"
 #include "chapters/08_fast_exact/threaded.hpp"
@@ -71,6 +72,41 @@ Triangle triangle_around(tri::Random& random, glm::dvec2 centre, double extent) 
     v = centre + glm::dvec2(dx, dy);
   }
   return t;
+}
+
+// Step 1: one edge's value at every candidate pixel, as the walk reaches it: each value is its left
+// neighbour plus step_x and the value below it plus step_y, so a learner can add them by hand.
+std::string incremental_values_figure() {
+  const Triangle t{{{0.75, 0.5}, {6.5, 1.75}, {2.25, 5.5}}};
+  const auto setup = tri::ch08::setup_triangle(t, 8, 7);
+  const tri::ch08::EdgeFunction& ab = setup->edges[2];  // edges 0, 1, 2 are BC, CA, AB
+  PixelDiagram d({0, 0}, {7, 6}, "Step 1: edge AB's value, one addition per pixel", 58);
+  const auto& r = setup->range;
+  d.show_centres(false);  // the values sit where the centres would
+  tri::ch08::walk_incremental(
+      *setup, r, [&](int x, int y, std::int64_t w0, std::int64_t w1, std::int64_t w2) {
+        const bool inside = tri::ch08::inside_all_edges(w0, w1, w2);
+        d.fill({x, y}, inside ? light_green : w2 >= 0 ? light_blue : light_vermillion);
+        d.pixel_text({x, y}, std::to_string(w2));
+      });
+  d.mark({r.min.x, r.min.y}, PixelMark::square, dc::black);
+  outline(d, r, dc::dark_gray, 2, true);
+  d.line(t[0], t[1], dc::vermillion, 3);
+  d.line(t[1], t[2], dc::black, 1.5);
+  d.line(t[2], t[0], dc::black, 1.5);
+  d.vertex(t[0], "A", LabelPlace::below_right);
+  d.vertex(t[1], "B", LabelPlace::below_left);
+  d.vertex(t[2], "C", LabelPlace::above_right);
+  d.legend_fill("covered: all three edge values >= 0", light_green);
+  d.legend_fill("AB's value >= 0, another edge's < 0", light_blue);
+  d.legend_fill("AB's value < 0: outside edge AB", light_vermillion);
+  d.legend_mark("origin pixel: the setup's value " + std::to_string(ab.value), PixelMark::square);
+  d.legend_line("edge AB", dc::vermillion);
+  d.legend_line("candidate pixels (bounding box)", dc::dark_gray, true);
+  d.legend_note("One pixel right adds step_x = " + std::to_string(ab.step_x) +
+                "; one row up adds step_y = " + std::to_string(ab.step_y) +
+                " (units of 1/256 pixel: the snapped vertices' differences)");
+  return d.svg();
 }
 
 // Step 2: every candidate pixel by the edges it passes (the setup's edges 0, 1, 2 are BC, CA and
@@ -193,6 +229,39 @@ std::string blocks_figure() {
   d.legend_note(std::to_string(inside) + " inside, " + std::to_string(outside) + " outside, " +
                 std::to_string(partial) + " partial blocks, " +
                 std::to_string(empty_blocks.size()) + " of them without a covered pixel.");
+  return d.svg();
+}
+
+// Step 5: a triangle within one block, tested one row of eight lanes at a time: each lane's sign
+// from lane_test, the code draw_triangle_simd runs; the lanes past the candidate pixels stay off.
+std::string simd_lanes_figure() {
+  const Triangle t{{{1.25, 0.5}, {6.75, 2.25}, {2.5, 5.75}}};
+  const auto setup = tri::ch08::setup_triangle(t, 10, 7);
+  PixelDiagram d({0, 0}, {9, 6}, "Step 5: each row of the block is one vector of 8 lanes", 48);
+  const auto& r = setup->range;
+  d.show_centres(false);  // each cell shows its lane number instead
+  for (int y = r.min.y; y <= r.max.y; ++y) {
+    const auto lanes = tri::ch08::lane_test(*setup, r.min.x, y, tri::ch08::LaneWidth::bits32, 8);
+    for (int i = 0; i < 8; ++i) {
+      const glm::ivec2 pixel{r.min.x + i, y};
+      const bool past_range = pixel.x > r.max.x;
+      d.fill(pixel, lanes[static_cast<std::size_t>(i)] ? dc::sky_blue
+                    : past_range                       ? dc::light_gray
+                                                       : light_orange);
+      d.pixel_text(pixel, std::to_string(i));
+      if (past_range) d.mark(pixel, PixelMark::hatch, dc::dark_gray);
+    }
+    d.frame({r.min.x, y}, {r.min.x + 7, y}, dc::black, 1.5);
+  }
+  outline(d, r, dc::dark_gray, 2.5, true);
+  draw_triangle(d, t, {LabelPlace::below_right, LabelPlace::right, LabelPlace::above_left});
+  d.legend_fill("lane >= 0: the blend stores the triangle's colour", dc::sky_blue);
+  d.legend_fill("lane < 0 (an edge fails): the blend keeps the old pixel", light_orange);
+  d.legend_mark("lane past the candidate pixels: its fourth term is < 0", PixelMark::hatch,
+                dc::dark_gray);
+  d.legend_line("one vector: pixels x .. x + 7 of a row, the number is the lane", dc::black);
+  d.legend_line("candidate pixels", dc::dark_gray, true);
+  d.legend_line("ideal triangle", dc::black);
   return d.svg();
 }
 
@@ -462,14 +531,19 @@ std::string setup_lanes_figure() {
 int main(int argc, char** argv) {
   return tri::run_chapter_program(
       argc, argv, "08_fast_exact",
-      "Chapter 08, fast and still exact: which edges each pixel passes (08_edge_signs.svg), the\n"
+      "Chapter 08, fast and still exact: one edge's value pixel by pixel "
+      "(08_incremental_values.svg),\n"
+      "which edges each pixel passes (08_edge_signs.svg), a row's eight lanes (08_simd_lanes.svg), "
+      "the\n"
       "spans of a sliver in its bounding box (08_sliver_spans.svg), a triangle's 8x8 blocks by\n"
       "class (08_blocks.svg), the path the hybrid takes per triangle (08_hybrid_paths.svg, close\n"
       "up in 08_hybrid_paths_zoom.svg), the bands two threads share (08_bands.svg), the bytes of\n"
       "each pixel format (08_bytes_per_pixel.svg), a scene binned into tiles (08_tiles.svg) and\n"
       "eight triangles set up in lanes (08_setup_lanes.svg).",
       [](tri::FigureWriter& figures) {
+        figures.save_svg("08_incremental_values", incremental_values_figure());
         figures.save_svg("08_edge_signs", edge_signs_figure());
+        figures.save_svg("08_simd_lanes", simd_lanes_figure());
         figures.save_svg("08_sliver_spans", sliver_spans_figure());
         figures.save_svg("08_blocks", blocks_figure());
         figures.save_svg("08_hybrid_paths", hybrid_paths_figure());
