@@ -249,6 +249,91 @@ tri::SvgFigure sample_patterns_figure() {
       tri::side_by_side(panels, "Sixteen samples per pixel on an edge 1.5 degrees off horizontal")};
 }
 
+// Draws one pixel's samples, given as offsets from its centre in 1/units pixel, blue inside the
+// triangle and hollow grey outside (each decided by chapter 07's oracle); returns how many are in.
+int draw_pixel_samples(tri::PixelDiagram& d, const tri::Triangle& t, glm::ivec2 pixel,
+                       const std::vector<glm::ivec2>& offsets, int units, double radius) {
+  const tri::Triangle scaled = {{t[0] * double(units), t[1] * double(units), t[2] * double(units)}};
+  int inside = 0;
+  for (const glm::ivec2 offset : offsets) {
+    const glm::ivec2 sample = pixel * units + offset;
+    const bool in = tri::ch07::oracle_covers(scaled, sample);
+    inside += in ? 1 : 0;
+    const glm::dvec2 at = glm::dvec2(sample) / double(units);
+    d.point(at, in ? dc::blue : dc::dark_gray, radius);
+    if (!in) d.point(at, tri::colors::white, radius * 0.6);  // hollow: outside, not counted
+  }
+  return inside;
+}
+
+// Three decimals, for a coverage written beside its sampled estimate.
+std::string decimal3(double v) {
+  char text[16];
+  std::snprintf(text, sizeof text, "%.3f", v);
+  return text;
+}
+
+// Counter-clockwise (y up): its lower edge rises gently through pixels 0 to 2 of row 0 (chosen so
+// that 4 x 4 samples miss the area in all three), its other edges stay outside those pixels.
+tri::Triangle gentle_edge_triangle() {
+  return {{{-1, -131 / 256.0}, {3.5, 49 / 256.0}, {-1, 6}}};
+}
+
+tri::SvgFigure step2_supersampling_figure() {
+  const tri::Triangle t = gentle_edge_triangle();
+  tri::PixelDiagram d({0, -1}, {2, 0}, "Step 2: 4 x 4 samples counted against the exact area", 150);
+  d.show_centres(false);
+  const tri::ch09::SamplePattern grid = tri::ch09::regular_grid(4);
+  for (int x = 0; x <= 2; ++x) {
+    const glm::ivec2 pixel{x, 0};
+    const double exact = tri::ch09::exact_coverage(t, pixel).to_double();
+    const int k = draw_pixel_samples(d, t, pixel, grid.offsets, tri::ch09::sample_units, 6);
+    d.frame(pixel, pixel, dc::black, 2.5);
+    d.label({x - 0.45, -0.75}, "samples " + std::to_string(k) + "/16 = " + decimal3(k / 16.0),
+            LabelPlace::right);
+    d.label({x - 0.45, -1.0}, "exact area " + decimal3(exact), LabelPlace::right);
+    d.label({x - 0.45, -1.25}, "error " + decimal3(k / 16.0 - exact), LabelPlace::right);
+  }
+  d.triangle(t[0], t[1], t[2], dc::vermillion);
+  d.legend_point("a sample inside the triangle: counted", dc::blue, 6);
+  d.legend_mark("a sample outside (hollow): not counted", tri::PixelMark::ring, dc::dark_gray);
+  d.legend_line("the triangle's edge", dc::vermillion);
+  d.legend_note("Each pixel: 16 samples at (k + 1/2)/4 across it, decided by chapter 07's rule.");
+  d.legend_note("Below it: the count k/16, step 1's exact area of the same pixel, and the error.");
+  d.legend_note("The count moves in whole sixteenths; the area moves with the edge.");
+  return {"09_step2_supersampling", d.svg()};
+}
+
+tri::SvgFigure step7_pixman_grid_figure() {
+  // pixman's a8 sample grid (pixman-private.h, 8 bits): 15 rows at 2185 + 4369 j and 17 columns
+  // at 1928 + 3855 i, in 1/65536 of a pixel from its low side; 15 x 17 = 255, the byte's range.
+  constexpr int fixed_one = 65536;
+  std::vector<glm::ivec2> offsets;
+  for (int j = 0; j < 15; ++j) {
+    for (int i = 0; i < 17; ++i) {
+      offsets.push_back({1928 + 3855 * i - fixed_one / 2, 2185 + 4369 * j - fixed_one / 2});
+    }
+  }
+  const tri::Triangle t = gentle_edge_triangle();
+  const glm::ivec2 pixel{1, 0};  // the step 2 figure's middle pixel
+  tri::PixelDiagram d(pixel, pixel, "Step 7: pixman's 15 x 17 samples in one pixel", 420);
+  d.show_centres(false);
+  const int count = draw_pixel_samples(d, t, pixel, offsets, fixed_one, 4);
+  d.frame(pixel, pixel, dc::black, 2.5);
+  d.triangle(t[0], t[1], t[2], dc::vermillion);
+  const double exact = tri::ch09::exact_coverage(t, pixel).to_double();
+  d.legend_point("a sample inside: counted", dc::blue, 4);
+  d.legend_mark("a sample outside (hollow)", tri::PixelMark::ring, dc::dark_gray);
+  d.legend_line("the triangle's edge", dc::vermillion);
+  d.legend_note("15 rows x 17 columns = 255 samples: the count is the a8 byte, " +
+                std::to_string(count) + "/255 = " + decimal3(count / 255.0) + ".");
+  d.legend_note("Exact area (step 1): " + decimal3(exact) + " = " + decimal3(exact * 255) +
+                "/255; cut to 8 bits, as AGG stores it: " +
+                std::to_string(static_cast<int>(std::floor(exact * 255))) + "/255.");
+  d.legend_note("Samples decided here by chapter 07's exact rule, at pixman's positions.");
+  return {"09_step7_pixman_grid", d.svg()};
+}
+
 // Two decimals without the leading zero ("0.25" -> ".25", "-0.5" -> "-.50"), to fit a cell.
 std::string short_decimal(double v) {
   char text[16];
@@ -338,6 +423,7 @@ int main(int argc, char** argv) {
   return tri::run_chapter_program(
       argc, argv, "09_anti_aliasing",
       "Chapter 09, how much of each pixel: exact coverage, samples, row cells, seams.",
-      {exact_coverage_figure, step1_edge_parts_figure, sample_patterns_figure, row_cells_figure,
-       step4_pixel_pieces_figure, conflation_figure});
+      {exact_coverage_figure, step1_edge_parts_figure, step2_supersampling_figure,
+       sample_patterns_figure, row_cells_figure, step4_pixel_pieces_figure, conflation_figure,
+       step7_pixman_grid_figure});
 }
