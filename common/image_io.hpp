@@ -18,7 +18,7 @@ std::vector<std::uint8_t> encode_png(const Canvas& canvas);
 /// saturate), top row first. Throws std::logic_error when write counting is off.
 std::vector<std::uint8_t> encode_counts_pgm(const Canvas& canvas);
 
-/// Writes bytes to a file by the rules of output_files.hpp (a unique temporary, synced, renamed
+/// Writes bytes to a file by the promises of output_files.hpp (a unique temporary, synced, renamed
 /// over the target), so a failure never leaves a half-written file behind. Creates missing parent
 /// folders. Throws OutputError (a std::runtime_error) with the path and the reason on failure.
 void write_file_atomically(const std::filesystem::path& path, std::span<const std::uint8_t> bytes);

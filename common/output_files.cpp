@@ -71,7 +71,7 @@ struct Target {
   fs::path file;
 };
 
-// The kernel's protected_symlinks rule, applied because we resolve links ourselves: in a sticky
+// The kernel's protected_symlinks check, applied because we resolve links ourselves: in a sticky
 // world-writable folder only a link owned by the folder's owner or by this user is followed.
 void check_link_may_be_followed(const fs::path& shown, const fs::path& link,
                                 const struct stat& link_info) {
@@ -112,7 +112,7 @@ Target resolve(const fs::path& target) {
 }
 
 // The file a target names once links are followed: the target itself when it does not exist yet.
-// Throws OutputError when the existing file may not be replaced by the rules of the header.
+// Throws OutputError when the existing file may not be replaced by the promises of the header.
 fs::path destination_of(const fs::path& target, const fs::path& resolved) {
   const auto info = status_of(resolved, true);
   if (!info) {

@@ -1,7 +1,7 @@
 /// @file
 /// Writing output files without ever losing one: every program writes through this file.
 ///
-/// The rules (docs/DESIGN.md section 9, "Writing files"):
+/// The promises (docs/DESIGN.md section 9, "Writing files"):
 /// - Data goes to an unnamed temporary file (O_TMPFILE) in the target's folder, or where the file
 ///   system has none to a new ".NAME.XXXXXX.tmp" created exclusively (never following a link); it
 ///   is synced and put in place only when every output of the run is complete: given a fresh
@@ -12,7 +12,7 @@
 ///   (common/interrupt_cleanup.hpp).
 /// - A symbolic link as target is written through: its target file is replaced, the link stays;
 ///   a link in a sticky world-writable folder owned by neither the folder's owner nor this user
-///   is refused, as the kernel's protected_symlinks rule would.
+///   is refused, as the kernel's protected_symlinks check would.
 /// - A replaced file keeps its owner, group and permission bits where this user may set them,
 ///   never its setuid, setgid or sticky bits.
 /// - A target with several hard links is refused (replacing one name would split them silently).
@@ -53,7 +53,8 @@ std::optional<int> output_descriptor(const std::filesystem::path& output);
 
 /// Checks a run's outputs before any work: throws UsageError for an empty path, a name ending in
 /// a slash, two outputs naming one file or an output that is one of the inputs, and OutputError for
-/// a target that could not be replaced (see the rules above) or a folder that could not be created.
+/// a target that could not be replaced (see the promises above) or a folder that could not be
+/// created.
 void check_outputs(std::span<const std::filesystem::path> outputs,
                    std::span<const std::filesystem::path> inputs = {});
 
@@ -112,7 +113,7 @@ class OutputTransaction {
   std::vector<std::pair<std::filesystem::path, InterruptCleanup>> created_folders_;
 };
 
-/// One file written by the rules above: a transaction of one output.
+/// One file written by the promises above: a transaction of one output.
 void write_file_safely(const std::filesystem::path& path, std::span<const std::uint8_t> bytes);
 
 /// The bytes of a text, for the functions above.

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <initializer_list>
 #include <numeric>
 #include <optional>
 #include <string>
@@ -28,7 +29,24 @@
 namespace tri {
 namespace {
 
-CommandLine raster_command_line() {
+// "a and b", "a, b and c": the drawables that write every one of `outputs`, named from their
+// descriptors so no text names an algorithm that cannot; empty when none does.
+std::string names_writing(std::span<const Drawable> drawables,
+                          std::initializer_list<Output> outputs) {
+  std::vector<const Drawable*> writers = drawables_writing(drawables, *outputs.begin());
+  std::erase_if(writers, [&](const Drawable* d) {
+    return !std::ranges::all_of(outputs, [&](Output o) { return d->writes(o); });
+  });
+  std::string names;
+  for (std::size_t i = 0; i < writers.size(); ++i) {
+    if (i > 0) names += i + 1 == writers.size() ? " and " : ", ";
+    names += writers[i]->name;
+  }
+  return names;
+}
+
+CommandLine raster_command_line(std::span<const Drawable> drawables) {
+  const std::string narrow = names_writing(drawables, {Output::index8, Output::mask1});
   return CommandLine(
       "raster",
       "Renders a scene file with one of the book's triangle algorithms.\n"
@@ -64,7 +82,8 @@ CommandLine raster_command_line() {
           {"format", "F",
            "draw into rgba8 (default), index8 (a byte per pixel: a palette of at most 255 "
            "colours), mask1 (a bit per pixel: one colour) or auto (the narrowest that holds the "
-           "scene); index8 and mask1 are drawn by fast_spans and expanded for the PNG"},
+           "scene); index8 and mask1 are drawn by " +
+               (narrow.empty() ? "no registered algorithm" : narrow) + " and expanded for the PNG"},
       });
 }
 
@@ -223,10 +242,7 @@ std::optional<PixelFormat> checked_format(const CliArguments& args,
   }
   if (drawable == nullptr) throw UsageError("--format goes with --algo NAME");
   if (format && !draws_format(*drawable, *format)) {
-    std::string narrow;
-    for (const Drawable* d : drawables_writing(drawables, output_of(*format))) {
-      narrow += (narrow.empty() ? "" : ", ") + std::string(d->name);
-    }
+    const std::string narrow = names_writing(drawables, {output_of(*format)});
     throw UsageError(std::string(drawable->name) + " draws RGBA8 only; index8 and mask1 are " +
                      "drawn by " + (narrow.empty() ? "no registered algorithm" : narrow) +
                      " (chapter 08, step 8)");
@@ -398,7 +414,7 @@ int run(std::span<const Drawable> drawables, const CliArguments& args, std::ostr
 
 int run_raster(std::span<const Drawable> drawables, int argc, const char* const* argv,
                std::ostream& out, std::ostream& err) {
-  return run_command_line(raster_command_line(), argc, argv, out, err,
+  return run_command_line(raster_command_line(drawables), argc, argv, out, err,
                           [&](const CliArguments& args) { return run(drawables, args, out, err); });
 }
 

@@ -6,6 +6,7 @@
 #include <random>
 #include <regex>
 #include <set>
+#include <span>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -16,6 +17,7 @@
 #include "chapters/09_anti_aliasing/sampling.hpp"
 #include "common/scene.hpp"
 #include "measure/area_error.hpp"
+#include "measure/drawable.hpp"
 #include "measure/registry.hpp"
 #include "measure/render_scene.hpp"
 #include "tools/raster_app.hpp"
@@ -108,6 +110,52 @@ TEST_CASE("raster --help describes every form of the command", "[raster]") {
                            "--counts FILE.pgm", "--bench N"}) {
     CHECK(run.out.find(text) != std::string::npos);
   }
+}
+
+// The names --help gives after "index8 and mask1 are drawn by ", split at ", " and " and ".
+std::vector<std::string> help_narrow_writers(std::span<const tri::Drawable> drawables) {
+  const char* argv[] = {"raster", "--help"};
+  std::ostringstream out, err;
+  REQUIRE(tri::run_raster(drawables, 2, argv, out, err) == 0);
+  const std::string help = out.str();
+  const std::string before = "index8 and mask1 are drawn by ";
+  const std::size_t start = help.find(before);
+  REQUIRE(start != std::string::npos);
+  const std::size_t from = start + before.size();
+  const std::size_t end = help.find(" and expanded for the PNG", from);
+  REQUIRE(end != std::string::npos);
+  std::string list = std::regex_replace(help.substr(from, end - from), std::regex(" and "), ", ");
+  std::vector<std::string> names;
+  std::istringstream parts(list);
+  for (std::string name; std::getline(parts, name, ',');) {
+    names.push_back(name.substr(name.find_first_not_of(' ')));
+  }
+  return names;
+}
+
+// The drawables that declare both narrow formats, by name.
+std::vector<std::string> declared_narrow_writers(std::span<const tri::Drawable> drawables) {
+  std::vector<std::string> names;
+  for (const tri::Drawable* d : tri::drawables_writing(drawables, tri::Output::index8)) {
+    if (d->writes(tri::Output::mask1)) names.emplace_back(d->name);
+  }
+  return names;
+}
+
+TEST_CASE("raster --help names exactly the drawables that declare the narrow formats", "[raster]") {
+  std::vector<tri::Drawable> drawables = tri::registered_drawables();
+  const std::vector<std::string> declared = declared_narrow_writers(drawables);
+  REQUIRE_FALSE(declared.empty());
+  CHECK(help_narrow_writers(drawables) == declared);
+  // Declaring the formats on one more drawable changes the help: the names come from descriptors.
+  const auto colour_only = std::find_if(drawables.begin(), drawables.end(), [](const auto& d) {
+    return d.colours != nullptr && !d.writes(tri::Output::index8);
+  });
+  REQUIRE(colour_only != drawables.end());
+  colour_only->outputs = tri::narrow_outputs;
+  const std::vector<std::string> widened = declared_narrow_writers(drawables);
+  CHECK(widened.size() == declared.size() + 1);
+  CHECK(help_narrow_writers(drawables) == widened);
 }
 
 TEST_CASE("raster --list prints one tab-separated line per registered algorithm", "[raster]") {
