@@ -6,9 +6,11 @@
 #include <span>
 #include <string>
 
-namespace tri::ch10 {
-
+namespace tri {
 struct ExternalPeer;
+}  // namespace tri
+
+namespace tri::ch10 {
 
 /// The machine and build a report was measured with.
 struct Machine {
