@@ -136,9 +136,9 @@ int main(int argc, char** argv) {
                   << selection.coverage_peers.size() << " anti-aliasing peers, x "
                   << settings.scenes.size() << " scenes, " << tri::ch10::size_name(size)
                   << " setting\n";
-        const tri::ch10::BenchReport report =
-            tri::ch10::run_benchmark(selection.algorithms, selection.peers, settings,
-                                     tri::ch10::describe_machine(selection.peers), std::cout);
+        const tri::ch10::BenchReport report = tri::ch10::run_benchmark(
+            selection.algorithms, selection.peers, settings,
+            tri::describe_machine(tri::ch10::external_peer_status(selection.peers)), std::cout);
         const tri::ch10::CoverageReport coverage{
             tri::ch10::run_coverage_benchmark(selection.area_algorithms, selection.coverage_peers,
                                               settings, std::cout),

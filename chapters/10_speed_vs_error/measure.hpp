@@ -12,12 +12,12 @@
 #include <string_view>
 #include <vector>
 
-#include "chapters/10_speed_vs_error/machine.hpp"
 #include "chapters/10_speed_vs_error/suites.hpp"
 #include "common/scene.hpp"
 #include "common/triangle_algorithm.hpp"
 #include "measure/error_metrics.hpp"
 #include "measure/fill_ceiling.hpp"
+#include "measure/machine.hpp"
 #include "measure/peers/peer.hpp"
 #include "measure/timing.hpp"
 

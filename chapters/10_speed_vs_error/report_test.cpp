@@ -79,7 +79,8 @@ struct TinyRun {
   tri::ch10::ReportFiles files;
   TinyRun() {
     report = tri::ch10::run_benchmark(chosen_algorithms(), peers, settings,
-                                      tri::ch10::describe_machine(peers), progress);
+                                      tri::describe_machine(tri::ch10::external_peer_status(peers)),
+                                      progress);
     coverage.rows =
         tri::ch10::run_coverage_benchmark(chosen_area_algorithms(), {}, settings, progress);
     coverage.peer_status = "none measured";
