@@ -54,11 +54,11 @@ TEST_CASE("cairo refuses a scene beyond its 24.8 fixed-point range, naming the l
 TEST_CASE("cairo's row in the report: timed, with its error measured",
           "[10_speed_vs_error][step7][cairo]") {
   const auto settings = tri::ch10::bench_settings(tri::ch10::SuiteSize::tiny);
-  const tri::ch10::ExternalPeer peer = tri::ch10::cairo_peer();
+  const tri::ExternalPeer peer = tri::ch10::cairo_peer();
   CHECK(peer.name == "cairo_no_antialias");
   CHECK(peer.rule == "approximate");
-  const auto prepared = tri::ch10::prepare_scene(settings.scenes.front(), 0);
-  const tri::ch10::PeerResult result = peer.measure(prepared, settings.timing);
+  const auto prepared = tri::prepare_scene(settings.scenes.front(), 0);
+  const tri::PeerResult result = peer.measure(prepared, settings.timing);
   CHECK(result.timing.seconds.median > 0);
   CHECK(result.written_pixels > 0);
   CHECK(result.error.covered > 0);

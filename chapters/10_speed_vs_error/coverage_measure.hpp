@@ -10,9 +10,10 @@
 #include <string>
 #include <vector>
 
-#include "chapters/10_speed_vs_error/measure.hpp"
 #include "chapters/09_anti_aliasing/area_algorithms.hpp"
+#include "chapters/10_speed_vs_error/measure.hpp"
 #include "measure/area_error.hpp"
+#include "measure/peers/peer.hpp"
 #include "measure/timing.hpp"
 
 namespace tri::ch10 {
@@ -26,26 +27,6 @@ struct CoverageMeasurement : RowIdentity {
   AreaErrorReport error;             ///< against the exact area, on the error scene
 
   double triangles_per_second() const noexcept;
-};
-
-/// What a peer measured on one scene: plain numbers, as for the inside-or-outside peers.
-struct CoveragePeerResult {
-  Timing timing;                     ///< seconds per draw of the whole scene, one call per triangle
-  std::uint64_t touched_pixels = 0;  ///< pixels with coverage above zero, each triangle on its own
-  AreaErrorReport error;             ///< measure_area_error of its coverage against the truth
-};
-
-/// A rasterizer from outside the book that anti-aliases (AGG, cairo, pixman), measured beside
-/// chapter 09's algorithms.
-struct CoveragePeer {
-  std::string name;  ///< its row, e.g. "agg_scanline_aa"
-  std::string rule;  ///< what it computes, e.g. "area to 8 bits" (no commas: a CSV field)
-  int samples = 0;   ///< samples per pixel when it samples; 0 when it computes the area
-  /// Times it on the prepared scene (each triangle one call, as the book's algorithms are called)
-  /// and measures its coverage against the truth of the error scene.
-  std::function<CoveragePeerResult(const PreparedScene&, const AreaTruth& error_truth,
-                                   const TimingPlan&)>
-      measure;
 };
 
 /// Times every coverage algorithm on every scene of the settings (interleaved rounds, one canvas

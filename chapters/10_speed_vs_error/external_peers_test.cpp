@@ -13,7 +13,7 @@ TEST_CASE("External peers have their own names, filed under 'external'",
   const auto peers = tri::ch10::external_peers();
   const auto algorithms = tri::registered_algorithms();
   std::set<std::string> names;
-  for (const tri::ch10::ExternalPeer& peer : peers) {
+  for (const tri::ExternalPeer& peer : peers) {
     CAPTURE(peer.name);
     CHECK(names.insert(peer.name).second);
     CHECK(tri::find_named(algorithms, peer.name) == nullptr);  // --only can tell them apart

@@ -5,10 +5,10 @@
 #include <numeric>
 #include <vector>
 
-#include "measure/child_process.hpp"
 #include "chapters/10_speed_vs_error/llvmpipe_canvas.hpp"
 #include "chapters/10_speed_vs_error/llvmpipe_peer.hpp"
 #include "chapters/10_speed_vs_error/peer_test_support.hpp"
+#include "measure/child_process.hpp"
 #include "measure/error_metrics.hpp"
 #include "measure/registry.hpp"
 #include "measure/render_scene.hpp"
@@ -151,8 +151,8 @@ TEST_CASE("With a viewport of just the buffer, llvmpipe's clipping moves border 
 TEST_CASE("The llvmpipe peer measures in a child what it measures here",
           "[10_speed_vs_error][step6][llvmpipe]") {
   tri::ch10::BenchSettings settings = tri::ch10::bench_settings(tri::ch10::SuiteSize::tiny);
-  const tri::ch10::PreparedScene prepared = tri::ch10::prepare_scene(settings.scenes.front(), 0);
-  const auto here = tri::run_in_child<tri::ch10::PeerResult>(
+  const tri::PreparedScene prepared = tri::prepare_scene(settings.scenes.front(), 0);
+  const auto here = tri::run_in_child<tri::PeerResult>(
       [&] { return tri::ch10::measure_llvmpipe_here(prepared, settings.timing); });
   const auto counts =
       llvmpipe_counts_in_child(prepared.scene.width, prepared.scene.height, prepared.triangles);
@@ -166,9 +166,9 @@ TEST_CASE("The llvmpipe peer measures in a child what it measures here",
   CHECK(here.error.extra == expected.extra);
   CHECK(here.error.covered == expected.covered);
   CHECK(here.timing.seconds.median > 0);
-  for (const tri::ch10::ExternalPeer& peer : tri::ch10::llvmpipe_peers()) {
+  for (const tri::ExternalPeer& peer : tri::ch10::llvmpipe_peers()) {
     CAPTURE(peer.name);
-    const tri::ch10::PeerResult there = peer.measure(prepared, settings.timing);
+    const tri::PeerResult there = peer.measure(prepared, settings.timing);
     CHECK(there.written_pixels == here.written_pixels);
     CHECK(there.error.missed == here.error.missed);
     CHECK(there.error.extra == here.error.extra);

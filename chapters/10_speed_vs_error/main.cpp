@@ -26,9 +26,9 @@ namespace {
 // parts of the report (inside-or-outside, then coverage).
 struct Selection {
   std::vector<tri::TriangleAlgorithm> algorithms;
-  std::vector<tri::ch10::ExternalPeer> peers;
+  std::vector<tri::ExternalPeer> peers;
   std::vector<tri::ch09::AreaAlgorithm> area_algorithms;
-  std::vector<tri::ch10::CoveragePeer> coverage_peers;
+  std::vector<tri::CoveragePeer> coverage_peers;
 };
 
 // The algorithms and peers named in a comma-separated list (all of them without --only).
@@ -69,23 +69,23 @@ Selection selected(const std::optional<std::string>& names) {
 
 // The suite's scenes of one kind (--scene) and one grid (--grid); an unknown value is a usage
 // error that lists the valid ones.
-std::vector<tri::ch10::SuiteScene> filtered(std::vector<tri::ch10::SuiteScene> scenes,
-                                            const std::optional<std::string>& kind,
-                                            const std::optional<std::string>& grid) {
+std::vector<tri::SuiteScene> filtered(std::vector<tri::SuiteScene> scenes,
+                                      const std::optional<std::string>& kind,
+                                      const std::optional<std::string>& grid) {
   const auto keep_only = [&](const char* option, const std::string& wanted, auto field) {
     std::string valid;
     for (const auto& scene : scenes) {
       const std::string& value = scene.*field;
       if (valid.find(value) == std::string::npos) valid += (valid.empty() ? "" : ", ") + value;
     }
-    std::erase_if(scenes, [&](const tri::ch10::SuiteScene& s) { return s.*field != wanted; });
+    std::erase_if(scenes, [&](const tri::SuiteScene& s) { return s.*field != wanted; });
     if (scenes.empty()) {
       throw tri::UsageError(std::string("--") + option + " '" + tri::printable_excerpt(wanted) +
                             "' matches no scene (valid: " + valid + ")");
     }
   };
-  if (kind) keep_only("scene", *kind, &tri::ch10::SuiteScene::name);
-  if (grid) keep_only("grid", *grid, &tri::ch10::SuiteScene::grid);
+  if (kind) keep_only("scene", *kind, &tri::SuiteScene::name);
+  if (grid) keep_only("grid", *grid, &tri::SuiteScene::grid);
   return scenes;
 }
 
@@ -136,9 +136,9 @@ int main(int argc, char** argv) {
                   << selection.coverage_peers.size() << " anti-aliasing peers, x "
                   << settings.scenes.size() << " scenes, " << tri::ch10::size_name(size)
                   << " setting\n";
-        const tri::ch10::BenchReport report =
-            tri::ch10::run_benchmark(selection.algorithms, selection.peers, settings,
-                                     tri::ch10::describe_machine(selection.peers), std::cout);
+        const tri::ch10::BenchReport report = tri::ch10::run_benchmark(
+            selection.algorithms, selection.peers, settings,
+            tri::describe_machine(tri::ch10::external_peer_status(selection.peers)), std::cout);
         const tri::ch10::CoverageReport coverage{
             tri::ch10::run_coverage_benchmark(selection.area_algorithms, selection.coverage_peers,
                                               settings, std::cout),

@@ -9,19 +9,6 @@
 
 namespace tri::ch10 {
 
-PreparedScene prepare_scene(const SuiteScene& suite, std::size_t error_triangle_limit) {
-  PreparedScene prepared{suite, generate_scene(suite.recipe), {}, {}};
-  prepared.triangles = scene_triangles(prepared.scene);
-  prepared.error_scene = prepared.scene;
-  if (error_triangle_limit != 0 && prepared.triangles.size() > error_triangle_limit) {
-    prepared.error_scene.primitives.clear();
-    for (std::size_t i = 0; i < error_triangle_limit; ++i) {
-      prepared.error_scene.primitives.emplace_back(prepared.triangles[i]);
-    }
-  }
-  return prepared;
-}
-
 FillCeilings measure_fill_ceilings(int width, int height, int threads, const TimingPlan& plan) {
   Canvas canvas(width, height);
   FillCeilings ceilings;
@@ -112,17 +99,6 @@ Measurement measure(const TriangleAlgorithm& algorithm, const PreparedScene& pre
                     const TimingPlan& plan, const FillCeilings& ceilings) {
   const Timing timing = time_algorithms(std::span(&algorithm, 1), prepared, plan).front();
   return measure(algorithm, prepared, timing, ceilings);
-}
-
-PeerResult peer_result(const Timing& timing, const CountingDraw& draw,
-                       const PreparedScene& prepared) {
-  PeerResult result;
-  result.timing = timing;
-  const WriteCounts drawn = draw(prepared.scene.width, prepared.scene.height, prepared.triangles);
-  result.written_pixels =
-      std::accumulate(drawn.counts.begin(), drawn.counts.end(), std::uint64_t{0});
-  result.error = measure_error(draw, prepared.error_scene);
-  return result;
 }
 
 Measurement measure(const ExternalPeer& peer, const PreparedScene& prepared, const TimingPlan& plan,

@@ -12,27 +12,16 @@
 #include <string_view>
 #include <vector>
 
-#include "chapters/10_speed_vs_error/machine.hpp"
 #include "chapters/10_speed_vs_error/suites.hpp"
 #include "common/scene.hpp"
 #include "common/triangle_algorithm.hpp"
 #include "measure/error_metrics.hpp"
 #include "measure/fill_ceiling.hpp"
+#include "measure/machine.hpp"
+#include "measure/peers/peer.hpp"
 #include "measure/timing.hpp"
 
 namespace tri::ch10 {
-
-/// A suite scene made ready once, so no timed run allocates or copies it.
-struct PreparedScene {
-  SuiteScene suite;
-  Scene scene;
-  std::vector<SceneTriangle> triangles;  ///< the scene's triangles, as draw_triangles takes them
-  Scene error_scene;  ///< what the error is measured on: the scene, or its first triangles
-};
-
-/// Generates the scene and its triangle list; the error scene keeps the first
-/// error_triangle_limit triangles (all of them for 0).
-PreparedScene prepare_scene(const SuiteScene& suite, std::size_t error_triangle_limit);
 
 /// The write ceilings of one canvas size (measure/fill_ceiling.hpp), measured in the same run as
 /// the algorithms: the faster of memset and vector stores, in one thread and in `threads`.
@@ -113,32 +102,6 @@ Measurement measure(const TriangleAlgorithm& algorithm, const PreparedScene& pre
 /// Times one algorithm alone (time_algorithms of one) and measures it.
 Measurement measure(const TriangleAlgorithm& algorithm, const PreparedScene& prepared,
                     const TimingPlan& plan, const FillCeilings& ceilings);
-
-/// What an external rasterizer measured on one prepared scene: plain numbers, so they can come
-/// back from a child process.
-struct PeerResult {
-  Timing timing;                     ///< seconds per draw of the whole scene
-  std::uint64_t written_pixels = 0;  ///< pixel writes of one draw of the scene
-  ErrorReport error;                 ///< against the oracle, on the error scene
-};
-
-/// An external peer's result from its timing: the pixel writes of one draw of the scene by `draw`
-/// and its error (measure_error with `draw`) on the error scene.
-PeerResult peer_result(const Timing& timing, const CountingDraw& draw,
-                       const PreparedScene& prepared);
-
-/// A rasterizer that is not one of the book's (Mesa's llvmpipe), measured beside them.
-struct ExternalPeer {
-  std::string name;     ///< its row in the report, e.g. "mesa_llvmpipe_1_thread"
-  std::string chapter;  ///< where the report files it: "external"
-  std::string rule;     ///< what it is expected to follow
-  bool threaded = false;
-  /// Times it on the prepared scene (as measure does an algorithm) and measures its error.
-  std::function<PeerResult(const PreparedScene&, const TimingPlan&)> measure;
-  /// Times one draw of the prepared scene and nothing else (no counts, no error), in this
-  /// process: the scaling sweeps call it in a child process of their own.
-  std::function<Timing(const PreparedScene&, const TimingPlan&)> time;
-};
 
 /// One external peer on one prepared scene, as a row like any algorithm's.
 Measurement measure(const ExternalPeer& peer, const PreparedScene& prepared, const TimingPlan& plan,

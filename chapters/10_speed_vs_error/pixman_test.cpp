@@ -52,12 +52,12 @@ TEST_CASE("pixman refuses a scene beyond its 16.16 fixed-point range, naming the
 TEST_CASE("pixman's row in the report: timed, and exact on the tiny suite",
           "[10_speed_vs_error][step7][pixman]") {
   const auto settings = tri::ch10::bench_settings(tri::ch10::SuiteSize::tiny);
-  const tri::ch10::ExternalPeer peer = tri::ch10::pixman_peer();
+  const tri::ExternalPeer peer = tri::ch10::pixman_peer();
   CHECK(peer.name == "pixman_a1");
   CHECK(peer.rule == "top-left");
   for (const auto& suite : settings.scenes) {
-    const auto prepared = tri::ch10::prepare_scene(suite, settings.error_triangle_limit);
-    const tri::ch10::PeerResult result = peer.measure(prepared, settings.timing);
+    const auto prepared = tri::prepare_scene(suite, settings.error_triangle_limit);
+    const tri::PeerResult result = peer.measure(prepared, settings.timing);
     CAPTURE(suite.name, suite.grid);
     CHECK(result.timing.seconds.median > 0);
     CHECK(result.written_pixels == result.error.covered);
@@ -73,7 +73,7 @@ TEST_CASE(
   std::uint64_t missed = 0, extra = 0;
   std::vector<std::string> scenes;
   for (const auto& suite : tri::ch10::bench_settings(tri::ch10::SuiteSize::quick).scenes) {
-    const auto prepared = tri::ch10::prepare_scene(suite, 0);
+    const auto prepared = tri::prepare_scene(suite, 0);
     const Differences d =
         differences_from_oracle(tri::ch10::pixman_write_counts, prepared.scene.width,
                                 prepared.scene.height, prepared.triangles);

@@ -71,7 +71,7 @@ std::vector<tri::ch09::AreaAlgorithm> chosen_area_algorithms() {
 struct TinyRun {
   tri::ch10::BenchSettings settings = tri::ch10::bench_settings(tri::ch10::SuiteSize::tiny);
   std::ostringstream progress;
-  std::vector<tri::ch10::ExternalPeer> peers = tri::ch10::external_peers();
+  std::vector<tri::ExternalPeer> peers = tri::ch10::external_peers();
   BenchReport report;
   tri::ch10::CoverageReport coverage;
   std::ostringstream scaling_progress;  // the sweeps' own lines, apart from the two parts'
@@ -79,7 +79,8 @@ struct TinyRun {
   tri::ch10::ReportFiles files;
   TinyRun() {
     report = tri::ch10::run_benchmark(chosen_algorithms(), peers, settings,
-                                      tri::ch10::describe_machine(peers), progress);
+                                      tri::describe_machine(tri::ch10::external_peer_status(peers)),
+                                      progress);
     coverage.rows =
         tri::ch10::run_coverage_benchmark(chosen_area_algorithms(), {}, settings, progress);
     coverage.peer_status = "none measured";
@@ -99,7 +100,7 @@ const TinyRun& tiny_run() {
 // Every row name of the tiny run, in the report's order: the algorithms, then this build's peers.
 std::vector<std::string> measured_names() {
   std::vector<std::string> names = tiny_algorithms;
-  for (const tri::ch10::ExternalPeer& peer : tiny_run().peers) names.push_back(peer.name);
+  for (const tri::ExternalPeer& peer : tiny_run().peers) names.push_back(peer.name);
   return names;
 }
 
@@ -169,7 +170,7 @@ TEST_CASE("The error numbers are measure_error's on the same scene",
   for (const Measurement& m : tiny_run().report.rows) {
     const auto suite = std::find_if(
         tiny_run().settings.scenes.begin(), tiny_run().settings.scenes.end(),
-        [&](const tri::ch10::SuiteScene& s) { return s.name == m.scene && s.grid == m.grid; });
+        [&](const tri::SuiteScene& s) { return s.name == m.scene && s.grid == m.grid; });
     REQUIRE(suite != tiny_run().settings.scenes.end());
     const tri::Scene scene = tri::generate_scene(suite->recipe);
     CAPTURE(m.algorithm, m.scene, m.grid);
@@ -380,7 +381,7 @@ TEST_CASE("A threaded algorithm is held to the faster ceiling, any other to one 
   CHECK(ceilings.single_thread_mpix_per_s() == 100.0);
   CHECK(ceilings.threaded_mpix_per_s() == 300.0);
   CHECK(tri::ch10::FillCeilings{{50.0, 100.0}, {40.0, 30.0}, 2}.threaded_mpix_per_s() == 100.0);
-  const auto prepared = tri::ch10::prepare_scene(tiny_run().settings.scenes.front(), 0);
+  const auto prepared = tri::prepare_scene(tiny_run().settings.scenes.front(), 0);
   const auto plan = tiny_run().settings.timing;
   CHECK(tri::ch10::measure(threaded, prepared, plan, ceilings).fill_ceiling_mpix_per_s == 300.0);
   CHECK(tri::ch10::measure(chosen_algorithms().front(), prepared, plan, ceilings)
@@ -389,9 +390,9 @@ TEST_CASE("A threaded algorithm is held to the faster ceiling, any other to one 
 
 TEST_CASE("The error scene keeps the first triangles when the error is measured on a subset",
           "[10_speed_vs_error][step4][report]") {
-  const tri::ch10::SuiteScene& suite = tiny_run().settings.scenes.front();
-  const auto whole = tri::ch10::prepare_scene(suite, 0);
-  const auto part = tri::ch10::prepare_scene(suite, 5);
+  const tri::SuiteScene& suite = tiny_run().settings.scenes.front();
+  const auto whole = tri::prepare_scene(suite, 0);
+  const auto part = tri::prepare_scene(suite, 5);
   REQUIRE(whole.triangles.size() > 5);
   CHECK(part.triangles.size() == whole.triangles.size());  // the timed scene is never cut
   const auto kept = tri::scene_triangles(part.error_scene);
@@ -514,7 +515,7 @@ TEST_CASE("The coverage plot's legend starts right of the labels of the points a
 
 TEST_CASE("Every line of the coverage CSV has as many fields as its header, peers included",
           "[10_speed_vs_error][coverage]") {
-  for (const tri::ch10::CoveragePeer& peer : tri::ch10::coverage_peers()) {
+  for (const tri::CoveragePeer& peer : tri::ch10::coverage_peers()) {
     INFO(peer.name);
     CHECK(peer.rule.find(',') == std::string::npos);
     CHECK(peer.name.find(',') == std::string::npos);

@@ -15,6 +15,8 @@
 
 using tri::testing::occurrences;
 using namespace tri::ch10;
+using tri::PreparedScene;
+using tri::SuiteScene;
 
 namespace {
 

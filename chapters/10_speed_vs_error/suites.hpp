@@ -8,6 +8,7 @@
 #include <string_view>
 #include <vector>
 
+#include "measure/prepared_scene.hpp"
 #include "measure/scene_generators.hpp"
 #include "measure/timing.hpp"
 
@@ -22,14 +23,6 @@ enum class SuiteSize {
 
 /// "tiny", "quick" or "full".
 std::string_view size_name(SuiteSize size) noexcept;
-
-/// One scene of a suite.
-struct SuiteScene {
-  std::string name;  ///< the scene kind: tiny, medium, large, slivers, mesh, fan, mixed
-  std::string grid;  ///< "integer" (vertices on pixel centres) or "1/256"
-  SceneRecipe recipe;
-  bool mesh = false;  ///< shared edges, so gaps and overdraw mean something
-};
 
 /// The label of a vertex grid: "integer" for 0 bits, "1/256" for 8, "1/2^n" otherwise.
 std::string grid_label(int grid_bits);

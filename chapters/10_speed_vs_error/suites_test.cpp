@@ -8,8 +8,8 @@
 #include "chapters/10_speed_vs_error/suites.hpp"
 #include "measure/render_scene.hpp"
 
+using tri::SuiteScene;
 using tri::ch10::BenchSettings;
-using tri::ch10::SuiteScene;
 using tri::ch10::SuiteSize;
 
 namespace {

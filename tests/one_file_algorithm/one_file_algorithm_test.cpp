@@ -9,9 +9,10 @@
 #include <string>
 #include <vector>
 
-#include "chapters/10_speed_vs_error/machine.hpp"
+#include "chapters/10_speed_vs_error/external_peers.hpp"
 #include "chapters/10_speed_vs_error/measure.hpp"
 #include "chapters/10_speed_vs_error/report.hpp"
+#include "measure/machine.hpp"
 #include "measure/registry.hpp"
 #include "tests/hard_cases/hard_cases.hpp"
 #include "tests/support/scratch_folder.hpp"
@@ -111,8 +112,8 @@ TEST_CASE("An algorithm registered in one file has its row in the report's table
   const std::vector<tri::TriangleAlgorithm> measured{added()};
   const tri::ch10::BenchSettings settings = tri::ch10::bench_settings(tri::ch10::SuiteSize::tiny);
   std::ostringstream progress;
-  const tri::ch10::BenchReport report =
-      tri::ch10::run_benchmark(measured, {}, settings, tri::ch10::describe_machine({}), progress);
+  const tri::ch10::BenchReport report = tri::ch10::run_benchmark(
+      measured, {}, settings, tri::describe_machine(tri::ch10::external_peer_status({})), progress);
   const tri::ch10::ReportFiles files = tri::ch10::render_report(report);
   CHECK(files.markdown.find("| `" + std::string(added().name) + "` | one_file_algorithm") !=
         std::string::npos);

@@ -1,11 +1,10 @@
-#include "chapters/10_speed_vs_error/machine.hpp"
+#include "measure/machine.hpp"
 
 #include <fstream>
 #include <thread>
+#include <utility>
 
-#include "chapters/10_speed_vs_error/external_peers.hpp"
-
-namespace tri::ch10 {
+namespace tri {
 namespace {
 
 std::string trimmed(const std::string& text) {
@@ -38,7 +37,7 @@ std::string cpu_model_from(std::istream& cpuinfo) {
   return "unknown";
 }
 
-Machine describe_machine(std::span<const ExternalPeer> measured_peers) {
+Machine describe_machine(std::string external_peers) {
   Machine machine;
   machine.threads = std::thread::hardware_concurrency();
   std::ifstream cpuinfo("/proc/cpuinfo");
@@ -46,8 +45,8 @@ Machine describe_machine(std::span<const ExternalPeer> measured_peers) {
   machine.compiler = compiler_name();
   machine.build_type = TUTORIAL_BUILD_TYPE;
   if (machine.build_type.empty()) machine.build_type = "none given (CMAKE_BUILD_TYPE empty)";
-  machine.external_peers = external_peer_status(measured_peers);
+  machine.external_peers = std::move(external_peers);
   return machine;
 }
 
-}  // namespace tri::ch10
+}  // namespace tri

@@ -3,12 +3,9 @@
 #pragma once
 
 #include <istream>
-#include <span>
 #include <string>
 
-namespace tri::ch10 {
-
-struct ExternalPeer;
+namespace tri {
 
 /// The machine and build a report was measured with.
 struct Machine {
@@ -22,7 +19,8 @@ struct Machine {
 /// The value of the first "model name" line of a /proc/cpuinfo text, or "unknown".
 std::string cpu_model_from(std::istream& cpuinfo);
 
-/// Describes this machine and this build, and the external peers a run measures.
-Machine describe_machine(std::span<const ExternalPeer> measured_peers);
+/// Describes this machine and this build; `external_peers` is the line on the peers a run
+/// measures (the report's external_peer_status).
+Machine describe_machine(std::string external_peers);
 
-}  // namespace tri::ch10
+}  // namespace tri
