@@ -1,4 +1,5 @@
-// Chapter 08's figures: which edges each pixel passes (the one-branch test), the spans of a
+// Chapter 08's figures: one edge's value at each pixel (the incremental walk), which edges each
+// pixel passes (the one-branch test), a row's eight lanes (the SIMD test), the spans of a
 // sliver against its bounding box, a triangle's 8x8 blocks by class, which path the hybrid takes
 // per triangle (and close up, which pixels each path tests), the bands the threads share out, the
 // bytes of each pixel format, the tiles a scene is binned into and eight triangles' lanes.
@@ -531,15 +532,14 @@ std::string setup_lanes_figure() {
 int main(int argc, char** argv) {
   return tri::run_chapter_program(
       argc, argv, "08_fast_exact",
-      "Chapter 08, fast and still exact: one edge's value pixel by pixel "
-      "(08_incremental_values.svg),\n"
-      "which edges each pixel passes (08_edge_signs.svg), a row's eight lanes (08_simd_lanes.svg), "
-      "the\n"
-      "spans of a sliver in its bounding box (08_sliver_spans.svg), a triangle's 8x8 blocks by\n"
-      "class (08_blocks.svg), the path the hybrid takes per triangle (08_hybrid_paths.svg, close\n"
-      "up in 08_hybrid_paths_zoom.svg), the bands two threads share (08_bands.svg), the bytes of\n"
-      "each pixel format (08_bytes_per_pixel.svg), a scene binned into tiles (08_tiles.svg) and\n"
-      "eight triangles set up in lanes (08_setup_lanes.svg).",
+      "Chapter 08, fast and still exact: one edge's value pixel by pixel\n"
+      "(08_incremental_values.svg), which edges each pixel passes (08_edge_signs.svg), the spans\n"
+      "of a sliver in its bounding box (08_sliver_spans.svg), a triangle's 8x8 blocks by class\n"
+      "(08_blocks.svg), a row's eight lanes (08_simd_lanes.svg), the path the hybrid takes per\n"
+      "triangle (08_hybrid_paths.svg, close up in 08_hybrid_paths_zoom.svg), the bands two\n"
+      "threads share (08_bands.svg), the bytes of each pixel format (08_bytes_per_pixel.svg), a\n"
+      "scene binned into tiles (08_tiles.svg) and eight triangles set up in lanes\n"
+      "(08_setup_lanes.svg).",
       [](tri::FigureWriter& figures) {
         figures.save_svg("08_incremental_values", incremental_values_figure());
         figures.save_svg("08_edge_signs", edge_signs_figure());
