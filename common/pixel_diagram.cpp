@@ -36,13 +36,7 @@ std::string unit(double value) {
 }
 
 std::string hex(Color c) {
-  constexpr char digits[] = "0123456789abcdef";
-  std::string out = "#";
-  for (const int channel : {c.r, c.g, c.b}) {
-    out += digits[channel / 16];
-    out += digits[channel % 16];
-  }
-  return out;
+  return std::string(hex_color(c));
 }
 
 double text_width(const std::string& text, double size = 12) {

@@ -12,6 +12,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <glm/vec2.hpp>
@@ -39,6 +40,28 @@ inline constexpr Color covered{160, 160, 160, 255};
 inline constexpr Color light_gray{220, 220, 220, 255};
 inline constexpr Color dark_gray{90, 90, 90, 255};
 }  // namespace diagram_colors
+
+/// A colour as SVG writes it, "#rrggbb", made at compile time, so that plots written as SVG text
+/// take their colours from the palette above instead of a copy of it.
+struct HexColor {
+  std::array<char, 8> text{};  ///< "#rrggbb" and a terminating zero
+
+  constexpr operator const char*() const noexcept { return text.data(); }
+  constexpr operator std::string_view() const noexcept { return {text.data(), 7}; }
+};
+
+/// `color` as "#rrggbb" (its alpha is not written).
+constexpr HexColor hex_color(Color color) noexcept {
+  constexpr char digits[] = "0123456789abcdef";
+  HexColor out;
+  out.text[0] = '#';
+  const int channels[3] = {color.x, color.y, color.z};  // r, g, b: glm's constexpr names
+  for (int i = 0; i < 3; ++i) {
+    out.text[static_cast<std::size_t>(1 + 2 * i)] = digits[channels[i] / 16];
+    out.text[static_cast<std::size_t>(2 + 2 * i)] = digits[channels[i] % 16];
+  }
+  return out;
+}
 
 /// A symbol drawn on one pixel to point the reader at it.
 enum class PixelMark {

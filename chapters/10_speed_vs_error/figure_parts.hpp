@@ -8,14 +8,17 @@
 #include <string>
 #include <string_view>
 
+#include "common/pixel_diagram.hpp"
+
 namespace tri::ch10::figure_parts {
 
-inline constexpr const char* blue = "#0072b2";
-inline constexpr const char* sky_blue = "#56b4e9";
-inline constexpr const char* orange = "#e69f00";
-inline constexpr const char* vermillion = "#d55e00";
-inline constexpr const char* bluish_green = "#009e73";
-inline constexpr const char* grey = "#a0a0a0";
+// The diagrams' palette (common/pixel_diagram.hpp), as SVG text.
+inline constexpr HexColor blue = hex_color(diagram_colors::blue);
+inline constexpr HexColor sky_blue = hex_color(diagram_colors::sky_blue);
+inline constexpr HexColor orange = hex_color(diagram_colors::orange);
+inline constexpr HexColor vermillion = hex_color(diagram_colors::vermillion);
+inline constexpr HexColor bluish_green = hex_color(diagram_colors::bluish_green);
+inline constexpr HexColor grey = hex_color(diagram_colors::covered);
 
 /// `value` with exactly `decimals` decimals ("1.00"), the same on every machine and locale.
 std::string fixed(double value, int decimals);

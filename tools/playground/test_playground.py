@@ -17,6 +17,7 @@ import json
 import subprocess
 import sys
 import tempfile
+import time
 from pathlib import Path
 
 HERE = Path(__file__).resolve().parent
@@ -180,6 +181,29 @@ def compare_with_raster(page, raster, work, label):
     return chapters
 
 
+def poll(read, done, seconds=5.0, interval=0.1):
+    """read() until done(value) or `seconds` pass; the last value either way."""
+    end = time.monotonic() + seconds
+    value = read()
+    while not done(value) and time.monotonic() < end:
+        time.sleep(interval)
+        value = read()
+    return value
+
+
+def stable_handle_position(page):
+    """Vertex A's handle once two reads in a row agree: the page's layout has settled."""
+    previous = page.js("window.playground.handlePosition(0)")
+    end = time.monotonic() + 5.0
+    while time.monotonic() < end:
+        time.sleep(0.2)
+        current = page.js("window.playground.handlePosition(0)")
+        if current == previous:
+            return current
+        previous = current
+    return previous
+
+
 def run_checks(page, raster, work):
     check(page.js("window.playground.ready") is True,
           "the playground's module is not built (the page says so); build with emscripten")
@@ -188,11 +212,15 @@ def run_checks(page, raster, work):
     check(page.filled_pixels() > 0, "the grids show no filled pixel")
     first = state["points"][0]
 
-    # Drag vertex A three cells right and two up: it lands on a pixel centre.
-    handle = page.js("window.playground.handlePosition(0)")
+    # Drag vertex A three cells right and two up: it lands on a pixel centre. The handle is read
+    # once the layout has settled (a busy machine may still be placing the page when it is ready),
+    # and the state once the page has taken the drag.
+    handle = stable_handle_position(page)
     cell = handle["cell"]
     page.drag((handle["x"], handle["y"]), (handle["x"] + 3 * cell + 2, handle["y"] - 2 * cell - 1))
-    moved = page.state()["points"][0]
+    target = (first["x"] + 3, first["y"] + 2)
+    moved = poll(lambda: page.state()["points"][0],
+                 lambda point: (point["x"], point["y"]) == target)
     check((moved["x"], moved["y"]) == (first["x"] + 3, first["y"] + 2),
           f"dragging A by (+3, +2) cells left it at ({moved['x']}, {moved['y']})")
     print(f"  dragged A from ({first['x']}, {first['y']}) to ({moved['x']}, {moved['y']})")
