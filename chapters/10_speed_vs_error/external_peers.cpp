@@ -30,7 +30,7 @@ std::string external_peer_status(std::span<const ExternalPeer> measured) {
 
 std::string peer_versions() {
   std::string versions;
-  const auto add = [&versions](const std::string& version) {
+  [[maybe_unused]] const auto add = [&versions](const std::string& version) {  // no peer: unused
     versions += (versions.empty() ? "" : ", ") + version;
   };
 #if TUTORIAL_WITH_OSMESA
