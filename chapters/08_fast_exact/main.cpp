@@ -54,12 +54,17 @@ void edges(PixelDiagram& d, const Triangle& t, double width) {
   for (std::size_t k = 0; k < 3; ++k) d.line(t[k], t[(k + 1) % 3], dc::black, width);
 }
 
-// The triangle's ideal edges and its three labelled vertices (A, B, C counter-clockwise).
-void draw_triangle(PixelDiagram& d, const Triangle& t, std::array<LabelPlace, 3> places) {
-  d.triangle(t[0], t[1], t[2], dc::black);
+// The triangle's three vertices labelled A, B, C (counter-clockwise).
+void label_vertices(PixelDiagram& d, const Triangle& t, std::array<LabelPlace, 3> places) {
   d.vertex(t[0], "A", places[0]);
   d.vertex(t[1], "B", places[1]);
   d.vertex(t[2], "C", places[2]);
+}
+
+// The triangle's ideal edges and its three labelled vertices.
+void draw_triangle(PixelDiagram& d, const Triangle& t, std::array<LabelPlace, 3> places) {
+  d.triangle(t[0], t[1], t[2], dc::black);
+  label_vertices(d, t, places);
 }
 
 // A triangle of random vertices within `extent` of `centre` on each axis.
@@ -95,9 +100,7 @@ std::string incremental_values_figure() {
   d.line(t[0], t[1], dc::vermillion, 3);
   d.line(t[1], t[2], dc::black, 1.5);
   d.line(t[2], t[0], dc::black, 1.5);
-  d.vertex(t[0], "A", LabelPlace::below_right);
-  d.vertex(t[1], "B", LabelPlace::below_left);
-  d.vertex(t[2], "C", LabelPlace::above_right);
+  label_vertices(d, t, {LabelPlace::below_right, LabelPlace::below_left, LabelPlace::above_right});
   d.legend_fill("covered: all three edge values >= 0", light_green);
   d.legend_fill("AB's value >= 0, another edge's < 0", light_blue);
   d.legend_fill("AB's value < 0: outside edge AB", light_vermillion);
@@ -138,9 +141,7 @@ std::string edge_signs_figure() {
   d.line(t[0], t[1], dc::vermillion);
   d.line(t[1], t[2], dc::blue);
   d.line(t[2], t[0], dc::purple);
-  d.vertex(t[0], "A", LabelPlace::below_right);
-  d.vertex(t[1], "B", LabelPlace::below_left);
-  d.vertex(t[2], "C", LabelPlace::above_right);
+  label_vertices(d, t, {LabelPlace::below_right, LabelPlace::below_left, LabelPlace::above_right});
   d.legend_fill("passes all three: drawn", light_green);
   d.legend_fill("fails AB only", light_vermillion);
   d.legend_fill("fails BC only", light_blue);
