@@ -8,8 +8,6 @@
 #include <utility>
 #include <vector>
 
-#include "chapters/10_speed_vs_error/coverage_peers.hpp"
-#include "chapters/10_speed_vs_error/external_peers.hpp"
 #include "chapters/10_speed_vs_error/measure.hpp"
 #include "chapters/10_speed_vs_error/report.hpp"
 #include "chapters/10_speed_vs_error/scaling.hpp"
@@ -18,6 +16,8 @@
 #include "common/cli.hpp"
 #include "common/output_files.hpp"
 #include "common/printable_text.hpp"
+#include "measure/peers/coverage_peers.hpp"
+#include "measure/peers/external_peers.hpp"
 #include "measure/registry.hpp"
 
 namespace {
@@ -33,8 +33,8 @@ struct Selection {
 
 // The algorithms and peers named in a comma-separated list (all of them without --only).
 Selection selected(const std::optional<std::string>& names) {
-  Selection all{tri::registered_algorithms(), tri::ch10::external_peers(),
-                tri::registered_area_algorithms(), tri::ch10::coverage_peers()};
+  Selection all{tri::registered_algorithms(), tri::external_peers(),
+                tri::registered_area_algorithms(), tri::coverage_peers()};
   if (!names) return all;
   std::vector<std::string> valid;
   for (const auto& a : all.algorithms) valid.emplace_back(a.name);
@@ -47,7 +47,7 @@ Selection selected(const std::optional<std::string>& names) {
   } catch (const tri::UsageError& e) {
     if (!all.peers.empty()) throw;
     throw tri::UsageError(std::string(e.what()) +
-                          "; external peers: " + tri::ch10::external_peer_status({}));
+                          "; external peers: " + tri::external_peer_status({}));
   }
   Selection chosen;
   for (const std::string& name : chosen_names) {
@@ -138,11 +138,11 @@ int main(int argc, char** argv) {
                   << " setting\n";
         const tri::ch10::BenchReport report = tri::ch10::run_benchmark(
             selection.algorithms, selection.peers, settings,
-            tri::describe_machine(tri::ch10::external_peer_status(selection.peers)), std::cout);
+            tri::describe_machine(tri::external_peer_status(selection.peers)), std::cout);
         const tri::ch10::CoverageReport coverage{
             tri::ch10::run_coverage_benchmark(selection.area_algorithms, selection.coverage_peers,
                                               settings, std::cout),
-            tri::ch10::coverage_peer_status(selection.coverage_peers)};
+            tri::coverage_peer_status(selection.coverage_peers)};
         // How cost grows: the sweeps follow chapter 08's fastest and the peers when selected,
         // and skip when --scene or --grid narrowed the run to some scenes.
         std::vector<tri::ch10::ScalingPoint> scaling;
@@ -153,7 +153,7 @@ int main(int argc, char** argv) {
         tri::ch10::save_report(folder, report, coverage, scaling, std::cout);
         if (snapshot) {
           const tri::ch10::SnapshotHeader header{args.value_or("commit", "unknown"),
-                                                 tri::ch10::utc_date(), tri::ch10::peer_versions(),
+                                                 tri::ch10::utc_date(), tri::peer_versions(),
                                                  args.value_or("note", "")};
           tri::write_file_safely(
               *snapshot, tri::bytes_of_text(tri::ch10::snapshot_text(report, coverage, header)));

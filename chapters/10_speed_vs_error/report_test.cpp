@@ -12,9 +12,9 @@
 
 #include <catch2/catch.hpp>
 
-#include "chapters/10_speed_vs_error/coverage_peers.hpp"
+#include "measure/peers/coverage_peers.hpp"
 #include "chapters/10_speed_vs_error/coverage_report.hpp"
-#include "chapters/10_speed_vs_error/external_peers.hpp"
+#include "measure/peers/external_peers.hpp"
 #include "chapters/10_speed_vs_error/plot_svg.hpp"
 #include "chapters/10_speed_vs_error/report.hpp"
 #include "chapters/10_speed_vs_error/report_csv.hpp"
@@ -71,7 +71,7 @@ std::vector<tri::ch09::AreaAlgorithm> chosen_area_algorithms() {
 struct TinyRun {
   tri::ch10::BenchSettings settings = tri::ch10::bench_settings(tri::ch10::SuiteSize::tiny);
   std::ostringstream progress;
-  std::vector<tri::ExternalPeer> peers = tri::ch10::external_peers();
+  std::vector<tri::ExternalPeer> peers = tri::external_peers();
   BenchReport report;
   tri::ch10::CoverageReport coverage;
   std::ostringstream scaling_progress;  // the sweeps' own lines, apart from the two parts'
@@ -79,7 +79,7 @@ struct TinyRun {
   tri::ch10::ReportFiles files;
   TinyRun() {
     report = tri::ch10::run_benchmark(chosen_algorithms(), peers, settings,
-                                      tri::describe_machine(tri::ch10::external_peer_status(peers)),
+                                      tri::describe_machine(tri::external_peer_status(peers)),
                                       progress);
     coverage.rows =
         tri::ch10::run_coverage_benchmark(chosen_area_algorithms(), {}, settings, progress);
@@ -515,7 +515,7 @@ TEST_CASE("The coverage plot's legend starts right of the labels of the points a
 
 TEST_CASE("Every line of the coverage CSV has as many fields as its header, peers included",
           "[10_speed_vs_error][coverage]") {
-  for (const tri::CoveragePeer& peer : tri::ch10::coverage_peers()) {
+  for (const tri::CoveragePeer& peer : tri::coverage_peers()) {
     INFO(peer.name);
     CHECK(peer.rule.find(',') == std::string::npos);
     CHECK(peer.name.find(',') == std::string::npos);

@@ -7,9 +7,9 @@
 
 #include <catch2/catch.hpp>
 
-#include "chapters/10_speed_vs_error/external_peers.hpp"
 #include "chapters/10_speed_vs_error/scaling.hpp"
 #include "chapters/10_speed_vs_error/scaling_report.hpp"
+#include "measure/peers/external_peers.hpp"
 #include "measure/registry.hpp"
 #include "tests/support/text.hpp"
 
@@ -184,7 +184,7 @@ TEST_CASE("A drawer is not timed where its frame would take longer than the budg
 TEST_CASE("The sweeps follow fast_hybrid, the write ceiling and the peers that can be timed alone",
           "[10_speed_vs_error][scaling]") {
   const auto algorithms = tri::registered_algorithms();
-  const auto peers = external_peers();
+  const auto peers = tri::external_peers();
   const std::vector<ScalingDrawer> drawers = scaling_drawers(algorithms, peers);
   REQUIRE(drawers.size() == 2 + peers.size());
   CHECK(drawers[0].name == "fast_hybrid");
@@ -198,7 +198,7 @@ TEST_CASE("The sweeps follow fast_hybrid, the write ceiling and the peers that c
 
 TEST_CASE("Every drawer of this build draws both sweeps' smallest scenes",
           "[10_speed_vs_error][scaling]") {
-  const auto drawers = scaling_drawers(tri::registered_algorithms(), external_peers());
+  const auto drawers = scaling_drawers(tri::registered_algorithms(), tri::external_peers());
   std::ostringstream progress;
   const auto points = run_scaling(drawers, scaling_settings(SuiteSize::tiny), progress);
   for (const ScalingPoint& p : points) {

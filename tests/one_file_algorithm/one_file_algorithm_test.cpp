@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "chapters/10_speed_vs_error/external_peers.hpp"
+#include "measure/peers/external_peers.hpp"
 #include "chapters/10_speed_vs_error/measure.hpp"
 #include "chapters/10_speed_vs_error/report.hpp"
 #include "measure/machine.hpp"
@@ -113,7 +113,7 @@ TEST_CASE("An algorithm registered in one file has its row in the report's table
   const tri::ch10::BenchSettings settings = tri::ch10::bench_settings(tri::ch10::SuiteSize::tiny);
   std::ostringstream progress;
   const tri::ch10::BenchReport report = tri::ch10::run_benchmark(
-      measured, {}, settings, tri::describe_machine(tri::ch10::external_peer_status({})), progress);
+      measured, {}, settings, tri::describe_machine(tri::external_peer_status({})), progress);
   const tri::ch10::ReportFiles files = tri::ch10::render_report(report);
   CHECK(files.markdown.find("| `" + std::string(added().name) + "` | one_file_algorithm") !=
         std::string::npos);

@@ -1,9 +1,9 @@
-#include "chapters/10_speed_vs_error/coverage_peers.hpp"
+#include "measure/peers/coverage_peers.hpp"
 
-#include "chapters/10_speed_vs_error/library_peers.hpp"
-#include "chapters/10_speed_vs_error/peer_builds.hpp"
+#include "measure/peers/library_peers.hpp"
+#include "measure/peers/peer_builds.hpp"
 
-namespace tri::ch10 {
+namespace tri {
 
 std::vector<CoveragePeer> coverage_peers() {
   std::vector<CoveragePeer> peers;
@@ -25,4 +25,4 @@ std::string coverage_peer_status(std::span<const CoveragePeer> measured) {
          library_status("pixman_a8", pixman_not_built, "pixman_a8", measured);
 }
 
-}  // namespace tri::ch10
+}  // namespace tri

@@ -1,4 +1,4 @@
-#include "chapters/10_speed_vs_error/external_peers.hpp"
+#include "measure/peers/external_peers.hpp"
 
 #include <catch2/catch.hpp>
 #include <iterator>
@@ -9,8 +9,8 @@
 #include "measure/registry.hpp"
 
 TEST_CASE("External peers have their own names, filed under 'external'",
-          "[10_speed_vs_error][external_peers]") {
-  const auto peers = tri::ch10::external_peers();
+          "[peers][external_peers]") {
+  const auto peers = tri::external_peers();
   const auto algorithms = tri::registered_algorithms();
   std::set<std::string> names;
   for (const tri::ExternalPeer& peer : peers) {
@@ -23,10 +23,10 @@ TEST_CASE("External peers have their own names, filed under 'external'",
 }
 
 TEST_CASE("The Machine line says which peers were measured, or why each was not",
-          "[10_speed_vs_error][external_peers]") {
-  const auto peers = tri::ch10::external_peers();
-  const std::string all = tri::ch10::external_peer_status(peers);
-  const std::string none = tri::ch10::external_peer_status({});
+          "[peers][external_peers]") {
+  const auto peers = tri::external_peers();
+  const std::string all = tri::external_peer_status(peers);
+  const std::string none = tri::external_peer_status({});
   CAPTURE(all, none);
   const auto says = [](const std::string& line, const std::string& what) {
     return line.find(what) != std::string::npos;
@@ -52,8 +52,8 @@ TEST_CASE("The Machine line says which peers were measured, or why each was not"
 }
 
 TEST_CASE("The snapshot's peers line names the release of each library this build measures",
-          "[10_speed_vs_error][external_peers]") {
-  const std::string versions = tri::ch10::peer_versions();
+          "[peers][external_peers]") {
+  const std::string versions = tri::peer_versions();
   CAPTURE(versions);
   const std::regex release_of(R"((Mesa|pixman|cairo) \d+\.\d+\.\d+)");
   const std::size_t built =

@@ -5,17 +5,17 @@
 #include <numeric>
 #include <vector>
 
-#include "chapters/10_speed_vs_error/llvmpipe_canvas.hpp"
-#include "chapters/10_speed_vs_error/llvmpipe_peer.hpp"
-#include "chapters/10_speed_vs_error/peer_test_support.hpp"
 #include "measure/child_process.hpp"
 #include "measure/error_metrics.hpp"
+#include "measure/peers/llvmpipe_canvas.hpp"
+#include "measure/peers/llvmpipe_peer.hpp"
 #include "measure/registry.hpp"
 #include "measure/render_scene.hpp"
 #include "measure/scene_generators.hpp"
+#include "tests/peers/peer_test_support.hpp"
 
-using tri::ch10::LlvmpipeCanvas;
-using tri::ch10::test::oracle_counts;
+using tri::LlvmpipeCanvas;
+using tri::peers_test::oracle_counts;
 
 // Mesa is only ever touched in child processes here, as in the benchmark: a process that has
 // started llvmpipe's threads cannot fork a child that uses Mesa again (its locks are copied held).
@@ -26,7 +26,7 @@ std::vector<std::uint32_t> llvmpipe_counts_in_child(
     int width, int height, std::span<const tri::SceneTriangle> triangles,
     LlvmpipeCanvas::Viewport viewport = LlvmpipeCanvas::Viewport::guard_band) {
   const std::string bytes = tri::run_in_child_process([&] {
-    const auto counts = tri::ch10::llvmpipe_write_counts(width, height, triangles, viewport).counts;
+    const auto counts = tri::llvmpipe_write_counts(width, height, triangles, viewport).counts;
     return std::string(reinterpret_cast<const char*>(counts.data()),
                        counts.size() * sizeof(std::uint32_t));
   });
@@ -56,8 +56,7 @@ std::vector<std::uint32_t> rows_flipped(const std::vector<std::uint32_t>& counts
 
 }  // namespace
 
-TEST_CASE("llvmpipe draws through OSMesa with the canvas's coordinates",
-          "[10_speed_vs_error][step6][llvmpipe]") {
+TEST_CASE("llvmpipe draws through OSMesa with the canvas's coordinates", "[peers][llvmpipe]") {
   const std::string renderer = tri::run_in_child_process(
       [] { return LlvmpipeCanvas(8, 8, LlvmpipeCanvas::Pixels::write_counts).renderer(); });
   CHECK(renderer.starts_with("llvmpipe"));
@@ -78,7 +77,7 @@ TEST_CASE("llvmpipe draws through OSMesa with the canvas's coordinates",
 }
 
 TEST_CASE("llvmpipe's picture has each triangle's colour where it is the only one",
-          "[10_speed_vs_error][step6][llvmpipe]") {
+          "[peers][llvmpipe]") {
   struct Tally {
     std::size_t disagreements = 0, red = 0, blue = 0;
   };
@@ -89,7 +88,7 @@ TEST_CASE("llvmpipe's picture has each triangle's colour where it is the only on
     LlvmpipeCanvas canvas(64, 48, LlvmpipeCanvas::Pixels::rgba8);
     canvas.upload(two);
     canvas.draw();
-    const auto counts = tri::ch10::llvmpipe_write_counts(64, 48, two).counts;
+    const auto counts = tri::llvmpipe_write_counts(64, 48, two).counts;
     Tally t;
     for (int y = 0; y < 48; ++y) {
       for (int x = 0; x < 64; ++x) {
@@ -107,12 +106,12 @@ TEST_CASE("llvmpipe's picture has each triangle's colour where it is the only on
 }
 
 TEST_CASE("llvmpipe is exact with the tie rule mirrored: its pixels are the oracle's upside down",
-          "[10_speed_vs_error][step6][llvmpipe]") {
+          "[peers][llvmpipe]") {
   using Kind = tri::SceneRecipe::Kind;
   std::uint64_t seed = 70;
   for (const Kind kind : {Kind::random, Kind::slivers, Kind::fan, Kind::jittered_grid}) {
     for (const int grid_bits : {0, 4, 8}) {
-      const tri::Scene scene = tri::ch10::test::small_scene(kind, grid_bits, ++seed);
+      const tri::Scene scene = tri::peers_test::small_scene(kind, grid_bits, ++seed);
       const auto triangles = tri::scene_triangles(scene);
       CAPTURE(static_cast<int>(kind), grid_bits);
       const auto drawn = llvmpipe_counts_in_child(scene.width, scene.height, triangles);
@@ -124,8 +123,8 @@ TEST_CASE("llvmpipe is exact with the tie rule mirrored: its pixels are the orac
 }
 
 TEST_CASE("With a viewport of just the buffer, llvmpipe's clipping moves border triangles' pixels",
-          "[10_speed_vs_error][step6][llvmpipe]") {
-  const tri::Scene scene = tri::ch10::test::small_scene(tri::SceneRecipe::Kind::random, 0, 71);
+          "[peers][llvmpipe]") {
+  const tri::Scene scene = tri::peers_test::small_scene(tri::SceneRecipe::Kind::random, 0, 71);
   const auto triangles = tri::scene_triangles(scene);
   const auto inside_the_canvas = [&](const tri::SceneTriangle& t) {
     return std::all_of(t.vertices.begin(), t.vertices.end(), [&](const auto& v) {
@@ -148,12 +147,11 @@ TEST_CASE("With a viewport of just the buffer, llvmpipe's clipping moves border 
   CHECK(llvmpipe_counts_in_child(scene.width, scene.height, triangles) == truth(triangles));
 }
 
-TEST_CASE("The llvmpipe peer measures in a child what it measures here",
-          "[10_speed_vs_error][step6][llvmpipe]") {
+TEST_CASE("The llvmpipe peer measures in a child what it measures here", "[peers][llvmpipe]") {
   tri::ch10::BenchSettings settings = tri::ch10::bench_settings(tri::ch10::SuiteSize::tiny);
   const tri::PreparedScene prepared = tri::prepare_scene(settings.scenes.front(), 0);
   const auto here = tri::run_in_child<tri::PeerResult>(
-      [&] { return tri::ch10::measure_llvmpipe_here(prepared, settings.timing); });
+      [&] { return tri::measure_llvmpipe_here(prepared, settings.timing); });
   const auto counts =
       llvmpipe_counts_in_child(prepared.scene.width, prepared.scene.height, prepared.triangles);
   CHECK(here.written_pixels == std::accumulate(counts.begin(), counts.end(), std::uint64_t{0}));
@@ -166,7 +164,7 @@ TEST_CASE("The llvmpipe peer measures in a child what it measures here",
   CHECK(here.error.extra == expected.extra);
   CHECK(here.error.covered == expected.covered);
   CHECK(here.timing.seconds.median > 0);
-  for (const tri::ExternalPeer& peer : tri::ch10::llvmpipe_peers()) {
+  for (const tri::ExternalPeer& peer : tri::llvmpipe_peers()) {
     CAPTURE(peer.name);
     const tri::PeerResult there = peer.measure(prepared, settings.timing);
     CHECK(there.written_pixels == here.written_pixels);

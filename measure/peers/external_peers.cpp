@@ -1,12 +1,12 @@
-#include "chapters/10_speed_vs_error/external_peers.hpp"
+#include "measure/peers/external_peers.hpp"
 
 #if TUTORIAL_WITH_OSMESA
-#include "chapters/10_speed_vs_error/llvmpipe_peer.hpp"
+#include "measure/peers/llvmpipe_peer.hpp"
 #endif
-#include "chapters/10_speed_vs_error/library_peers.hpp"
-#include "chapters/10_speed_vs_error/peer_builds.hpp"
+#include "measure/peers/library_peers.hpp"
+#include "measure/peers/peer_builds.hpp"
 
-namespace tri::ch10 {
+namespace tri {
 
 std::vector<ExternalPeer> external_peers() {
   std::vector<ExternalPeer> peers;
@@ -45,4 +45,4 @@ std::string peer_versions() {
   return versions.empty() ? "none" : versions;
 }
 
-}  // namespace tri::ch10
+}  // namespace tri

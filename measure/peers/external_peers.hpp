@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
-#include "chapters/10_speed_vs_error/measure.hpp"
+#include "measure/peers/peer.hpp"
 
-namespace tri::ch10 {
+namespace tri {
 
 /// Every external peer this build has (empty without OSMesa).
 std::vector<ExternalPeer> external_peers();
@@ -21,4 +21,4 @@ std::string external_peer_status(std::span<const ExternalPeer> measured);
 /// cairo 1.16.0"; "none" when it has none.
 std::string peer_versions();
 
-}  // namespace tri::ch10
+}  // namespace tri

@@ -12,7 +12,7 @@
 #include "common/scene.hpp"
 #include "measure/error_metrics.hpp"
 
-namespace tri::ch10 {
+namespace tri {
 
 /// An OSMesa context current on this thread while the object lives, drawing into a width x height
 /// buffer it owns with the canvas's coordinates (y up, pixel (i, j) sampled at (i, j)).
@@ -61,4 +61,4 @@ WriteCounts llvmpipe_write_counts(
     int width, int height, std::span<const SceneTriangle> triangles,
     LlvmpipeCanvas::Viewport viewport = LlvmpipeCanvas::Viewport::guard_band);
 
-}  // namespace tri::ch10
+}  // namespace tri

@@ -7,7 +7,7 @@
 #include <span>
 #include <string>
 
-namespace tri::ch10 {
+namespace tri {
 
 inline constexpr const char* llvmpipe_not_built = TUTORIAL_LLVMPIPE_SKIPPED_BECAUSE;
 inline constexpr const char* pixman_not_built = TUTORIAL_PIXMAN_SKIPPED_BECAUSE;
@@ -30,4 +30,4 @@ std::string library_status(const std::string& library, const char* not_built,
   return library + (names == library ? ": measured" : ": measured (" + names + ")");
 }
 
-}  // namespace tri::ch10
+}  // namespace tri

@@ -9,11 +9,10 @@
 #include <span>
 #include <string>
 
-#include "chapters/10_speed_vs_error/coverage_measure.hpp"
-#include "chapters/10_speed_vs_error/measure.hpp"
 #include "measure/error_metrics.hpp"
+#include "measure/peers/peer.hpp"
 
-namespace tri::ch10 {
+namespace tri {
 
 /// pixman's 16.16 fixed point holds coordinates up to 32767 in magnitude.
 inline constexpr double pixman_coordinate_limit = 32767.0;
@@ -58,4 +57,4 @@ CoveragePeer cairo_coverage_peer();
 /// saturating at 255).
 CoveragePeer pixman_coverage_peer();
 
-}  // namespace tri::ch10
+}  // namespace tri

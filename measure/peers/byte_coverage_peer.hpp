@@ -12,10 +12,10 @@
 #include <string>
 #include <utility>
 
-#include "chapters/10_speed_vs_error/coverage_measure.hpp"
-#include "chapters/10_speed_vs_error/y_down_peer.hpp"
+#include "measure/peers/peer.hpp"
+#include "measure/peers/y_down_peer.hpp"
 
-namespace tri::ch10 {
+namespace tri {
 
 /// A library's coverage image: built for a width x height canvas, cleared, drawn into one
 /// triangle at a time (its vertices already in the library's y-down space), read as bytes.
@@ -55,7 +55,8 @@ CoveragePeer byte_coverage_peer(std::string name, std::string rule, int samples,
               Image image(width, height);
               result.timing = time_runs(
                   [&] {
-                    for (const SceneTriangle& t : prepared.triangles) image.draw(to_y_down(t, height));
+                    for (const SceneTriangle& t : prepared.triangles)
+                      image.draw(to_y_down(t, height));
                   },
                   plan);
             }
@@ -84,4 +85,4 @@ CoveragePeer byte_coverage_peer(std::string name, std::string rule, int samples,
           }};
 }
 
-}  // namespace tri::ch10
+}  // namespace tri

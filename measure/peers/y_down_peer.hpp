@@ -14,7 +14,7 @@
 #include "common/scene.hpp"
 #include "measure/error_metrics.hpp"
 
-namespace tri::ch10 {
+namespace tri {
 
 // [listing to_y_down]
 /// Our pixel centre (i, j), y up, is the point (i + 1/2, H - 1 - j + 1/2) of a library whose
@@ -68,4 +68,4 @@ WriteCounts count_each_alone(int width, int height, std::span<const SceneTriangl
 void require_within(std::span<const SceneTriangle> triangles, int height, double limit,
                     const std::string& peer);
 
-}  // namespace tri::ch10
+}  // namespace tri

@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
-#include "chapters/10_speed_vs_error/measure.hpp"
+#include "measure/peers/peer.hpp"
 
-namespace tri::ch10 {
+namespace tri {
 
 /// Times llvmpipe drawing the prepared scene in this process (with whatever LP_NUM_THREADS says).
 Timing time_llvmpipe_here(const PreparedScene& prepared, const TimingPlan& plan);
@@ -27,4 +27,4 @@ std::vector<ExternalPeer> llvmpipe_peers();
 /// "Mesa 22.3.6": the Mesa release behind llvmpipe, asked in a child process (see above).
 std::string mesa_version();
 
-}  // namespace tri::ch10
+}  // namespace tri

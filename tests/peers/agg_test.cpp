@@ -3,18 +3,18 @@
 
 #include <cmath>
 
-#include "chapters/10_speed_vs_error/library_peers.hpp"
-#include "chapters/10_speed_vs_error/peer_test_support.hpp"
+#include "measure/peers/library_peers.hpp"
+#include "tests/peers/peer_test_support.hpp"
 
-using namespace tri::ch10::test;
+using namespace tri::peers_test;
 using Kind = tri::SceneRecipe::Kind;
 
 TEST_CASE("AGG's coverage is the exact area to within 3/255, on every pixel of 300 triangles",
-          "[10_speed_vs_error][agg]") {
+          "[peers][agg]") {
   for (const int grid_bits : {0, 8}) {
     INFO("grid 1/2^" << grid_bits);
-    const auto r = measure_coverage_peer(tri::ch10::agg_coverage_peer(),
-                                         small_scene(Kind::random, grid_bits, 61));
+    const auto r =
+        measure_coverage_peer(tri::agg_coverage_peer(), small_scene(Kind::random, grid_bits, 61));
     CHECK(r.error.triangles == 300);
     CHECK(r.error.pixels > 1000);
     // AGG sums areas exactly in 1/256-pixel units, then cuts the area to 8 bits (a shift, so
@@ -27,35 +27,34 @@ TEST_CASE("AGG's coverage is the exact area to within 3/255, on every pixel of 3
   }
 }
 
-TEST_CASE("AGG composites triangles over each other: seams on a mesh", "[10_speed_vs_error][agg]") {
-  const auto r = measure_coverage_peer(tri::ch10::agg_coverage_peer(),
-                                       small_scene(Kind::jittered_grid, 8, 62));
+TEST_CASE("AGG composites triangles over each other: seams on a mesh", "[peers][agg]") {
+  const auto r =
+      measure_coverage_peer(tri::agg_coverage_peer(), small_scene(Kind::jittered_grid, 8, 62));
   CHECK(r.error.max <= 3.0 / 255);    // each triangle alone is still right
   CHECK(r.error.composed_max > 0.2);  // but drawn one over the other, shared edges show
 }
 
 TEST_CASE("AGG refuses a scene beyond its 24.8 fixed-point range, naming the limit",
-          "[10_speed_vs_error][agg]") {
+          "[peers][agg]") {
   tri::Scene scene = small_scene(Kind::random, 8, 63);
   scene.primitives.push_back(tri::SceneTriangle{{{{0, 0}, {1e7, 0}, {0, 5}}}});
-  CHECK_THROWS_WITH(measure_coverage_peer(tri::ch10::agg_coverage_peer(), scene),
+  CHECK_THROWS_WITH(measure_coverage_peer(tri::agg_coverage_peer(), scene),
                     Catch::Contains("AGG cannot draw this scene"));
 }
 
 TEST_CASE(
     "AGG's seam on a fan exceeds the 1/e that compositing alone loses: each thin coverage is "
     "cut to 8 bits first",
-    "[10_speed_vs_error][agg]") {
+    "[peers][agg]") {
   // Exact coverages composited over lose at most 1/e of a pixel they tile (chapter 09, step 5):
   // on a mesh, whose pixels hold a few large parts, AGG stays within that and its 8-bit steps.
   const double bound = std::exp(-1.0);
-  const auto mesh = measure_coverage_peer(tri::ch10::agg_coverage_peer(),
-                                          small_scene(Kind::jittered_grid, 8, 62));
+  const auto mesh =
+      measure_coverage_peer(tri::agg_coverage_peer(), small_scene(Kind::jittered_grid, 8, 62));
   CHECK(mesh.error.composed_max <= bound + 3.0 / 255);
   // At a fan's centre 300 triangles each cover about 1/300 of the pixel: AGG cuts every part to
   // 8 bits (rounding down) and blends it in 8 bits, so the centre keeps much less than 1 - 1/e.
-  const auto fan =
-      measure_coverage_peer(tri::ch10::agg_coverage_peer(), small_scene(Kind::fan, 8, 64));
+  const auto fan = measure_coverage_peer(tri::agg_coverage_peer(), small_scene(Kind::fan, 8, 64));
   CHECK(fan.error.max <= 3.0 / 255);  // each triangle alone is still right
   CHECK(fan.error.composed_max > bound + 0.1);
 }

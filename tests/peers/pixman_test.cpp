@@ -8,19 +8,19 @@
 #include <string>
 #include <vector>
 
-#include "chapters/10_speed_vs_error/library_peers.hpp"
-#include "chapters/10_speed_vs_error/peer_test_support.hpp"
 #include "common/canvas.hpp"
+#include "measure/peers/library_peers.hpp"
+#include "tests/peers/peer_test_support.hpp"
 
-using namespace tri::ch10::test;
+using namespace tri::peers_test;
 using Kind = tri::SceneRecipe::Kind;
 
 TEST_CASE(
     "pixman owns the centres on a shared edge once, like the oracle: the left column and the top "
     "row",
-    "[10_speed_vs_error][step7][pixman]") {
+    "[peers][pixman]") {
   const auto square = split_square();
-  const auto counts = tri::ch10::pixman_write_counts(8, 8, square).counts;
+  const auto counts = tri::pixman_write_counts(8, 8, square).counts;
   REQUIRE(counts.size() == 64);
   CHECK(std::accumulate(counts.begin(), counts.end(), 0u) == 25);
   CHECK(std::count(counts.begin(), counts.end(), 1u) == 25);
@@ -33,26 +33,25 @@ TEST_CASE(
 
 TEST_CASE(
     "pixman's pixels equal the oracle's on integer, 1/4, 1/16 and 1/256-grid scenes, ties included",
-    "[10_speed_vs_error][step7][pixman]") {
+    "[peers][pixman]") {
   for (const auto kind : {Kind::random, Kind::slivers, Kind::fan, Kind::jittered_grid}) {
     for (const int bits : {0, 2, 4, 8}) {
       const auto triangles = tri::scene_triangles(small_scene(kind, bits, 11));
       CAPTURE(static_cast<int>(kind), bits);
-      CHECK(differing_pixels(tri::ch10::pixman_write_counts(64, 48, triangles).counts,
+      CHECK(differing_pixels(tri::pixman_write_counts(64, 48, triangles).counts,
                              oracle_counts(64, 48, triangles).counts) == 0);
     }
   }
 }
 
 TEST_CASE("pixman refuses a scene beyond its 16.16 fixed-point range, naming the limit",
-          "[10_speed_vs_error][step7][pixman]") {
-  check_refuses_far_vertex(tri::ch10::pixman_write_counts, 40000, "pixman", "32767");
+          "[peers][pixman]") {
+  check_refuses_far_vertex(tri::pixman_write_counts, 40000, "pixman", "32767");
 }
 
-TEST_CASE("pixman's row in the report: timed, and exact on the tiny suite",
-          "[10_speed_vs_error][step7][pixman]") {
+TEST_CASE("pixman's row in the report: timed, and exact on the tiny suite", "[peers][pixman]") {
   const auto settings = tri::ch10::bench_settings(tri::ch10::SuiteSize::tiny);
-  const tri::ExternalPeer peer = tri::ch10::pixman_peer();
+  const tri::ExternalPeer peer = tri::pixman_peer();
   CHECK(peer.name == "pixman_a1");
   CHECK(peer.rule == "top-left");
   for (const auto& suite : settings.scenes) {
@@ -68,15 +67,14 @@ TEST_CASE("pixman's row in the report: timed, and exact on the tiny suite",
 TEST_CASE(
     "pixman differs from the oracle on the report's scenes by 3 missed and 3 extra writes on 3 "
     "scenes, each centre within 2^-16 pixel of an edge",
-    "[10_speed_vs_error][step7][pixman]") {
+    "[peers][pixman]") {
   // pixman computes its edges in 16.16 fixed point, so a centre that close lands on either side.
   std::uint64_t missed = 0, extra = 0;
   std::vector<std::string> scenes;
   for (const auto& suite : tri::ch10::bench_settings(tri::ch10::SuiteSize::quick).scenes) {
     const auto prepared = tri::prepare_scene(suite, 0);
-    const Differences d =
-        differences_from_oracle(tri::ch10::pixman_write_counts, prepared.scene.width,
-                                prepared.scene.height, prepared.triangles);
+    const Differences d = differences_from_oracle(tri::pixman_write_counts, prepared.scene.width,
+                                                  prepared.scene.height, prepared.triangles);
     CAPTURE(suite.name, suite.grid);
     for (const double distance : d.edge_distances) CHECK(distance < std::ldexp(1.0, -16));
     missed += d.missed;
@@ -89,9 +87,9 @@ TEST_CASE(
 }
 
 TEST_CASE("pixman's a8 coverage counts a 15 x 17 grid of samples: within 1/15 of the exact area",
-          "[10_speed_vs_error][pixman][coverage]") {
+          "[peers][pixman][coverage]") {
   const auto r =
-      measure_coverage_peer(tri::ch10::pixman_coverage_peer(), small_scene(Kind::random, 8, 71));
+      measure_coverage_peer(tri::pixman_coverage_peer(), small_scene(Kind::random, 8, 71));
   CHECK(r.error.triangles == 300);
   // A straight edge crosses at most one sample row's worth of samples wrongly per row it passes.
   CHECK(r.error.max <= 1.0 / 15 + 1.0 / 255);
@@ -99,10 +97,9 @@ TEST_CASE("pixman's a8 coverage counts a 15 x 17 grid of samples: within 1/15 of
   CHECK(r.error.mean > 0);
 }
 
-TEST_CASE("pixman adds the coverage of an a8 mesh: no seams",
-          "[10_speed_vs_error][pixman][coverage]") {
-  const auto r = measure_coverage_peer(tri::ch10::pixman_coverage_peer(),
-                                       small_scene(Kind::jittered_grid, 8, 72));
+TEST_CASE("pixman adds the coverage of an a8 mesh: no seams", "[peers][pixman][coverage]") {
+  const auto r =
+      measure_coverage_peer(tri::pixman_coverage_peer(), small_scene(Kind::jittered_grid, 8, 72));
   // Each sample belongs to one triangle, so the mesh's inside adds up to 255 exactly.
   CHECK(r.error.composed_max <= r.error.max + 1e-6);
 }

@@ -1,4 +1,4 @@
-#include "chapters/10_speed_vs_error/library_peers.hpp"
+#include "measure/peers/library_peers.hpp"
 
 #include <pixman.h>
 
@@ -10,10 +10,10 @@
 #include <string>
 #include <vector>
 
-#include "chapters/10_speed_vs_error/byte_coverage_peer.hpp"
-#include "chapters/10_speed_vs_error/y_down_peer.hpp"
+#include "measure/peers/byte_coverage_peer.hpp"
+#include "measure/peers/y_down_peer.hpp"
 
-namespace tri::ch10 {
+namespace tri {
 namespace {
 
 // Exact for the suites' grids: 1/256 is a whole number of pixman's 1/65536 steps.
@@ -129,4 +129,4 @@ std::string pixman_version() {
   return std::string("pixman ") + pixman_version_string();
 }
 
-}  // namespace tri::ch10
+}  // namespace tri

@@ -1,13 +1,13 @@
-#include "chapters/10_speed_vs_error/llvmpipe_peer.hpp"
+#include "measure/peers/llvmpipe_peer.hpp"
 
 #include <cstdlib>
 #include <optional>
 #include <string>
 
-#include "chapters/10_speed_vs_error/llvmpipe_canvas.hpp"
 #include "measure/child_process.hpp"
+#include "measure/peers/llvmpipe_canvas.hpp"
 
-namespace tri::ch10 {
+namespace tri {
 
 Timing time_llvmpipe_here(const PreparedScene& prepared, const TimingPlan& plan) {
   // As for the book's algorithms: the buffer and the triangles are ready before the clock.
@@ -71,4 +71,4 @@ std::string mesa_version() {
   return mesa == std::string::npos ? "Mesa (" + version + ")" : version.substr(mesa);
 }
 
-}  // namespace tri::ch10
+}  // namespace tri

@@ -7,10 +7,10 @@
 
 #include <vector>
 
-#include "chapters/10_speed_vs_error/byte_coverage_peer.hpp"
-#include "chapters/10_speed_vs_error/library_peers.hpp"
+#include "measure/peers/byte_coverage_peer.hpp"
+#include "measure/peers/library_peers.hpp"
 
-namespace tri::ch10 {
+namespace tri {
 namespace {
 
 // A gray8 image with AGG's rasterizer and renderer on it; row 0 of the buffer is the top.
@@ -57,4 +57,4 @@ CoveragePeer agg_coverage_peer() {
                                       agg_coordinate_limit);
 }
 
-}  // namespace tri::ch10
+}  // namespace tri

@@ -1,10 +1,10 @@
-#include "chapters/10_speed_vs_error/y_down_peer.hpp"
+#include "measure/peers/y_down_peer.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
-namespace tri::ch10 {
+namespace tri {
 
 PixelWindow pixels_around(const SceneTriangle& triangle, int width, int height) noexcept {
   double x_min = triangle.vertices[0].x, x_max = x_min;
@@ -39,4 +39,4 @@ void require_within(std::span<const SceneTriangle> triangles, int height, double
   }
 }
 
-}  // namespace tri::ch10
+}  // namespace tri

@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
-#include "chapters/10_speed_vs_error/coverage_measure.hpp"
+#include "measure/peers/peer.hpp"
 
-namespace tri::ch10 {
+namespace tri {
 
 /// Every anti-aliasing peer this build has (empty when none of their libraries was found).
 std::vector<CoveragePeer> coverage_peers();
@@ -16,4 +16,4 @@ std::vector<CoveragePeer> coverage_peers();
 /// One line for the report: which anti-aliasing peers were measured, or why not.
 std::string coverage_peer_status(std::span<const CoveragePeer> measured);
 
-}  // namespace tri::ch10
+}  // namespace tri

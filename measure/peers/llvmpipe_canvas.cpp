@@ -1,4 +1,4 @@
-#include "chapters/10_speed_vs_error/llvmpipe_canvas.hpp"
+#include "measure/peers/llvmpipe_canvas.hpp"
 
 #define GL_GLEXT_PROTOTYPES 1  // glGenBuffers and friends, which OSMesa's library exports
 #include <GL/gl.h>
@@ -10,7 +10,7 @@
 #include <cmath>
 #include <stdexcept>
 
-namespace tri::ch10 {
+namespace tri {
 
 struct LlvmpipeCanvas::Context {
   OSMesaContext gl = nullptr;
@@ -161,4 +161,4 @@ WriteCounts llvmpipe_write_counts(int width, int height, std::span<const SceneTr
   return canvas.write_counts(triangles);
 }
 
-}  // namespace tri::ch10
+}  // namespace tri

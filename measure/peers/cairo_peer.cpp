@@ -1,4 +1,4 @@
-#include "chapters/10_speed_vs_error/library_peers.hpp"
+#include "measure/peers/library_peers.hpp"
 
 #include <cairo.h>
 
@@ -7,10 +7,10 @@
 #include <stdexcept>
 #include <string>
 
-#include "chapters/10_speed_vs_error/byte_coverage_peer.hpp"
-#include "chapters/10_speed_vs_error/y_down_peer.hpp"
+#include "measure/peers/byte_coverage_peer.hpp"
+#include "measure/peers/y_down_peer.hpp"
 
-namespace tri::ch10 {
+namespace tri {
 namespace {
 
 // A cairo image surface and a drawing context on it, filling one triangle path at a time with
@@ -151,4 +151,4 @@ std::string cairo_version() {
   return std::string("cairo ") + cairo_version_string();
 }
 
-}  // namespace tri::ch10
+}  // namespace tri

@@ -11,16 +11,16 @@
 #include <string>
 #include <vector>
 
-#include "chapters/10_speed_vs_error/coverage_measure.hpp"
 #include "chapters/10_speed_vs_error/suites.hpp"
 #include "common/canvas.hpp"
 #include "measure/area_error.hpp"
 #include "measure/error_metrics.hpp"
+#include "measure/peers/peer.hpp"
 #include "measure/registry.hpp"
 #include "measure/render_scene.hpp"
 #include "measure/scene_generators.hpp"
 
-namespace tri::ch10::test {
+namespace tri::peers_test {
 
 /// The exact oracle's write counts of the triangles on a width x height canvas.
 inline WriteCounts oracle_counts(int width, int height, std::span<const SceneTriangle> triangles) {
@@ -73,7 +73,7 @@ inline double nearest_edge_distance(glm::dvec2 c, std::span<const SceneTriangle>
 
 /// The prepared scene of the quick suite (the report's default) with this name and grid.
 inline PreparedScene quick_scene(const std::string& name, const std::string& grid) {
-  const auto settings = bench_settings(SuiteSize::quick);
+  const auto settings = ch10::bench_settings(ch10::SuiteSize::quick);
   const auto suite = std::find_if(settings.scenes.begin(), settings.scenes.end(),
                                   [&](auto& s) { return s.name == name && s.grid == grid; });
   REQUIRE(suite != settings.scenes.end());
@@ -131,4 +131,4 @@ inline CoveragePeerResult measure_coverage_peer(const CoveragePeer& peer, const 
   return peer.measure(prepared, AreaTruth(scene), TimingPlan{0.0, 1, 1});
 }
 
-}  // namespace tri::ch10::test
+}  // namespace tri::peers_test
