@@ -6,6 +6,8 @@ std::string_view rule_name(CoverageRule rule) noexcept {
   switch (rule) {
     case CoverageRule::top_left:
       return "top-left";
+    case CoverageRule::bottom_left:
+      return "bottom-left";
     case CoverageRule::inclusive:
       return "inclusive";
     case CoverageRule::approximate:

@@ -12,12 +12,14 @@ namespace tri {
 /// What an algorithm claims about the pixels it covers.
 enum class CoverageRule {
   top_left,     ///< exact coverage: centres strictly inside, ties by the top-left rule
+  bottom_left,  ///< exact coverage, ties by the top-left rule mirrored (a y-down peer, llvmpipe)
   inclusive,    ///< centres on an edge are always covered (the articles' methods)
   approximate,  ///< no exactness claimed
   area,         ///< a fraction of each pixel, not a yes or no (chapter 09's coverage algorithms)
 };
 
-/// The name `raster --list` prints for a rule: "top-left", "inclusive", "approximate" or "area".
+/// The name `raster --list` and the report print for a rule: "top-left", "bottom-left",
+/// "inclusive", "approximate" or "area".
 std::string_view rule_name(CoverageRule rule) noexcept;
 
 /// Something a drawable can write.

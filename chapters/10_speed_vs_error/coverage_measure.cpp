@@ -69,7 +69,8 @@ std::vector<CoverageMeasurement> run_coverage_benchmark(
       record(std::move(m));
     }
     for (const CoveragePeer& peer : peers) {
-      CoverageMeasurement m = row_for(peer.name, "external", peer.rule, peer.samples, prepared);
+      CoverageMeasurement m =
+          row_for(peer.name, peer.chapter, rule_name(peer.rule), peer.samples, prepared);
       const CoveragePeerResult result = peer.measure(prepared, truth, settings.timing);
       m.timing = result.timing;
       m.touched_pixels = result.touched_pixels;

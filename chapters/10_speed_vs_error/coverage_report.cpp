@@ -6,11 +6,11 @@
 #include <map>
 #include <sstream>
 
-#include "measure/plot/log_axis.hpp"
-#include "measure/plot/plot_frame.hpp"
 #include "chapters/10_speed_vs_error/plot_svg.hpp"
 #include "chapters/10_speed_vs_error/report_csv.hpp"
 #include "chapters/10_speed_vs_error/report_markdown.hpp"
+#include "measure/plot/log_axis.hpp"
+#include "measure/plot/plot_frame.hpp"
 #include "measure/plot/svg_elements.hpp"
 #include "measure/statistics.hpp"
 

@@ -38,9 +38,9 @@ Selection selected(const std::optional<std::string>& names) {
   if (!names) return all;
   std::vector<std::string> valid;
   for (const auto& a : all.algorithms) valid.emplace_back(a.name);
-  for (const auto& p : all.peers) valid.push_back(p.name);
+  for (const auto& p : all.peers) valid.emplace_back(p.name);
   for (const auto& a : all.area_algorithms) valid.emplace_back(a.name);
-  for (const auto& p : all.coverage_peers) valid.push_back(p.name);
+  for (const auto& p : all.coverage_peers) valid.emplace_back(p.name);
   std::vector<std::string> chosen_names;
   try {
     chosen_names = tri::parse_name_list("only", *names, valid);
@@ -51,17 +51,14 @@ Selection selected(const std::optional<std::string>& names) {
   }
   Selection chosen;
   for (const std::string& name : chosen_names) {
-    const auto named = [&](const auto& p) { return p.name == name; };
     if (const tri::TriangleAlgorithm* algorithm = tri::find_named(all.algorithms, name)) {
       chosen.algorithms.push_back(*algorithm);
     } else if (const auto* area = tri::find_named(all.area_algorithms, name)) {
       chosen.area_algorithms.push_back(*area);
-    } else if (const auto peer = std::find_if(all.peers.begin(), all.peers.end(), named);
-               peer != all.peers.end()) {
+    } else if (const tri::ExternalPeer* peer = tri::find_named(all.peers, name)) {
       chosen.peers.push_back(*peer);
     } else {
-      chosen.coverage_peers.push_back(
-          *std::find_if(all.coverage_peers.begin(), all.coverage_peers.end(), named));
+      chosen.coverage_peers.push_back(*tri::find_named(all.coverage_peers, name));
     }
   }
   return chosen;

@@ -103,7 +103,8 @@ Measurement measure(const TriangleAlgorithm& algorithm, const PreparedScene& pre
 
 Measurement measure(const ExternalPeer& peer, const PreparedScene& prepared, const TimingPlan& plan,
                     const FillCeilings& ceilings) {
-  Measurement m = row_for(peer.name, peer.chapter, peer.rule, peer.threaded, prepared, ceilings);
+  Measurement m =
+      row_for(peer.name, peer.chapter, rule_name(peer.rule), peer.threaded, prepared, ceilings);
   const PeerResult result = peer.measure(prepared, plan);
   m.timing = result.timing;
   m.written_pixels = result.written_pixels;

@@ -12,8 +12,8 @@
 #include <utility>
 #include <vector>
 
-#include "measure/plot/plot_frame.hpp"
 #include "chapters/10_speed_vs_error/report_csv.hpp"
+#include "measure/plot/plot_frame.hpp"
 #include "measure/plot/svg_elements.hpp"
 
 namespace tri::ch10 {

@@ -7,8 +7,8 @@
 #include <utility>
 
 #include "measure/child_process.hpp"
-#include "measure/process_memory.hpp"
 #include "measure/fill_ceiling.hpp"
+#include "measure/process_memory.hpp"
 
 namespace tri::ch10 {
 namespace {
@@ -129,7 +129,9 @@ std::vector<ScalingDrawer> scaling_drawers(std::span<const TriangleAlgorithm> al
     drawers.push_back({"write_ceiling", "ceiling", true, time_one_fill});
   }
   for (const ExternalPeer& peer : peers) {
-    if (peer.time) drawers.push_back({peer.name, peer.chapter, false, peer.time});
+    if (peer.time) {
+      drawers.push_back({std::string(peer.name), std::string(peer.chapter), false, peer.time});
+    }
   }
   return drawers;
 }

@@ -6,13 +6,13 @@
 #include <sstream>
 #include <vector>
 
-#include "measure/plot/log_axis.hpp"
-#include "measure/plot/plot_frame.hpp"
 #include "chapters/10_speed_vs_error/plot_svg.hpp"
 #include "chapters/10_speed_vs_error/report_csv.hpp"
 #include "chapters/10_speed_vs_error/report_markdown.hpp"
-#include "measure/plot/svg_elements.hpp"
 #include "common/printable_text.hpp"
+#include "measure/plot/log_axis.hpp"
+#include "measure/plot/plot_frame.hpp"
+#include "measure/plot/svg_elements.hpp"
 
 namespace tri::ch10 {
 namespace {

@@ -53,8 +53,10 @@ class AggImage {
 }  // namespace
 
 CoveragePeer agg_coverage_peer() {
-  return byte_coverage_peer<AggImage>("agg_scanline_aa", "area to 8 bits", 0, "AGG",
-                                      agg_coordinate_limit);
+  return byte_coverage_peer<AggImage>(
+      coverage_peer_description("agg_scanline_aa",
+                                "agg::rasterizer_scanline_aa: the exact area, cut to 8 bits"),
+      0, "AGG", agg_coordinate_limit);
 }
 
 }  // namespace tri

@@ -43,11 +43,11 @@ void add_image_coverage(Image& image, ch09::CoverageCanvas& canvas, const PixelW
 /// Touched pixels: count_each_alone's writes. Error: measure_area_error with each triangle drawn
 /// alone on a cleared image and read back in a window around it, then the whole scene.
 template <ByteCoverageImage Image>
-CoveragePeer byte_coverage_peer(std::string name, std::string rule, int samples,
-                                std::string library, double limit) {
-  return {std::move(name), std::move(rule), samples,
-          [library = std::move(library), limit](const PreparedScene& prepared,
-                                                const AreaTruth& truth, const TimingPlan& plan) {
+CoveragePeer byte_coverage_peer(const Drawable& description, int samples, std::string_view library,
+                                double limit) {
+  return {description, library, samples,
+          [library = std::string(library), limit](const PreparedScene& prepared,
+                                                  const AreaTruth& truth, const TimingPlan& plan) {
             const int width = prepared.scene.width, height = prepared.scene.height;
             require_within(prepared.triangles, height, limit, library);
             CoveragePeerResult result;

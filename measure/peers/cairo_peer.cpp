@@ -132,10 +132,10 @@ Timing time_cairo_draw(const PreparedScene& prepared, const TimingPlan& plan) {
 }  // namespace
 
 ExternalPeer cairo_peer() {
-  return {"cairo_no_antialias",
-          "external",
-          "approximate",
-          false,
+  return {aliased_peer_description("cairo_no_antialias",
+                                   "cairo_fill of one triangle path, CAIRO_ANTIALIAS_NONE",
+                                   CoverageRule::approximate, false),
+          "cairo",
           [](const PreparedScene& prepared, const TimingPlan& plan) {
             return peer_result(time_cairo_draw(prepared, plan), cairo_write_counts, prepared);
           },
@@ -143,8 +143,11 @@ ExternalPeer cairo_peer() {
 }
 
 CoveragePeer cairo_coverage_peer() {
-  return byte_coverage_peer<CairoAlpha>("cairo_antialias", "area in x over 15 rows", 0, "cairo",
-                                        cairo_coordinate_limit);
+  return byte_coverage_peer<CairoAlpha>(
+      coverage_peer_description(
+          "cairo_antialias",
+          "cairo_fill with its default anti-aliasing: the area in x over 15 rows"),
+      0, "cairo", cairo_coordinate_limit);
 }
 
 std::string cairo_version() {

@@ -23,7 +23,7 @@ std::vector<ExternalPeer> external_peers() {
 }
 
 std::string external_peer_status(std::span<const ExternalPeer> measured) {
-  return library_status("Mesa llvmpipe", llvmpipe_not_built, "mesa_llvmpipe", measured) + "; " +
+  return library_status("Mesa llvmpipe", llvmpipe_not_built, "Mesa llvmpipe", measured) + "; " +
          library_status("pixman", pixman_not_built, "pixman", measured) + "; " +
          library_status("cairo", cairo_not_built, "cairo", measured);
 }

@@ -42,8 +42,10 @@ void set_llvmpipe_threads(const std::optional<std::string>& threads) {
 }
 
 // A peer whose measurement runs in a child with LP_NUM_THREADS set (or removed, for nothing).
-ExternalPeer llvmpipe_peer(std::string name, bool threaded, std::optional<std::string> threads) {
-  return {std::move(name), "external", "bottom-left", threaded,
+ExternalPeer llvmpipe_peer(std::string_view name, std::string_view summary, bool threaded,
+                           std::optional<std::string> threads) {
+  return {aliased_peer_description(name, summary, CoverageRule::bottom_left, threaded),
+          "Mesa llvmpipe",
           [threads](const PreparedScene& prepared, const TimingPlan& plan) {
             return run_in_child<PeerResult>([&] {
               set_llvmpipe_threads(threads);
@@ -60,8 +62,12 @@ ExternalPeer llvmpipe_peer(std::string name, bool threaded, std::optional<std::s
 }  // namespace
 
 std::vector<ExternalPeer> llvmpipe_peers() {
-  return {llvmpipe_peer("mesa_llvmpipe_1_thread", false, "0"),
-          llvmpipe_peer("mesa_llvmpipe_default", true, std::nullopt)};
+  return {
+      llvmpipe_peer("mesa_llvmpipe_1_thread",
+                    "Mesa's llvmpipe through OSMesa, all work on the calling thread", false, "0"),
+      llvmpipe_peer("mesa_llvmpipe_default",
+                    "Mesa's llvmpipe through OSMesa, one rasterizer thread per core", true,
+                    std::nullopt)};
 }
 
 std::string mesa_version() {

@@ -1,6 +1,9 @@
 /// @file
 /// What an outside rasterizer measured beside the book's algorithms is, and what it gives back:
-/// plain numbers, so they can come back from a child process.
+/// plain numbers, so they can come back from a child process. A peer is described by the same
+/// Drawable as the book's algorithms (its name, its rule as a CoverageRule, what it writes,
+/// whether it is threaded), in the chapter "external"; what it adds are the functions that
+/// measure it, since it draws into its own buffer rather than a Canvas.
 #pragma once
 
 #include <cstdint>
@@ -8,6 +11,7 @@
 #include <string>
 
 #include "measure/area_error.hpp"
+#include "measure/drawable.hpp"
 #include "measure/error_metrics.hpp"
 #include "measure/prepared_scene.hpp"
 #include "measure/timing.hpp"
@@ -26,18 +30,41 @@ struct PeerResult {
 PeerResult peer_result(const Timing& timing, const CountingDraw& draw,
                        const PreparedScene& prepared);
 
-/// A rasterizer that is not one of the book's (Mesa's llvmpipe), measured beside them.
-struct ExternalPeer {
-  std::string name;     ///< its row in the report, e.g. "mesa_llvmpipe_1_thread"
-  std::string chapter;  ///< where the report files it: "external"
-  std::string rule;     ///< what it is expected to follow
-  bool threaded = false;
+/// The chapter the report files every peer under.
+inline constexpr std::string_view external_chapter = "external";
+
+/// A rasterizer that is not one of the book's (Mesa's llvmpipe, pixman, cairo), measured beside
+/// them: its description (name, e.g. "mesa_llvmpipe_1_thread"; the rule it is shown to follow;
+/// outputs {counts}) and how to measure it.
+struct ExternalPeer : Drawable {
+  std::string_view library;  ///< the library it comes from, as the report's status line names it
   /// Times it on the prepared scene (as measure does an algorithm) and measures its error.
   std::function<PeerResult(const PreparedScene&, const TimingPlan&)> measure;
   /// Times one draw of the prepared scene and nothing else (no counts, no error), in this
   /// process: the scaling sweeps call it in a child process of their own.
   std::function<Timing(const PreparedScene&, const TimingPlan&)> time;
 };
+
+/// The description of an aliased peer: chapter "external", outputs {counts}.
+constexpr Drawable aliased_peer_description(std::string_view name, std::string_view summary,
+                                            CoverageRule rule, bool threaded) noexcept {
+  return {.name = name,
+          .chapter = external_chapter,
+          .summary = summary,
+          .rule = rule,
+          .outputs = {Output::counts},
+          .threaded = threaded};
+}
+
+/// The description of an anti-aliasing peer: chapter "external", rule area, outputs coverage16.
+constexpr Drawable coverage_peer_description(std::string_view name,
+                                             std::string_view summary) noexcept {
+  return {.name = name,
+          .chapter = external_chapter,
+          .summary = summary,
+          .rule = CoverageRule::area,
+          .outputs = coverage_outputs};
+}
 
 /// What an anti-aliasing peer measured on one scene: plain numbers, as for the peers above.
 struct CoveragePeerResult {
@@ -47,11 +74,11 @@ struct CoveragePeerResult {
 };
 
 /// A rasterizer from outside the book that anti-aliases (AGG, cairo, pixman), measured beside
-/// chapter 09's algorithms.
-struct CoveragePeer {
-  std::string name;  ///< its row, e.g. "agg_scanline_aa"
-  std::string rule;  ///< what it computes, e.g. "area to 8 bits" (no commas: a CSV field)
-  int samples = 0;   ///< samples per pixel when it samples; 0 when it computes the area
+/// chapter 09's algorithms: its description (rule area, outputs coverage16; the summary says how
+/// it computes the area, e.g. "area to 8 bits") and how to measure it.
+struct CoveragePeer : Drawable {
+  std::string_view library;  ///< the library it comes from, as the report's status line names it
+  int samples = 0;           ///< samples per pixel when it samples; 0 when it computes the area
   /// Times it on the prepared scene (each triangle one call, as the book's algorithms are called)
   /// and measures its coverage against the truth of the error scene.
   std::function<CoveragePeerResult(const PreparedScene&, const AreaTruth& error_truth,

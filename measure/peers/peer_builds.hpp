@@ -6,6 +6,7 @@
 
 #include <span>
 #include <string>
+#include <string_view>
 
 namespace tri {
 
@@ -14,20 +15,20 @@ inline constexpr const char* pixman_not_built = TUTORIAL_PIXMAN_SKIPPED_BECAUSE;
 inline constexpr const char* cairo_not_built = TUTORIAL_CAIRO_SKIPPED_BECAUSE;
 inline constexpr const char* agg_not_built = TUTORIAL_AGG_SKIPPED_BECAUSE;
 
-/// One library's part of a status line: "pixman: measured (pixman_a1)" (just "measured" when
-/// the one peer measured is named like the library), "... built, not selected by --only", or
-/// "... not built (reason)". The peers measured are those of `measured` whose name starts with
-/// `name_prefix`.
+/// One library's part of a status line, under `label`: "pixman: measured (pixman_a1)" (just
+/// "measured" when the one peer measured is named like the label), "... built, not selected by
+/// --only", or "... not built (reason)". The peers measured are those of `measured` that come
+/// from `library` (their declared library, never their name).
 template <class Peer>
-std::string library_status(const std::string& library, const char* not_built,
-                           const std::string& name_prefix, std::span<const Peer> measured) {
-  if (not_built != nullptr) return library + ": not built (" + not_built + ")";
+std::string library_status(const std::string& label, const char* not_built,
+                           std::string_view library, std::span<const Peer> measured) {
+  if (not_built != nullptr) return label + ": not built (" + not_built + ")";
   std::string names;
   for (const Peer& peer : measured) {
-    if (peer.name.starts_with(name_prefix)) names += (names.empty() ? "" : ", ") + peer.name;
+    if (peer.library == library) (names += names.empty() ? "" : ", ") += peer.name;
   }
-  if (names.empty()) return library + ": built, not selected by --only";
-  return library + (names == library ? ": measured" : ": measured (" + names + ")");
+  if (names.empty()) return label + ": built, not selected by --only";
+  return label + (names == label ? ": measured" : ": measured (" + names + ")");
 }
 
 }  // namespace tri

@@ -110,10 +110,10 @@ Timing time_pixman_draw(const PreparedScene& prepared, const TimingPlan& plan) {
 }  // namespace
 
 ExternalPeer pixman_peer() {
-  return {"pixman_a1",
-          "external",
-          "top-left",
-          false,
+  return {aliased_peer_description(
+              "pixman_a1", "pixman_add_triangles into a one-bit image, one call per triangle",
+              CoverageRule::top_left, false),
+          "pixman",
           [](const PreparedScene& prepared, const TimingPlan& plan) {
             return peer_result(time_pixman_draw(prepared, plan), pixman_write_counts, prepared);
           },
@@ -121,8 +121,10 @@ ExternalPeer pixman_peer() {
 }
 
 CoveragePeer pixman_coverage_peer() {
-  return byte_coverage_peer<PixmanAlpha>("pixman_a8", "samples on a 15 x 17 grid", 255, "pixman",
-                                         pixman_coordinate_limit);
+  return byte_coverage_peer<PixmanAlpha>(
+      coverage_peer_description("pixman_a8",
+                                "pixman_add_triangles into an a8 image: samples on a 15 x 17 grid"),
+      255, "pixman", pixman_coordinate_limit);
 }
 
 std::string pixman_version() {

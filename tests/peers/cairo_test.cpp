@@ -54,7 +54,7 @@ TEST_CASE("cairo's row in the report: timed, with its error measured", "[peers][
   const auto settings = tri::ch10::bench_settings(tri::ch10::SuiteSize::tiny);
   const tri::ExternalPeer peer = tri::cairo_peer();
   CHECK(peer.name == "cairo_no_antialias");
-  CHECK(peer.rule == "approximate");
+  CHECK(peer.rule == tri::CoverageRule::approximate);
   const auto prepared = tri::prepare_scene(settings.scenes.front(), 0);
   const tri::PeerResult result = peer.measure(prepared, settings.timing);
   CHECK(result.timing.seconds.median > 0);

@@ -1,23 +1,39 @@
 #include "measure/peers/external_peers.hpp"
 
+#include "measure/peers/coverage_peers.hpp"
+
 #include <catch2/catch.hpp>
 #include <iterator>
 #include <regex>
 #include <set>
 #include <string>
+#include <string_view>
 
 #include "measure/registry.hpp"
 
 TEST_CASE("External peers have their own names, filed under 'external'",
           "[peers][external_peers]") {
-  const auto peers = tri::external_peers();
-  const auto algorithms = tri::registered_algorithms();
-  std::set<std::string> names;
-  for (const tri::ExternalPeer& peer : peers) {
+  const auto drawables = tri::registered_drawables();
+  std::set<std::string_view> names;
+  const auto check_description = [&](const tri::Drawable& peer) {
     CAPTURE(peer.name);
     CHECK(names.insert(peer.name).second);
-    CHECK(tri::find_named(algorithms, peer.name) == nullptr);  // --only can tell them apart
+    CHECK(tri::find_named(drawables, peer.name) == nullptr);  // --only can tell them apart
     CHECK(peer.chapter == "external");
+    CHECK(!peer.summary.empty());
+    CHECK(peer.colours == nullptr);  // a peer draws into its own buffer, never a Canvas
+    CHECK(peer.coverage == nullptr);
+  };
+  for (const tri::ExternalPeer& peer : tri::external_peers()) {
+    check_description(peer);
+    CHECK(peer.outputs == tri::Outputs{tri::Output::counts});
+    CHECK(peer.rule != tri::CoverageRule::area);
+    CHECK(static_cast<bool>(peer.measure));
+  }
+  for (const tri::CoveragePeer& peer : tri::coverage_peers()) {
+    check_description(peer);
+    CHECK(peer.outputs == tri::coverage_outputs);
+    CHECK(peer.rule == tri::CoverageRule::area);
     CHECK(static_cast<bool>(peer.measure));
   }
 }

@@ -166,6 +166,7 @@ TEST_CASE("The llvmpipe peer measures in a child what it measures here", "[peers
   CHECK(here.timing.seconds.median > 0);
   for (const tri::ExternalPeer& peer : tri::llvmpipe_peers()) {
     CAPTURE(peer.name);
+    CHECK(peer.rule == tri::CoverageRule::bottom_left);  // what the mirrored test above shows
     const tri::PeerResult there = peer.measure(prepared, settings.timing);
     CHECK(there.written_pixels == here.written_pixels);
     CHECK(there.error.missed == here.error.missed);

@@ -53,7 +53,7 @@ TEST_CASE("pixman's row in the report: timed, and exact on the tiny suite", "[pe
   const auto settings = tri::ch10::bench_settings(tri::ch10::SuiteSize::tiny);
   const tri::ExternalPeer peer = tri::pixman_peer();
   CHECK(peer.name == "pixman_a1");
-  CHECK(peer.rule == "top-left");
+  CHECK(peer.rule == tri::CoverageRule::top_left);
   for (const auto& suite : settings.scenes) {
     const auto prepared = tri::prepare_scene(suite, settings.error_triangle_limit);
     const tri::PeerResult result = peer.measure(prepared, settings.timing);
