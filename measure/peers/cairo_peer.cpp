@@ -132,14 +132,11 @@ Timing time_cairo_draw(const PreparedScene& prepared, const TimingPlan& plan) {
 }  // namespace
 
 ExternalPeer cairo_peer() {
-  return {aliased_peer_description("cairo_no_antialias",
-                                   "cairo_fill of one triangle path, CAIRO_ANTIALIAS_NONE",
-                                   CoverageRule::approximate, false),
-          "cairo",
-          [](const PreparedScene& prepared, const TimingPlan& plan) {
-            return peer_result(time_cairo_draw(prepared, plan), cairo_write_counts, prepared);
-          },
-          time_cairo_draw};
+  return in_process_peer(
+      aliased_peer_description("cairo_no_antialias",
+                               "cairo_fill of one triangle path, CAIRO_ANTIALIAS_NONE",
+                               CoverageRule::approximate, false),
+      "cairo", time_cairo_draw, cairo_write_counts);
 }
 
 CoveragePeer cairo_coverage_peer() {

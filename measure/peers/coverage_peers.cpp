@@ -20,9 +20,10 @@ std::vector<CoveragePeer> coverage_peers() {
 }
 
 std::string coverage_peer_status(std::span<const CoveragePeer> measured) {
-  return library_status("agg_scanline_aa", agg_not_built, "AGG", measured) + "; " +
-         library_status("cairo_antialias", cairo_not_built, "cairo", measured) + "; " +
-         library_status("pixman_a8", pixman_not_built, "pixman", measured);
+  return status_line({{"agg_scanline_aa", agg_not_built, "AGG"},
+                      {"cairo_antialias", cairo_not_built, "cairo"},
+                      {"pixman_a8", pixman_not_built, "pixman"}},
+                     measured);
 }
 
 }  // namespace tri

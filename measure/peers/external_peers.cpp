@@ -23,9 +23,10 @@ std::vector<ExternalPeer> external_peers() {
 }
 
 std::string external_peer_status(std::span<const ExternalPeer> measured) {
-  return library_status("Mesa llvmpipe", llvmpipe_not_built, "Mesa llvmpipe", measured) + "; " +
-         library_status("pixman", pixman_not_built, "pixman", measured) + "; " +
-         library_status("cairo", cairo_not_built, "cairo", measured);
+  return status_line({{"Mesa llvmpipe", llvmpipe_not_built, "Mesa llvmpipe"},
+                      {"pixman", pixman_not_built, "pixman"},
+                      {"cairo", cairo_not_built, "cairo"}},
+                     measured);
 }
 
 std::string peer_versions() {

@@ -15,4 +15,14 @@ PeerResult peer_result(const Timing& timing, const CountingDraw& draw,
   return result;
 }
 
+ExternalPeer in_process_peer(const Drawable& description, std::string_view library,
+                             std::function<Timing(const PreparedScene&, const TimingPlan&)> time,
+                             CountingDraw draw) {
+  return {description, library,
+          [time, draw = std::move(draw)](const PreparedScene& prepared, const TimingPlan& plan) {
+            return peer_result(time(prepared, plan), draw, prepared);
+          },
+          std::move(time)};
+}
+
 }  // namespace tri

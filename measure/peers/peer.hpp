@@ -56,6 +56,12 @@ constexpr Drawable aliased_peer_description(std::string_view name, std::string_v
           .threaded = threaded};
 }
 
+/// A peer measured in this process: `time` times one draw of the prepared scene, `draw` gives
+/// the write counts its pixel writes and its error are taken from (peer_result).
+ExternalPeer in_process_peer(const Drawable& description, std::string_view library,
+                             std::function<Timing(const PreparedScene&, const TimingPlan&)> time,
+                             CountingDraw draw);
+
 /// The description of an anti-aliasing peer: chapter "external", rule area, outputs coverage16.
 constexpr Drawable coverage_peer_description(std::string_view name,
                                              std::string_view summary) noexcept {

@@ -110,14 +110,11 @@ Timing time_pixman_draw(const PreparedScene& prepared, const TimingPlan& plan) {
 }  // namespace
 
 ExternalPeer pixman_peer() {
-  return {aliased_peer_description(
-              "pixman_a1", "pixman_add_triangles into a one-bit image, one call per triangle",
-              CoverageRule::top_left, false),
-          "pixman",
-          [](const PreparedScene& prepared, const TimingPlan& plan) {
-            return peer_result(time_pixman_draw(prepared, plan), pixman_write_counts, prepared);
-          },
-          time_pixman_draw};
+  return in_process_peer(
+      aliased_peer_description("pixman_a1",
+                               "pixman_add_triangles into a one-bit image, one call per triangle",
+                               CoverageRule::top_left, false),
+      "pixman", time_pixman_draw, pixman_write_counts);
 }
 
 CoveragePeer pixman_coverage_peer() {

@@ -3,6 +3,8 @@
 #include <catch2/catch.hpp>
 
 #include <string>
+#include <string_view>
+#include <utility>
 
 #include "tools/listings/listings.hpp"
 #include "tools/listings/temp_repo.hpp"
@@ -12,44 +14,61 @@ using tri::listings::testing::any_problem_contains;
 using tri::listings::testing::TempRepo;
 
 TEST_CASE("Times, rates, ratios and shares of a ceiling look measured", "[listings]") {
-  CHECK(measured_looking("the span walker is 3.2× faster") == "3.2×");
-  CHECK(measured_looking("3x faster than the oracle") == "3x");
-  CHECK(measured_looking("it fills 1164 Mpix/s on large triangles") == "1164 Mpix/s");
-  CHECK(measured_looking("at 15.9 Mtri/s") == "15.9 Mtri/s");
-  CHECK(measured_looking("about 6.68 M tris/s on tiny ones") == "6.68 M tris/s");
-  CHECK(measured_looking("22.5 tris/s") == "22.5 tris/s");
-  CHECK(measured_looking("a draw takes 850 ns") == "850 ns");
-  CHECK(measured_looking("3.1 µs per triangle") == "3.1 µs");
-  CHECK(measured_looking("the run took 71 s.") == "71 s");
-  CHECK(measured_looking("in 71 seconds") == "71 seconds");
-  CHECK(measured_looking("a batch of 12 ms") == "12 ms");
-  CHECK(measured_looking("memset writes 9.6 GB/s") == "9.6 GB/s");
-  CHECK(measured_looking("it holds 14 MiB") == "14 MiB");
-  CHECK(measured_looking("reaches 70% of the write ceiling") == "70% of the write ceiling");
-  CHECK(measured_looking("2.5 times faster") == "2.5 times faster");
+  // Each text and the number in it that looks measured.
+  const std::pair<std::string_view, std::string_view> examples[] = {
+      {"the span walker is 3.2× faster", "3.2×"},
+      {"3x faster than the oracle", "3x"},
+      {"it fills 1164 Mpix/s on large triangles", "1164 Mpix/s"},
+      {"at 15.9 Mtri/s", "15.9 Mtri/s"},
+      {"about 6.68 M tris/s on tiny ones", "6.68 M tris/s"},
+      {"22.5 tris/s", "22.5 tris/s"},
+      {"a draw takes 850 ns", "850 ns"},
+      {"3.1 µs per triangle", "3.1 µs"},
+      {"the run took 71 s.", "71 s"},
+      {"in 71 seconds", "71 seconds"},
+      {"a batch of 12 ms", "12 ms"},
+      {"memset writes 9.6 GB/s", "9.6 GB/s"},
+      {"it holds 14 MiB", "14 MiB"},
+      {"reaches 70% of the write ceiling", "70% of the write ceiling"},
+      {"2.5 times faster", "2.5 times faster"},
+  };
+  for (const auto& [text, found] : examples) {
+    CAPTURE(text);
+    CHECK(measured_looking(text) == found);
+  }
 }
 
 TEST_CASE("Sizes, sample grids, counts and error rates do not look measured", "[listings]") {
-  CHECK_FALSE(measured_looking("cut into 8×8 blocks"));
-  CHECK_FALSE(measured_looking("a 256×256 canvas"));
-  CHECK_FALSE(measured_looking("the 4 × 4 grid of samples"));
-  CHECK_FALSE(measured_looking("the 8x8 block and the 16x16 grid"));
-  CHECK_FALSE(measured_looking("the error rate is 0.233 over 14 scenes"));
-  CHECK_FALSE(measured_looking("687 wrong pixels on 62 of 400 slivers"));
-  CHECK_FALSE(measured_looking("x86-64 with AVX2, fixed_point_8 and 1/256 steps"));
-  CHECK_FALSE(measured_looking("about 22% of the light"));
-  CHECK_FALSE(measured_looking("the 1990s and chapter 7's oracle"));
-  CHECK_FALSE(measured_looking("the value 0x1f"));
+  for (const std::string_view text : {
+           "cut into 8×8 blocks",
+           "a 256×256 canvas",
+           "the 4 × 4 grid of samples",
+           "the 8x8 block and the 16x16 grid",
+           "the error rate is 0.233 over 14 scenes",
+           "687 wrong pixels on 62 of 400 slivers",
+           "x86-64 with AVX2, fixed_point_8 and 1/256 steps",
+           "about 22% of the light",
+           "the 1990s and chapter 7's oracle",
+           "the value 0x1f",
+       }) {
+    CAPTURE(text);
+    CHECK_FALSE(measured_looking(text));
+  }
 }
 
 TEST_CASE("Only the READMEs that quote measurements are held to markers", "[listings]") {
-  CHECK(quotes_measurements("README.md"));
-  CHECK(quotes_measurements("chapters/08_fast_exact/README.md"));
-  CHECK(quotes_measurements("chapters/09_anti_aliasing/README.md"));
-  CHECK(quotes_measurements("chapters/10_speed_vs_error/README.md"));
-  CHECK_FALSE(quotes_measurements("chapters/07_exact_coverage/README.md"));
-  CHECK_FALSE(quotes_measurements("chapters/08_fast_exact/notes/README.md"));
-  CHECK_FALSE(quotes_measurements("docs/performance_notes.md"));
+  for (const std::string_view page :
+       {"README.md", "chapters/08_fast_exact/README.md", "chapters/09_anti_aliasing/README.md",
+        "chapters/10_speed_vs_error/README.md"}) {
+    CAPTURE(page);
+    CHECK(quotes_measurements(page));
+  }
+  for (const std::string_view page :
+       {"chapters/07_exact_coverage/README.md", "chapters/08_fast_exact/notes/README.md",
+        "docs/performance_notes.md"}) {
+    CAPTURE(page);
+    CHECK_FALSE(quotes_measurements(page));
+  }
 }
 
 TEST_CASE("A measured number typed outside a marker fails the check; code and markers do not",
