@@ -16,7 +16,6 @@
 #include "common/cli.hpp"
 #include "common/output_files.hpp"
 #include "common/printable_text.hpp"
-#include "measure/peers/coverage_peers.hpp"
 #include "measure/peers/external_peers.hpp"
 #include "measure/registry.hpp"
 

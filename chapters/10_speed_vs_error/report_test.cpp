@@ -20,7 +20,6 @@
 #include "chapters/10_speed_vs_error/snapshot.hpp"
 #include "chapters/10_speed_vs_error/summary.hpp"
 #include "measure/error_metrics.hpp"
-#include "measure/peers/coverage_peers.hpp"
 #include "measure/peers/external_peers.hpp"
 #include "measure/registry.hpp"
 #include "measure/render_scene.hpp"

@@ -8,24 +8,57 @@
 
 namespace tri {
 
-std::vector<ExternalPeer> external_peers() {
-  std::vector<ExternalPeer> peers;
+namespace {
+
+// Every peer this build has, one block per library; the anti-aliasing peers in the report's
+// order: AGG, cairo, pixman.
+struct BuiltPeers {
+  std::vector<ExternalPeer> aliased;
+  std::vector<CoveragePeer> coverage;
+};
+
+BuiltPeers built_peers() {
+  BuiltPeers peers;
 #if TUTORIAL_WITH_OSMESA
-  for (ExternalPeer& peer : llvmpipe_peers()) peers.push_back(std::move(peer));
+  peers.aliased = llvmpipe_peers();
+#endif
+#if TUTORIAL_WITH_AGG
+  peers.coverage.push_back(agg_coverage_peer());
 #endif
 #if TUTORIAL_WITH_PIXMAN
-  peers.push_back(pixman_peer());
+  peers.aliased.push_back(pixman_peer());
 #endif
 #if TUTORIAL_WITH_CAIRO
-  peers.push_back(cairo_peer());
+  peers.aliased.push_back(cairo_peer());
+  peers.coverage.push_back(cairo_coverage_peer());
+#endif
+#if TUTORIAL_WITH_PIXMAN
+  peers.coverage.push_back(pixman_coverage_peer());
 #endif
   return peers;
+}
+
+}  // namespace
+
+std::vector<ExternalPeer> external_peers() {
+  return built_peers().aliased;
+}
+
+std::vector<CoveragePeer> coverage_peers() {
+  return built_peers().coverage;
 }
 
 std::string external_peer_status(std::span<const ExternalPeer> measured) {
   return status_line({{"Mesa llvmpipe", llvmpipe_not_built, "Mesa llvmpipe"},
                       {"pixman", pixman_not_built, "pixman"},
                       {"cairo", cairo_not_built, "cairo"}},
+                     measured);
+}
+
+std::string coverage_peer_status(std::span<const CoveragePeer> measured) {
+  return status_line({{"agg_scanline_aa", agg_not_built, "AGG"},
+                      {"cairo_antialias", cairo_not_built, "cairo"},
+                      {"pixman_a8", pixman_not_built, "pixman"}},
                      measured);
 }
 

@@ -8,7 +8,6 @@
 #include <string>
 #include <vector>
 
-#include "measure/peers/coverage_peers.hpp"
 #include "measure/peers/external_peers.hpp"
 #include "measure/registry.hpp"
 

@@ -1,7 +1,5 @@
 #include "measure/peers/external_peers.hpp"
 
-#include "measure/peers/coverage_peers.hpp"
-
 #include <catch2/catch.hpp>
 #include <iterator>
 #include <regex>
