@@ -11,7 +11,7 @@ namespace tri {
 namespace {
 
 // Every peer this build has, one block per library; the anti-aliasing peers in the report's
-// order: AGG, cairo, pixman.
+// order: AGG, cairo, pixman, FreeType.
 struct BuiltPeers {
   std::vector<ExternalPeer> aliased;
   std::vector<CoveragePeer> coverage;
@@ -34,6 +34,9 @@ BuiltPeers built_peers() {
 #endif
 #if TUTORIAL_WITH_PIXMAN
   peers.coverage.push_back(pixman_coverage_peer());
+#endif
+#if TUTORIAL_WITH_FREETYPE
+  peers.coverage.push_back(freetype_coverage_peer());
 #endif
   return peers;
 }
@@ -58,7 +61,8 @@ std::string external_peer_status(std::span<const ExternalPeer> measured) {
 std::string coverage_peer_status(std::span<const CoveragePeer> measured) {
   return status_line({{"agg_scanline_aa", agg_not_built, "AGG"},
                       {"cairo_antialias", cairo_not_built, "cairo"},
-                      {"pixman_a8", pixman_not_built, "pixman"}},
+                      {"pixman_a8", pixman_not_built, "pixman"},
+                      {"freetype_smooth", freetype_not_built, "FreeType"}},
                      measured);
 }
 
@@ -75,6 +79,9 @@ std::string peer_versions() {
 #endif
 #if TUTORIAL_WITH_CAIRO
   add(cairo_version());
+#endif
+#if TUTORIAL_WITH_FREETYPE
+  add(freetype_version());
 #endif
   return versions.empty() ? "none" : versions;
 }

@@ -20,6 +20,8 @@ inline constexpr double pixman_coordinate_limit = 32767.0;
 inline constexpr double cairo_coordinate_limit = 8.0e6;
 /// AGG's limit: its rasterizer keeps coordinates in 24.8 fixed point in an int.
 inline constexpr double agg_coordinate_limit = 1 << 22;
+/// FreeType's spans give a pixel's x as a short: 32767 in magnitude.
+inline constexpr double freetype_coordinate_limit = 32767.0;
 
 /// The pixels pixman sets for each triangle, counted: every triangle is added on its own into a
 /// cleared one-bit (a1) image, so a pixel two triangles cover counts 2. Throws for scenes beyond
@@ -31,8 +33,8 @@ WriteCounts pixman_write_counts(int width, int height, std::span<const SceneTria
 /// cairo_coordinate_limit.
 WriteCounts cairo_write_counts(int width, int height, std::span<const SceneTriangle> triangles);
 
-/// "pixman_a1": pixman_add_triangles into a one-bit image of the canvas size, one call per
-/// triangle, timed like the book's algorithms, with its error against the oracle.
+/// "pixman_a1": pixman_add_triangles into a one-bit image of the canvas size, the whole frame in
+/// one call, as a user would draw it, with its error against the oracle.
 ExternalPeer pixman_peer();
 
 /// "cairo_no_antialias": cairo_fill of one triangle path per triangle on an ARGB32 surface of the
@@ -52,6 +54,13 @@ CoveragePeer agg_coverage_peer();
 /// "cairo_antialias": cairo_fill of one triangle path per call on an A8 surface, with cairo's
 /// default anti-aliasing and the ADD operator, so coverages add up as a summed canvas does.
 CoveragePeer cairo_coverage_peer();
+
+/// "freetype_smooth": FreeType's smooth rasterizer (FT_Outline_Render, anti-aliased, spans added
+/// into a gray image), one three-point outline per triangle, its coordinates in 26.6 fixed point.
+CoveragePeer freetype_coverage_peer();
+
+/// "FreeType 2.12.1": the FreeType this process runs with.
+std::string freetype_version();
 
 /// "pixman_a8": pixman_add_triangles into an a8 image, one call per triangle (it adds,
 /// saturating at 255).

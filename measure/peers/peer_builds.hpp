@@ -15,6 +15,7 @@ inline constexpr const char* llvmpipe_not_built = TUTORIAL_LLVMPIPE_SKIPPED_BECA
 inline constexpr const char* pixman_not_built = TUTORIAL_PIXMAN_SKIPPED_BECAUSE;
 inline constexpr const char* cairo_not_built = TUTORIAL_CAIRO_SKIPPED_BECAUSE;
 inline constexpr const char* agg_not_built = TUTORIAL_AGG_SKIPPED_BECAUSE;
+inline constexpr const char* freetype_not_built = TUTORIAL_FREETYPE_SKIPPED_BECAUSE;
 
 /// A library the peers come from, as a status line names it: its label there, why it was not
 /// built (nullptr when it was), and the library its peers declare.

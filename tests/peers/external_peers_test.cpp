@@ -69,14 +69,15 @@ TEST_CASE("The snapshot's peers line names the release of each library this buil
           "[peers][external_peers]") {
   const std::string versions = tri::peer_versions();
   CAPTURE(versions);
-  const std::regex release_of(R"((Mesa|pixman|cairo) \d+\.\d+\.\d+)");
-  const std::size_t built =
-      (TUTORIAL_WITH_OSMESA != 0) + (TUTORIAL_WITH_PIXMAN != 0) + (TUTORIAL_WITH_CAIRO != 0);
+  const std::regex release_of(R"((Mesa|pixman|cairo|FreeType) \d+\.\d+\.\d+)");
+  const std::size_t built = (TUTORIAL_WITH_OSMESA != 0) + (TUTORIAL_WITH_PIXMAN != 0) +
+                            (TUTORIAL_WITH_CAIRO != 0) + (TUTORIAL_WITH_FREETYPE != 0);
   const auto found = std::distance(
       std::sregex_iterator(versions.begin(), versions.end(), release_of), std::sregex_iterator());
   CHECK(static_cast<std::size_t>(found) == built);
   CHECK((versions.find("Mesa ") != std::string::npos) == (TUTORIAL_WITH_OSMESA != 0));
   CHECK((versions.find("pixman ") != std::string::npos) == (TUTORIAL_WITH_PIXMAN != 0));
   CHECK((versions.find("cairo ") != std::string::npos) == (TUTORIAL_WITH_CAIRO != 0));
+  CHECK((versions.find("FreeType ") != std::string::npos) == (TUTORIAL_WITH_FREETYPE != 0));
   if (built == 0) CHECK(versions == "none");
 }
