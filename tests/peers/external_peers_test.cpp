@@ -7,7 +7,9 @@
 #include <string>
 #include <string_view>
 
+#include "measure/peers/library_peers.hpp"
 #include "measure/registry.hpp"
+#include "tests/peers/peer_test_support.hpp"
 
 TEST_CASE("External peers have their own names, filed under 'external'",
           "[peers][external_peers]") {
@@ -80,4 +82,41 @@ TEST_CASE("The snapshot's peers line names the release of each library this buil
   CHECK((versions.find("cairo ") != std::string::npos) == (TUTORIAL_WITH_CAIRO != 0));
   CHECK((versions.find("FreeType ") != std::string::npos) == (TUTORIAL_WITH_FREETYPE != 0));
   if (built == 0) CHECK(versions == "none");
+}
+
+namespace {
+
+// A triangle reaching x = far_x on an 8x8 canvas: the library must refuse the scene with a message
+// naming itself and its limit, never draw it with wrapped-around fixed-point coordinates.
+void check_refuses_far_vertex(const tri::CountingDraw& write_counts, double far_x,
+                              const std::string& library, const std::string& limit) {
+  const std::vector<tri::SceneTriangle> far{{{{{0, 0}, {far_x, 0}, {0, 5}}}, tri::colors::white}};
+  CHECK_THROWS_WITH(write_counts(8, 8, far),
+                    Catch::Contains(library + " cannot draw this scene") && Catch::Contains(limit));
+}
+
+void check_refuses_far_vertex(const tri::CoveragePeer& peer, double far_x,
+                              const std::string& library, const std::string& limit) {
+  tri::Scene scene = tri::peers_test::small_scene(tri::SceneRecipe::Kind::random, 8, 63);
+  scene.primitives.push_back(tri::SceneTriangle{{{{0, 0}, {far_x, 0}, {0, 5}}}});
+  CHECK_THROWS_WITH(tri::peers_test::measure_coverage_peer(peer, scene),
+                    Catch::Contains(library + " cannot draw this scene") && Catch::Contains(limit));
+}
+
+}  // namespace
+
+TEST_CASE("Each peer library refuses a scene beyond its fixed-point range, naming the limit",
+          "[peers][external_peers]") {
+#if TUTORIAL_WITH_PIXMAN
+  check_refuses_far_vertex(tri::pixman_write_counts, 40000, "pixman", "32767");  // 16.16
+#endif
+#if TUTORIAL_WITH_CAIRO
+  check_refuses_far_vertex(tri::cairo_write_counts, 1e7, "cairo", "8000000");  // 24.8
+#endif
+#if TUTORIAL_WITH_AGG
+  check_refuses_far_vertex(tri::agg_coverage_peer(), 1e7, "AGG", "4194304");  // 24.8 in an int
+#endif
+#if TUTORIAL_WITH_FREETYPE
+  check_refuses_far_vertex(tri::freetype_coverage_peer(), 40000, "FreeType", "32767");  // short x
+#endif
 }

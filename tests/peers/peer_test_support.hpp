@@ -110,15 +110,6 @@ inline std::vector<SceneTriangle> split_square() {
   return {{{{{1, 1}, {6, 1}, {1, 6}}}, colors::white}, {{{{6, 1}, {6, 6}, {1, 6}}}, colors::white}};
 }
 
-/// Checks that a library's write counts refuse a triangle reaching x = far_x (beyond its range)
-/// on an 8x8 canvas, with a message that names the library and its limit.
-inline void check_refuses_far_vertex(const CountingDraw& write_counts, double far_x,
-                                     const std::string& library, const std::string& limit) {
-  const std::vector<SceneTriangle> far{{{{{0, 0}, {far_x, 0}, {0, 5}}}, colors::white}};
-  CHECK_THROWS_WITH(write_counts(8, 8, far),
-                    Catch::Contains(library + " cannot draw this scene") && Catch::Contains(limit));
-}
-
 /// An anti-aliasing peer measured on a scene (one untimed-looking sample: the tests never time):
 /// its touched pixels and its error against the exact area.
 inline CoveragePeerResult measure_coverage_peer(const CoveragePeer& peer, const Scene& scene) {
@@ -129,6 +120,18 @@ inline CoveragePeerResult measure_coverage_peer(const CoveragePeer& peer, const 
   prepared.triangles = scene_triangles(scene);
   prepared.error_scene = scene;
   return peer.measure(prepared, AreaTruth(scene), TimingPlan{0.0, 1, 1});
+}
+
+/// An anti-aliasing peer on small_scene's 300 random triangles of the 1/2^grid_bits grid, each
+/// of them compared with the exact area (none refused).
+inline CoveragePeerResult on_random_triangles(const CoveragePeer& peer, int grid_bits,
+                                              std::uint64_t seed) {
+  const CoveragePeerResult r =
+      measure_coverage_peer(peer, small_scene(SceneRecipe::Kind::random, grid_bits, seed));
+  CHECK(r.error.triangles == 300);
+  CHECK(r.error.pixels > 1000);
+  CHECK(r.touched_pixels > 0);
+  return r;
 }
 
 }  // namespace tri::peers_test
