@@ -120,7 +120,7 @@ std::optional<int> wait_until(pid_t pid, Deadline deadline) {
       return std::nullopt;
     }
     std::this_thread::sleep_for(pause);
-    pause = std::min(pause * 2, std::chrono::microseconds(20'000));
+    pause = std::min(pause * 2, std::chrono::microseconds(5'000));
   }
 }
 

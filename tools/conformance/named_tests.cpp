@@ -259,22 +259,47 @@ NamedTest translation_test() {
   return test;
 }
 
-// Triangles with vertices out to ±reach that cross a 48x48 canvas: wedges from a point on the
-// canvas to two far points, and slivers between far points on opposite sides.
+// Triangles with vertices out to ±reach that cross a 48x48 canvas: wedges whose long edge runs
+// from a half-step point (no centre) in whole-pixel steps out to ±reach, then 1/256 off, so it
+// misses centres by less than 1/10000 pixel (rounding decides them wrongly), and slivers between
+// far points on opposite sides.
 Scene far_scene(double reach, std::uint64_t seed) {
   Random random(seed);
   const auto far_point = [&](glm::dvec2 from, double angle) {
     const glm::dvec2 p = from + reach * glm::dvec2(std::cos(angle), std::sin(angle));
     return on_grid(glm::clamp(p, glm::dvec2(-reach), glm::dvec2(reach)));
   };
+  // A whole-pixel step with an odd component, so that half of it is no pixel centre.
+  const auto step = [&random] {
+    for (;;) {
+      const int dx = random.integer(-7, 7);
+      const int dy = random.integer(-7, 7);
+      if (dx % 2 != 0 || dy % 2 != 0) return glm::dvec2(dx, dy);
+    }
+  };
+  const auto nudge = [&random] {
+    for (;;) {
+      const int dx = random.integer(-3, 3);
+      const int dy = random.integer(-3, 3);
+      if (dx != 0 || dy != 0) return glm::dvec2(dx, dy) * unit;
+    }
+  };
+  const auto along = [reach](glm::dvec2 from, glm::dvec2 d) {
+    // As many whole steps as stay within ±reach from a start on the canvas.
+    return from + std::floor((reach - 64) / std::max(std::abs(d.x), std::abs(d.y))) * d;
+  };
   std::vector<Triangle> triangles;
   for (int i = 0; i < 16; ++i) {
-    const double x = random.real(0, 48);
-    const double y = random.real(0, 48);
-    const double angle = random.real(0, 2 * std::numbers::pi);
-    const double spread = random.real(0.0005, 0.05);
-    const glm::dvec2 near = on_grid({x, y});
-    triangles.push_back(Triangle{near, far_point(near, angle), far_point(near, angle + spread)});
+    const int x = random.integer(4, 44);
+    const int y = random.integer(4, 44);
+    const glm::dvec2 first = step();
+    const glm::dvec2 second = step();
+    const glm::dvec2 first_nudge = nudge();
+    const glm::dvec2 second_nudge = nudge();
+    const glm::dvec2 centre(x, y);
+    const glm::dvec2 near = centre + first / 2.0;
+    triangles.push_back(
+        Triangle{near, along(centre, first) + first_nudge, along(near, second) + second_nudge});
   }
   for (int i = 0; i < 8; ++i) {
     const double x = random.real(0, 48);
