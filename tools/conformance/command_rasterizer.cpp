@@ -49,9 +49,12 @@ class WorkFolder {
     fs::remove_all(path_, ignored);
   }
   const fs::path& path() const { return path_; }
+  /// A new number for each run's files, so that nothing a killed run left behind is read again.
+  int next_run() noexcept { return ++runs_; }
 
  private:
   fs::path path_;
+  int runs_ = 0;
 };
 
 std::string replaced(std::string word, std::string_view placeholder, const std::string& value) {
@@ -85,11 +88,9 @@ pid_t spawn(const std::vector<std::string>& words, const fs::path& error_file) {
   posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
   posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, error_file.c_str(),
                                    O_WRONLY | O_CREAT | O_TRUNC, 0600);
+  // In this process's group, so that an interrupt from the terminal (Ctrl-C) ends it too.
   posix_spawnattr_t attributes;
   posix_spawnattr_init(&attributes);
-  // Its own process group, so that a hang is ended with everything it started.
-  posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETPGROUP);
-  posix_spawnattr_setpgroup(&attributes, 0);
   std::vector<char*> argv;
   for (const auto& word : words) argv.push_back(const_cast<char*>(word.c_str()));
   argv.push_back(nullptr);
@@ -104,7 +105,7 @@ pid_t spawn(const std::vector<std::string>& words, const fs::path& error_file) {
   return pid;
 }
 
-// Waits for the program until the deadline; kills its process group past it. The wait status,
+// Waits for the program until the deadline; kills it past it. The wait status,
 // or nothing when it was killed for the time.
 std::optional<int> wait_until(pid_t pid, Deadline deadline) {
   auto pause = std::chrono::microseconds(200);
@@ -114,7 +115,7 @@ std::optional<int> wait_until(pid_t pid, Deadline deadline) {
     if (done == pid) return status;
     if (done < 0 && errno != EINTR) return std::nullopt;
     if (Clock::now() > deadline) {
-      kill(-pid, SIGKILL);
+      kill(pid, SIGKILL);
       while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
       }
       return std::nullopt;
@@ -124,19 +125,18 @@ std::optional<int> wait_until(pid_t pid, Deadline deadline) {
   }
 }
 
-Answer run_once(const std::vector<std::string>& words, const WorkFolder& folder, const Scene& scene,
+Answer run_once(const std::vector<std::string>& words, WorkFolder& folder, const Scene& scene,
                 Deadline deadline) {
-  const fs::path scene_file = folder.path() / "scene.txt";
-  const fs::path counts_file = folder.path() / "counts.pgm";
-  const fs::path error_file = folder.path() / "stderr.txt";
+  const std::string run = std::to_string(folder.next_run());
+  const fs::path scene_file = folder.path() / ("scene_" + run + ".txt");
+  const fs::path counts_file = folder.path() / ("counts_" + run + ".pgm");
+  const fs::path error_file = folder.path() / ("stderr_" + run + ".txt");
   {
     std::ofstream out(scene_file, std::ios::binary | std::ios::trunc);
     out << scene_text(scene);
     if (!out.flush())
       throw std::runtime_error("cannot write the scene file " + scene_file.string());
   }
-  std::error_code ignored;
-  fs::remove(counts_file, ignored);
   std::vector<std::string> argv;
   for (const auto& word : words) {
     argv.push_back(

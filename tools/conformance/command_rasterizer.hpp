@@ -16,12 +16,13 @@ namespace tri::conformance {
 /// an unclosed quote, an empty command, or one without both {scene} and {counts}.
 std::vector<std::string> command_words(std::string_view command);
 
-/// The program the words name, started for each case with posix_spawnp (no shell) in its own
-/// process group: {scene} in any word is replaced by the path of the case's scene file, {counts}
-/// by the path the counts must be written to, both in a private temporary folder. Its standard
-/// output is discarded and its standard error kept for the reason. A run past the deadline is
-/// killed (the whole group) and fails; death by a signal fails; a non-zero exit with a message is
-/// a refusal, without one a failure; an unreadable or missing counts file fails.
+/// The program the words name, started for each case with posix_spawnp (no shell, PATH searched):
+/// {scene} in any word is replaced by the path of the case's scene file, {counts} by the path the
+/// counts must be written to, both new for each run in a private temporary folder. Its standard
+/// input is /dev/null, its standard output discarded, its standard error kept for the reason. A
+/// run past the deadline is killed (SIGKILL; not the processes it started itself) and fails;
+/// death by a signal fails; a non-zero exit with a message is a refusal, without one a failure;
+/// an unreadable or missing counts file fails.
 GradedRasterizer graded_command(std::string_view command);
 
 }  // namespace tri::conformance

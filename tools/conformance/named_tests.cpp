@@ -133,7 +133,7 @@ NamedTest random_triangles_test() {
     const SceneRecipe recipe{.kind = SceneRecipe::Kind::random,
                              .width = 64,
                              .height = 64,
-                             .triangles = high < 1 ? 200 : 60,
+                             .triangles = high < 1 ? 600 : 200,
                              .min_extent = low,
                              .max_extent = high,
                              .grid_bits = 8,
