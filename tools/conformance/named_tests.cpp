@@ -92,6 +92,19 @@ Scene moved(const Scene& scene, glm::dvec2 shift) {
   return out;
 }
 
+// Seeded random triangles on a side x side canvas (measure/scene_generators.hpp).
+Scene random_scene(int side, int triangles, double min_extent, double max_extent, int grid_bits,
+                   std::uint64_t seed) {
+  return generate_scene({.kind = SceneRecipe::Kind::random,
+                         .width = side,
+                         .height = side,
+                         .triangles = triangles,
+                         .min_extent = min_extent,
+                         .max_extent = max_extent,
+                         .grid_bits = grid_bits,
+                         .seed = seed});
+}
+
 TestCase make_case(std::string label, Scene scene, Check check = Check::rule,
                    std::optional<Relation> same_as = std::nullopt) {
   TestCase test_case;
@@ -130,17 +143,9 @@ NamedTest random_triangles_test() {
       {{0.05, 0.5}, {0.5, 2}, {2, 8}, {8, 24}, {24, 64}}};
   std::uint64_t seed = 2601;
   for (const auto& [low, high] : extents) {
-    const SceneRecipe recipe{.kind = SceneRecipe::Kind::random,
-                             .width = 64,
-                             .height = 64,
-                             .triangles = high < 1 ? 600 : 200,
-                             .min_extent = low,
-                             .max_extent = high,
-                             .grid_bits = 8,
-                             .seed = seed++};
     test.cases.push_back(make_case(
         "extent " + std::to_string(low).substr(0, 4) + " to " + std::to_string(high).substr(0, 4),
-        generate_scene(recipe)));
+        random_scene(64, high < 1 ? 600 : 200, low, high, 8, seed++)));
   }
   return test;
 }
@@ -203,22 +208,8 @@ NamedTest vertex_order_test() {
   NamedTest test{
       "vertex_order", "the six vertex orders (both windings) of a scene give the same pixels", {}};
   std::vector<std::pair<std::string, Scene>> bases{
-      {"integer triangles", generate_scene({.kind = SceneRecipe::Kind::random,
-                                            .width = 32,
-                                            .height = 32,
-                                            .triangles = 40,
-                                            .min_extent = 1,
-                                            .max_extent = 12,
-                                            .grid_bits = 0,
-                                            .seed = 2621})},
-      {"1/256 triangles", generate_scene({.kind = SceneRecipe::Kind::random,
-                                          .width = 32,
-                                          .height = 32,
-                                          .triangles = 40,
-                                          .min_extent = 0.5,
-                                          .max_extent = 12,
-                                          .grid_bits = 8,
-                                          .seed = 2622})},
+      {"integer triangles", random_scene(32, 40, 1, 12, 0, 2621)},
+      {"1/256 triangles", random_scene(32, 40, 0.5, 12, 8, 2622)},
       {"flat and shared edges", scene_of(24, 24, grid_mesh({2, 2}, 5, 4, 4))},
   };
   for (auto& [label, scene] : bases) {
@@ -236,16 +227,8 @@ NamedTest translation_test() {
   NamedTest test{"translation", "a scene moved by whole pixels gives the same pixels, moved", {}};
   std::uint64_t seed = 2631;
   for (const int bits : {0, 8}) {
-    // Triangles within about 22..42 of a 64x64 canvas, so every copy stays on it.
-    const Scene small = generate_scene({.kind = SceneRecipe::Kind::random,
-                                        .width = 20,
-                                        .height = 20,
-                                        .triangles = 40,
-                                        .min_extent = 0.5,
-                                        .max_extent = 6,
-                                        .grid_bits = bits,
-                                        .seed = seed++});
-    Scene scene = moved(small, {22, 22});
+    // Vertices within 16..48 of a 64x64 canvas, so that every moved copy stays on it.
+    Scene scene = moved(random_scene(20, 40, 0.5, 6, bits, seed++), {22, 22});
     scene.width = scene.height = 64;
     const std::size_t base = test.cases.size();
     const std::string label = bits == 0 ? "integer triangles" : "1/256 triangles";
@@ -269,20 +252,20 @@ Scene far_scene(double reach, std::uint64_t seed) {
     const glm::dvec2 p = from + reach * glm::dvec2(std::cos(angle), std::sin(angle));
     return on_grid(glm::clamp(p, glm::dvec2(-reach), glm::dvec2(reach)));
   };
-  // A whole-pixel step with an odd component, so that half of it is no pixel centre.
-  const auto step = [&random] {
+  // Whole numbers (x, y) within ±bound drawn until accepted, y after x.
+  const auto draw_pair = [&random](int bound, auto accept) {
     for (;;) {
-      const int dx = random.integer(-7, 7);
-      const int dy = random.integer(-7, 7);
-      if (dx % 2 != 0 || dy % 2 != 0) return glm::dvec2(dx, dy);
+      const int x = random.integer(-bound, bound);
+      const int y = random.integer(-bound, bound);
+      if (accept(x, y)) return glm::dvec2(x, y);
     }
   };
-  const auto nudge = [&random] {
-    for (;;) {
-      const int dx = random.integer(-3, 3);
-      const int dy = random.integer(-3, 3);
-      if (dx != 0 || dy != 0) return glm::dvec2(dx, dy) * unit;
-    }
+  // A whole-pixel step with an odd component, so that half of it is no pixel centre.
+  const auto step = [&] {
+    return draw_pair(7, [](int x, int y) { return x % 2 != 0 || y % 2 != 0; });
+  };
+  const auto nudge = [&] {
+    return unit * draw_pair(3, [](int x, int y) { return x != 0 || y != 0; });
   };
   const auto along = [reach](glm::dvec2 from, glm::dvec2 d) {
     // As many whole steps as stay within ±reach from a start on the canvas.
@@ -381,14 +364,7 @@ NamedTest determinism_test() {
                  "the same scene drawn twice, and with one thread and with all, gives the same "
                  "counts",
                  {}};
-  const Scene scene = generate_scene({.kind = SceneRecipe::Kind::random,
-                                      .width = 96,
-                                      .height = 96,
-                                      .triangles = 400,
-                                      .min_extent = 0.5,
-                                      .max_extent = 40,
-                                      .grid_bits = 8,
-                                      .seed = 2641});
+  const Scene scene = random_scene(96, 400, 0.5, 40, 8, 2641);
   test.cases.push_back(make_case("first drawing", scene, Check::relation));
   test.cases.push_back(make_case("second drawing", scene, Check::relation, Relation{0, {0, 0}}));
   TestCase one_thread = make_case("one thread", scene, Check::relation, Relation{0, {0, 0}});
