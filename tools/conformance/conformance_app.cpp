@@ -20,7 +20,8 @@ const CommandLine& command_line() {
       "Grades a rasterizer on named tests against chapter 07's exact oracle: hard cases, random "
       "triangles on the 1/256 grid, watertight meshes, the tie rule, vertex order, translation, "
       "range (±32768 and ±2^30), degenerate and bad input, determinism. Prints one row per test "
-      "and writes the scorecard (Markdown, CSV, a pixel diagram per failure) into --out.",
+      "and writes the scorecard (Markdown, CSV, a pixel diagram per failure) into --out. A failed "
+      "test is exit status 1.",
       {{"algo", "NAME", "a registered algorithm (raster --list); not one of rule area"},
        {"command", "'PROGRAM ... {scene} {counts}'",
         "a program run once per case without a shell: it reads the scene file {scene} and writes "
@@ -108,9 +109,8 @@ int run_conformance(std::span<const Drawable> drawables, int argc, const char* c
           std::string(rule_name(drawable->rule)) +
           "): anti-aliasing is outside the suite, which grades which pixels are drawn");
     }
-    // An algorithm that claims the top-left rule is graded under it, and so is every other one,
-    // so that the approximate ones show their errors.
-    return run_suite(graded_algorithm(*drawable->colours), rule.value_or(TieRule::top_left),
+    return run_suite(graded_algorithm(*drawable->colours),
+                     rule.value_or(declared_tie_rule(drawable->rule)),
                      std::chrono::seconds(seconds), folder, out, err);
   });
 }

@@ -71,6 +71,19 @@ std::optional<TieRule> parse_tie_rule(std::string_view name) noexcept {
   return std::nullopt;
 }
 
+TieRule declared_tie_rule(CoverageRule rule) noexcept {
+  // Every rule named, so that a newly declared exact rule cannot be missed here (-Wswitch).
+  switch (rule) {
+    case CoverageRule::top_left:
+      return TieRule::top_left;
+    case CoverageRule::inclusive:  // every tie covered: no consistent rule, graded by the truth
+    case CoverageRule::approximate:
+    case CoverageRule::area:
+      return TieRule::top_left;
+  }
+  return TieRule::top_left;
+}
+
 ExpectedCounts expected_counts(const Scene& scene, TieRule rule) {
   if (rule == TieRule::top_left) {
     auto counts = oracle_counts(scene, {});

@@ -9,6 +9,7 @@
 #include <string_view>
 #include <vector>
 
+#include "common/drawable.hpp"
 #include "common/scene.hpp"
 
 namespace tri::conformance {
@@ -24,6 +25,10 @@ enum class TieRule {
 std::string_view tie_rule_name(TieRule rule) noexcept;
 /// The rule a name gives, or nothing for another word.
 std::optional<TieRule> parse_tie_rule(std::string_view name) noexcept;
+
+/// The tie rule a registered algorithm is graded under: the exact rule it declares, else top-left
+/// (so that an approximate algorithm shows its errors against the truth).
+TieRule declared_tie_rule(CoverageRule rule) noexcept;
 
 /// The write counts a rule allows, pixel by pixel (bottom row first, as Canvas::write_counts): a
 /// count c passes when low <= c <= high. For an exact rule low and high are equal.
