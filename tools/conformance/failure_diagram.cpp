@@ -18,8 +18,12 @@ struct View {
   glm::ivec2 first, last;
 };
 
-// The wrong pixels with a margin of two, cut to the canvas and to max_diagram_side around the
-// first wrong pixel.
+bool finite(glm::dvec2 p) {
+  return std::isfinite(p.x) && std::isfinite(p.y);
+}
+
+// The case's triangles with a margin of one pixel when they fit in max_diagram_side, else the
+// wrong pixels with a margin of two, cut to the canvas and to max_diagram_side around the first.
 View view_of(const WrongCase& wrong) {
   std::vector<glm::ivec2> all = wrong.missed;
   all.insert(all.end(), wrong.extra.begin(), wrong.extra.end());
@@ -30,14 +34,29 @@ View view_of(const WrongCase& wrong) {
     low = glm::min(low, p);
     high = glm::max(high, p);
   }
+  glm::dvec2 scene_low(wrong.scene.width, wrong.scene.height), scene_high(-1, -1);
+  for (const auto& primitive : wrong.scene.primitives) {
+    const auto* t = std::get_if<SceneTriangle>(&primitive);
+    if (t == nullptr || !std::all_of(t->vertices.begin(), t->vertices.end(), finite)) continue;
+    for (const glm::dvec2 v : t->vertices) {
+      scene_low = glm::min(scene_low, v);
+      scene_high = glm::max(scene_high, v);
+    }
+  }
+  const glm::ivec2 whole_low =
+      glm::max(glm::ivec2(glm::floor(glm::max(scene_low, -1.0))) - 1, glm::ivec2(0));
+  const glm::ivec2 whole_high = glm::min(
+      glm::ivec2(glm::ceil(glm::min(scene_high, glm::dvec2(canvas_last) + 1.0))) + 1, canvas_last);
+  const glm::ivec2 with_scene_low = glm::min(low, whole_low),
+                   with_scene_high = glm::max(high, whole_high);
+  const glm::ivec2 size = with_scene_high - with_scene_low + 1;
+  if (size.x <= max_diagram_side && size.y <= max_diagram_side) {
+    return {with_scene_low, with_scene_high};
+  }
   low = glm::max(low - 2, glm::ivec2(0));
   high = glm::min(high + 2, canvas_last);
   high = glm::min(high, low + (max_diagram_side - 1));
   return {low, high};
-}
-
-bool finite(glm::dvec2 p) {
-  return std::isfinite(p.x) && std::isfinite(p.y);
 }
 
 }  // namespace
