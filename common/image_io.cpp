@@ -18,7 +18,66 @@ void append_bytes(void* context, void* data, int size) {
   out->insert(out->end(), bytes, bytes + size);
 }
 
+// The next header number of a PGM after whitespace and comments; advances `at` past it.
+long long pgm_header_number(std::span<const std::uint8_t> bytes, std::size_t& at) {
+  while (at < bytes.size()) {
+    if (bytes[at] == '#') {
+      while (at < bytes.size() && bytes[at] != '\n') ++at;
+    } else if (bytes[at] == ' ' || bytes[at] == '\n' || bytes[at] == '\r' || bytes[at] == '\t') {
+      ++at;
+    } else {
+      break;
+    }
+  }
+  long long value = 0;
+  const std::size_t start = at;
+  while (at < bytes.size() && bytes[at] >= '0' && bytes[at] <= '9' && at - start < 9) {
+    value = value * 10 + (bytes[at++] - '0');
+  }
+  if (at == start) throw std::runtime_error("the PGM header lacks a number");
+  return value;
+}
+
 }  // namespace
+
+CountsImage decode_counts_pgm(std::span<const std::uint8_t> bytes) {
+  if (bytes.size() < 2 || bytes[0] != 'P' || bytes[1] != '5') {
+    throw std::runtime_error("not a binary PGM (it does not start with P5)");
+  }
+  std::size_t at = 2;
+  const long long width = pgm_header_number(bytes, at);
+  const long long height = pgm_header_number(bytes, at);
+  const long long maxval = pgm_header_number(bytes, at);
+  if (width < 1 || height < 1 || width > max_canvas_side || height > max_canvas_side) {
+    throw std::runtime_error("a PGM of " + std::to_string(width) + "x" + std::to_string(height) +
+                             " pixels (each side must be 1 to " + std::to_string(max_canvas_side) +
+                             ")");
+  }
+  if (maxval < 1 || maxval > 65535) {
+    throw std::runtime_error("a PGM maxval of " + std::to_string(maxval) + " (1 to 65535)");
+  }
+  if (at >= bytes.size()) throw std::runtime_error("the PGM ends after its header");
+  ++at;  // the single whitespace character that ends the header
+  const std::size_t per_pixel = maxval > 255 ? 2 : 1;
+  const std::size_t expected = static_cast<std::size_t>(width * height) * per_pixel;
+  if (bytes.size() - at != expected) {
+    throw std::runtime_error("the PGM holds " + std::to_string(bytes.size() - at) +
+                             " bytes of pixels where " + std::to_string(expected) +
+                             " were expected");
+  }
+  CountsImage image{static_cast<int>(width), static_cast<int>(height), {}};
+  image.counts.resize(static_cast<std::size_t>(width * height));
+  for (int row = 0; row < image.height; ++row) {
+    const int y = image.height - 1 - row;  // the file's first row is the top one
+    for (int x = 0; x < image.width; ++x) {
+      const std::size_t from = at + (static_cast<std::size_t>(row) * image.width + x) * per_pixel;
+      const std::uint32_t value =
+          per_pixel == 2 ? (std::uint32_t{bytes[from]} << 8) | bytes[from + 1] : bytes[from];
+      image.counts[pixel_index(x, y, image.width)] = value;
+    }
+  }
+  return image;
+}
 
 std::vector<std::uint8_t> encode_png(const Canvas& canvas) {
   const int w = canvas.width();

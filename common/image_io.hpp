@@ -18,6 +18,19 @@ std::vector<std::uint8_t> encode_png(const Canvas& canvas);
 /// saturate), top row first. Throws std::logic_error when write counting is off.
 std::vector<std::uint8_t> encode_counts_pgm(const Canvas& canvas);
 
+/// Write counts read back from a binary PGM, bottom row first (as Canvas::write_counts).
+struct CountsImage {
+  int width = 0;
+  int height = 0;
+  std::vector<std::uint32_t> counts;
+};
+
+/// Reads what encode_counts_pgm writes: "P5", width, height, a maxval of at most 65535 (two bytes
+/// a pixel, big-endian, above 255), '#' comments in the header, top row first. Throws
+/// std::runtime_error saying what is wrong (a bad header, a side beyond max_canvas_side, a short
+/// or long body).
+CountsImage decode_counts_pgm(std::span<const std::uint8_t> bytes);
+
 /// Writes bytes to a file by the promises of output_files.hpp (a unique temporary, synced, renamed
 /// over the target), so a failure never leaves a half-written file behind. Creates missing parent
 /// folders. Throws OutputError (a std::runtime_error) with the path and the reason on failure.

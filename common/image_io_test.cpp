@@ -146,6 +146,32 @@ TEST_CASE("The counts PGM needs write counting to be on", "[common][image_io]") 
   CHECK_THROWS_AS(encode_counts_pgm(canvas), std::logic_error);
 }
 
+TEST_CASE("decode_counts_pgm reads back what encode_counts_pgm wrote, bottom row first",
+          "[common][image_io]") {
+  Canvas canvas(3, 2);
+  canvas.enable_write_counts();
+  canvas.put_pixel(0, 0, colors::white);
+  canvas.put_pixel(2, 1, colors::white);
+  canvas.put_pixel(2, 1, colors::white);
+  const CountsImage image = decode_counts_pgm(encode_counts_pgm(canvas));
+  CHECK(image.width == 3);
+  CHECK(image.height == 2);
+  const auto counts = canvas.write_counts();
+  CHECK(image.counts == std::vector<std::uint32_t>(counts.begin(), counts.end()));
+}
+
+TEST_CASE("decode_counts_pgm reads comments and two-byte counts, and refuses a short body",
+          "[common][image_io]") {
+  std::vector<std::uint8_t> pgm = bytes_of("P5\n# a comment\n2 1\n65535\n");
+  pgm.insert(pgm.end(), {0x01, 0x02, 0x00, 0x07});
+  const CountsImage image = decode_counts_pgm(pgm);
+  CHECK(image.counts == std::vector<std::uint32_t>{258, 7});
+  pgm.pop_back();
+  CHECK_THROWS_WITH(decode_counts_pgm(pgm), Catch::Contains("3 bytes of pixels where 4"));
+  CHECK_THROWS_WITH(decode_counts_pgm(bytes_of("P6\n1 1\n255\n\x01")), Catch::Contains("P5"));
+  CHECK_THROWS_WITH(decode_counts_pgm(bytes_of("P5\n0 1\n255\n")), Catch::Contains("0x1"));
+}
+
 TEST_CASE("The PNG has the PNG signature and an 8-bit RGBA header of the canvas size",
           "[common][image_io][png]") {
   const auto png = encode_png(numbered_canvas());
