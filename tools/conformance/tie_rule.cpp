@@ -76,6 +76,8 @@ TieRule declared_tie_rule(CoverageRule rule) noexcept {
   switch (rule) {
     case CoverageRule::top_left:
       return TieRule::top_left;
+    case CoverageRule::bottom_left:
+      return TieRule::bottom_left;
     case CoverageRule::inclusive:  // every tie covered: no consistent rule, graded by the truth
     case CoverageRule::approximate:
     case CoverageRule::area:
