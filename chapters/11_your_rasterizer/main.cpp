@@ -1,0 +1,53 @@
+// Chapter 11's program: grades your fill (your_fill.cpp) on the conformance suite (--grade), and
+// writes the chapter's figures (--out): the scorecards of the book's own rasterizers.
+#include <chrono>
+#include <filesystem>
+#include <iostream>
+#include <string>
+
+#include "chapters/11_your_rasterizer/grade_your_fill.hpp"
+#include "chapters/11_your_rasterizer/scorecards_page.hpp"
+#include "common/cli.hpp"
+#include "common/figures.hpp"
+#include "measure/registry.hpp"
+#include "tools/conformance/failure_diagram.hpp"
+#include "tools/conformance/tie_rule.hpp"
+
+int main(int argc, char** argv) {
+  const tri::CommandLine command_line(
+      "11_your_rasterizer",
+      "Chapter 11, your rasterizer. --grade DIR grades your_fill (chapters/11_your_rasterizer/\n"
+      "your_fill.cpp) on the conformance suite and writes its scorecard into DIR; --out DIR\n"
+      "writes the chapter's figures: scorecards.md, the scorecards of every rasterizer of the\n"
+      "book, and the diagram of each failure (scorecard_NAME_TEST.svg).",
+      {{"grade", "DIR", "grade your_fill and write its scorecard (scorecard.md, .csv, diagrams)"},
+       {"rule", "top-left|bottom-left|any", "the tie rule your fill is graded under (default top-left)"},
+       {"out", "DIR", "write the book's scorecards page and its diagrams (default out)"}});
+  return tri::run_command_line(
+      command_line, argc, argv, std::cout, std::cerr, [&](const tri::CliArguments& args) {
+        if (const auto folder = args.value("grade")) {
+          const std::string rule_name = args.value_or("rule", "top-left");
+          const auto rule = tri::conformance::parse_tie_rule(rule_name);
+          if (!rule) throw tri::UsageError("--rule takes top-left, bottom-left or any, not " + rule_name);
+          return tri::ch11::grade_your_fill(*rule, std::filesystem::path(*folder), std::cout,
+                                            std::cerr);
+        }
+        if (args.has("rule")) throw tri::UsageError("--rule goes with --grade");
+        tri::FigureWriter figures(args.value_or("out", "out"), std::cout);
+        const auto drawables = tri::registered_drawables();
+        const auto cards = tri::ch11::book_scorecards(drawables);
+        for (const auto& card : cards) {
+          for (const auto& r : card.results) {
+            if (r.passed || !r.smallest_failure) continue;
+            std::string name = tri::ch11::page_diagram_name(card, r);
+            name.resize(name.size() - 4);  // FigureWriter adds ".svg"
+            figures.save_svg(name, tri::conformance::failure_diagram_svg(
+                                       tri::ch11::page_case(*r.smallest_failure, 16),
+                                       card.rasterizer + ", " + r.test + ": " +
+                                           r.smallest_failure->label));
+          }
+        }
+        figures.save_text("scorecards.md", tri::ch11::scorecards_markdown(cards));
+        return tri::exit_success;
+      });
+}

@@ -1,0 +1,101 @@
+#include "chapters/11_your_rasterizer/scorecards_page.hpp"
+
+#include <algorithm>
+#include <iterator>
+#include <sstream>
+#include <variant>
+
+#include <glm/common.hpp>
+
+#include "tools/conformance/graded_rasterizer.hpp"
+#include "tools/conformance/grading.hpp"
+#include "tools/conformance/named_tests.hpp"
+#include "tools/conformance/tie_rule.hpp"
+
+namespace tri::ch11 {
+
+std::vector<conformance::Scorecard> book_scorecards(std::span<const Drawable> drawables) {
+  const auto tests = conformance::named_tests();
+  std::vector<conformance::Scorecard> cards;
+  for (const Drawable& d : drawables) {
+    if (d.colours == nullptr) continue;  // fractions of pixels: not what the suite grades
+    const conformance::TieRule rule = conformance::declared_tie_rule(d.rule);
+    cards.push_back({std::string(d.name), rule,
+                     conformance::grade_all(tests, conformance::graded_algorithm(*d.colours), rule)});
+  }
+  return cards;
+}
+
+std::string page_diagram_name(const conformance::Scorecard& card,
+                              const conformance::TestResult& result) {
+  return "scorecard_" + card.rasterizer + "_" + result.test + ".svg";
+}
+
+conformance::WrongCase page_case(const conformance::WrongCase& wrong, int side) {
+  const std::vector<glm::ivec2>& any = wrong.missed.empty() ? wrong.extra : wrong.missed;
+  if (any.empty()) return wrong;
+  const glm::ivec2 low = any.front() - side / 2, high = low + (side - 1);
+  const auto inside = [&](glm::ivec2 p) {
+    return p.x >= low.x && p.y >= low.y && p.x <= high.x && p.y <= high.y;
+  };
+  const auto kept = [&](const std::vector<glm::ivec2>& pixels) {
+    std::vector<glm::ivec2> out;
+    std::copy_if(pixels.begin(), pixels.end(), std::back_inserter(out), inside);
+    return out;
+  };
+  conformance::WrongCase cut = wrong;
+  cut.missed = kept(wrong.missed);
+  cut.extra = kept(wrong.extra);
+  cut.doubled = kept(wrong.doubled);
+  cut.scene.primitives.clear();
+  for (const auto& primitive : wrong.scene.primitives) {
+    const auto* t = std::get_if<SceneTriangle>(&primitive);
+    if (t == nullptr) continue;
+    glm::dvec2 t_low = t->vertices[0], t_high = t->vertices[0];
+    for (const glm::dvec2 v : t->vertices) {
+      t_low = glm::min(t_low, v);
+      t_high = glm::max(t_high, v);
+    }
+    // A NaN vertex fails every comparison: such a triangle is never drawn, nor kept here.
+    if (t_high.x >= low.x - 1 && t_high.y >= low.y - 1 && t_low.x <= high.x + 1 &&
+        t_low.y <= high.y + 1) {
+      cut.scene.primitives.push_back(*t);
+    }
+  }
+  return cut;
+}
+
+std::string scorecards_markdown(std::span<const conformance::Scorecard> cards) {
+  std::ostringstream md;
+  md << "# Scorecards <!-- doxygen: {#scorecards} -->\n\n"
+     << "Every rasterizer of the book that draws pixels, graded by the conformance suite "
+        "(`tools/conformance`, chapter 11) under the tie rule it declares (top-left for those "
+        "that declare no exact rule, so their errors show). A failed test links the pixel "
+        "diagram of its smallest failing case: missed pixels, extra pixels and pixels drawn "
+        "twice, marked over the ideal triangles. This page is written by "
+        "`11_your_rasterizer --out`.\n\n";
+  if (cards.empty()) return md.str();
+  md << "| rasterizer | rule |";
+  for (const auto& r : cards.front().results) md << " `" << r.test << "` |";
+  md << "\n|---|---|";
+  for (std::size_t i = 0; i < cards.front().results.size(); ++i) md << "---|";
+  md << "\n";
+  for (const conformance::Scorecard& card : cards) {
+    md << "| `" << card.rasterizer << "` | " << conformance::tie_rule_name(card.rule) << " |";
+    for (const conformance::TestResult& r : card.results) {
+      if (r.passed) {
+        md << " pass |";
+      } else if (r.smallest_failure) {
+        md << " [**fail**](" << page_diagram_name(card, r) << ") |";
+      } else {
+        md << " **fail** |";
+      }
+    }
+    md << "\n";
+  }
+  md << "\nWhat each test checks:\n\n";
+  for (const auto& r : cards.front().results) md << "- `" << r.test << "`: " << r.promise << "\n";
+  return md.str();
+}
+
+}  // namespace tri::ch11
