@@ -4,8 +4,8 @@
 #include <string>
 
 #include "chapters/11_your_rasterizer/your_fill.hpp"
-#include "tools/conformance/conformance_app.hpp"
-#include "tools/conformance/grading.hpp"
+#include "chapters/11_your_rasterizer/conformance_app.hpp"
+#include "chapters/11_your_rasterizer/grading.hpp"
 
 namespace tri::ch11 {
 

@@ -6,8 +6,8 @@
 #include <filesystem>
 #include <ostream>
 
-#include "tools/conformance/graded_rasterizer.hpp"
-#include "tools/conformance/tie_rule.hpp"
+#include "chapters/11_your_rasterizer/graded_rasterizer.hpp"
+#include "chapters/11_your_rasterizer/tie_rule.hpp"
 
 namespace tri::ch11 {
 

@@ -10,8 +10,8 @@
 #include "common/cli.hpp"
 #include "common/figures.hpp"
 #include "measure/registry.hpp"
-#include "tools/conformance/failure_diagram.hpp"
-#include "tools/conformance/tie_rule.hpp"
+#include "chapters/11_your_rasterizer/failure_diagram.hpp"
+#include "chapters/11_your_rasterizer/tie_rule.hpp"
 
 int main(int argc, char** argv) {
   const tri::CommandLine command_line(

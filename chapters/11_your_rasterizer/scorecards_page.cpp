@@ -7,10 +7,10 @@
 
 #include <glm/common.hpp>
 
-#include "tools/conformance/graded_rasterizer.hpp"
-#include "tools/conformance/grading.hpp"
-#include "tools/conformance/named_tests.hpp"
-#include "tools/conformance/tie_rule.hpp"
+#include "chapters/11_your_rasterizer/graded_rasterizer.hpp"
+#include "chapters/11_your_rasterizer/grading.hpp"
+#include "chapters/11_your_rasterizer/named_tests.hpp"
+#include "chapters/11_your_rasterizer/tie_rule.hpp"
 
 namespace tri::ch11 {
 
@@ -69,7 +69,7 @@ std::string scorecards_markdown(std::span<const conformance::Scorecard> cards) {
   std::ostringstream md;
   md << "# Scorecards <!-- doxygen: {#scorecards} -->\n\n"
      << "Every rasterizer of the book that draws pixels, graded by the conformance suite "
-        "(`tools/conformance`, chapter 11) under the tie rule it declares (top-left for those "
+        "(chapter 11) under the tie rule it declares (top-left for those "
         "that declare no exact rule, so their errors show). A failed test links the pixel "
         "diagram of its smallest failing case: missed pixels, extra pixels and pixels drawn "
         "twice, marked over the ideal triangles. This page is written by "

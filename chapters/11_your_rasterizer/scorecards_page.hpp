@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "measure/drawable.hpp"
-#include "tools/conformance/grading.hpp"
-#include "tools/conformance/scorecard.hpp"
+#include "chapters/11_your_rasterizer/grading.hpp"
+#include "chapters/11_your_rasterizer/scorecard.hpp"
 
 namespace tri::ch11 {
 

@@ -6,7 +6,7 @@
 #include <string>
 
 #include "measure/registry.hpp"
-#include "tools/conformance/named_tests.hpp"
+#include "chapters/11_your_rasterizer/named_tests.hpp"
 
 namespace {
 

@@ -5,7 +5,7 @@
 
 #include "measure/area_error.hpp"
 #include "measure/registry.hpp"
-#include "tests/hard_cases/hard_cases.hpp"
+#include "measure/hard_cases.hpp"
 
 TEST_CASE("area_cells is within one 16-bit unit of the exact area on every hard case on the grid",
           "[hard_cases][area]") {

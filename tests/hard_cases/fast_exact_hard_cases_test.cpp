@@ -3,7 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include "chapters/08_fast_exact/algorithms.hpp"
-#include "tests/hard_cases/hard_cases.hpp"
+#include "measure/hard_cases.hpp"
 
 TEST_CASE("Every variant of the chapter is safe and exact on every hard case", "[hard_cases]") {
   for (const auto& algorithm : tri::ch08::triangle_algorithms()) {

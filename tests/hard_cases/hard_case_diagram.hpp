@@ -8,7 +8,7 @@
 
 #include <glm/vec2.hpp>
 
-#include "tests/hard_cases/hard_cases.hpp"
+#include "measure/hard_cases.hpp"
 
 namespace tri::hard_cases {
 

@@ -11,7 +11,7 @@
 #include "measure/registry.hpp"
 #include "tests/hard_cases/hard_case_diagram.hpp"
 #include "tests/hard_cases/hard_case_page.hpp"
-#include "tests/hard_cases/hard_cases.hpp"
+#include "measure/hard_cases.hpp"
 
 int main(int argc, char** argv) {
   const tri::CommandLine command_line(

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "tests/hard_cases/hard_cases.hpp"
+#include "measure/hard_cases.hpp"
 
 namespace tri::hard_cases {
 

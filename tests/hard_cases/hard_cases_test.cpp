@@ -9,7 +9,7 @@
 #include "measure/registry.hpp"
 #include "tests/hard_cases/hard_case_diagram.hpp"
 #include "tests/hard_cases/hard_case_page.hpp"
-#include "tests/hard_cases/hard_cases.hpp"
+#include "measure/hard_cases.hpp"
 
 using namespace tri::hard_cases;
 

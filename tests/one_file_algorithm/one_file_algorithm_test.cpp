@@ -14,7 +14,7 @@
 #include "chapters/10_speed_vs_error/report.hpp"
 #include "measure/machine.hpp"
 #include "measure/registry.hpp"
-#include "tests/hard_cases/hard_cases.hpp"
+#include "measure/hard_cases.hpp"
 #include "tests/support/scratch_folder.hpp"
 #include "tools/raster_app.hpp"
 

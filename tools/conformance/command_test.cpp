@@ -7,10 +7,10 @@
 #include <vector>
 
 #include "tests/support/scratch_folder.hpp"
-#include "tools/conformance/command_rasterizer.hpp"
-#include "tools/conformance/conformance_app.hpp"
-#include "tools/conformance/grading.hpp"
-#include "tools/conformance/named_tests.hpp"
+#include "chapters/11_your_rasterizer/command_rasterizer.hpp"
+#include "chapters/11_your_rasterizer/conformance_app.hpp"
+#include "chapters/11_your_rasterizer/grading.hpp"
+#include "chapters/11_your_rasterizer/named_tests.hpp"
 
 using namespace tri;
 using namespace tri::conformance;

@@ -2,7 +2,7 @@
 // chapter can run it.
 #include <iostream>
 
-#include "tools/conformance/conformance_app.hpp"
+#include "chapters/11_your_rasterizer/conformance_app.hpp"
 
 int main(int argc, char** argv) {
   return tri::conformance::run_conformance(argc, argv, std::cout, std::cerr);

@@ -11,9 +11,9 @@
 #include "chapters/07_exact_coverage/coverage_oracle.hpp"
 #include "measure/registry.hpp"
 #include "tests/support/scratch_folder.hpp"
-#include "tools/conformance/conformance_app.hpp"
-#include "tools/conformance/grading.hpp"
-#include "tools/conformance/named_tests.hpp"
+#include "chapters/11_your_rasterizer/conformance_app.hpp"
+#include "chapters/11_your_rasterizer/grading.hpp"
+#include "chapters/11_your_rasterizer/named_tests.hpp"
 
 namespace fs = std::filesystem;
 using namespace tri;

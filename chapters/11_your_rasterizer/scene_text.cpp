@@ -1,4 +1,4 @@
-#include "tools/conformance/scene_text.hpp"
+#include "chapters/11_your_rasterizer/scene_text.hpp"
 
 #include <array>
 #include <charconv>

@@ -11,7 +11,7 @@
 #include <glm/vec2.hpp>
 
 #include "common/scene.hpp"
-#include "tools/conformance/graded_rasterizer.hpp"
+#include "chapters/11_your_rasterizer/graded_rasterizer.hpp"
 
 namespace tri::conformance {
 

@@ -13,9 +13,9 @@
 #include <glm/vec2.hpp>
 
 #include "common/scene.hpp"
-#include "tools/conformance/graded_rasterizer.hpp"
-#include "tools/conformance/named_tests.hpp"
-#include "tools/conformance/tie_rule.hpp"
+#include "chapters/11_your_rasterizer/graded_rasterizer.hpp"
+#include "chapters/11_your_rasterizer/named_tests.hpp"
+#include "chapters/11_your_rasterizer/tie_rule.hpp"
 
 namespace tri::conformance {
 

@@ -1,4 +1,4 @@
-#include "tools/conformance/command_rasterizer.hpp"
+#include "chapters/11_your_rasterizer/command_rasterizer.hpp"
 
 #include <fcntl.h>
 #include <spawn.h>
@@ -21,7 +21,7 @@
 #include "common/cli.hpp"
 #include "common/image_io.hpp"
 #include "common/printable_text.hpp"
-#include "tools/conformance/scene_text.hpp"
+#include "chapters/11_your_rasterizer/scene_text.hpp"
 
 extern char** environ;
 

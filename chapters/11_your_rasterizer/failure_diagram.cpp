@@ -1,4 +1,4 @@
-#include "tools/conformance/failure_diagram.hpp"
+#include "chapters/11_your_rasterizer/failure_diagram.hpp"
 
 #include <algorithm>
 #include <cmath>

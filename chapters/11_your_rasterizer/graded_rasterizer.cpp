@@ -1,4 +1,4 @@
-#include "tools/conformance/graded_rasterizer.hpp"
+#include "chapters/11_your_rasterizer/graded_rasterizer.hpp"
 
 #include <utility>
 #include <variant>

@@ -1,4 +1,4 @@
-#include "tools/conformance/conformance_app.hpp"
+#include "chapters/11_your_rasterizer/conformance_app.hpp"
 
 #include <algorithm>
 #include <string>
@@ -8,8 +8,8 @@
 #include "common/output_files.hpp"
 #include "common/printable_text.hpp"
 #include "measure/registry.hpp"
-#include "tools/conformance/command_rasterizer.hpp"
-#include "tools/conformance/named_tests.hpp"
+#include "chapters/11_your_rasterizer/command_rasterizer.hpp"
+#include "chapters/11_your_rasterizer/named_tests.hpp"
 
 namespace tri::conformance {
 namespace {

@@ -1,4 +1,4 @@
-#include "tests/hard_cases/hard_cases.hpp"
+#include "measure/hard_cases.hpp"
 
 #include <cmath>
 #include <limits>

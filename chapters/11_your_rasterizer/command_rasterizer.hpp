@@ -7,7 +7,7 @@
 #include <string_view>
 #include <vector>
 
-#include "tools/conformance/graded_rasterizer.hpp"
+#include "chapters/11_your_rasterizer/graded_rasterizer.hpp"
 
 namespace tri::conformance {
 

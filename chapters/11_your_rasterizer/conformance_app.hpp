@@ -7,7 +7,7 @@
 #include <span>
 
 #include "measure/drawable.hpp"
-#include "tools/conformance/scorecard.hpp"
+#include "chapters/11_your_rasterizer/scorecard.hpp"
 
 namespace tri::conformance {
 

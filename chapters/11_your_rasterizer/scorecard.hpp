@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "tools/conformance/grading.hpp"
-#include "tools/conformance/tie_rule.hpp"
+#include "chapters/11_your_rasterizer/grading.hpp"
+#include "chapters/11_your_rasterizer/tie_rule.hpp"
 
 namespace tri::conformance {
 

@@ -1,4 +1,4 @@
-#include "tools/conformance/grading.hpp"
+#include "chapters/11_your_rasterizer/grading.hpp"
 
 #include <algorithm>
 #include <variant>

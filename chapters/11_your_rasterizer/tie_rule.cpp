@@ -1,4 +1,4 @@
-#include "tools/conformance/tie_rule.hpp"
+#include "chapters/11_your_rasterizer/tie_rule.hpp"
 
 #include <algorithm>
 #include <array>

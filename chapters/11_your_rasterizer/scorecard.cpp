@@ -1,11 +1,11 @@
-#include "tools/conformance/scorecard.hpp"
+#include "chapters/11_your_rasterizer/scorecard.hpp"
 
 #include <algorithm>
 #include <sstream>
 
 #include "common/output_files.hpp"
 #include "common/printable_text.hpp"
-#include "tools/conformance/failure_diagram.hpp"
+#include "chapters/11_your_rasterizer/failure_diagram.hpp"
 
 namespace tri::conformance {
 namespace {

@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "tools/conformance/grading.hpp"
+#include "chapters/11_your_rasterizer/grading.hpp"
 
 namespace tri::conformance {
 

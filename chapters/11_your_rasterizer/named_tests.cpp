@@ -1,4 +1,4 @@
-#include "tools/conformance/named_tests.hpp"
+#include "chapters/11_your_rasterizer/named_tests.hpp"
 
 #include <array>
 #include <cmath>
@@ -12,7 +12,7 @@
 
 #include "common/random.hpp"
 #include "measure/scene_generators.hpp"
-#include "tests/hard_cases/hard_cases.hpp"
+#include "measure/hard_cases.hpp"
 
 namespace tri::conformance {
 namespace {
