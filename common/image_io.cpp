@@ -105,15 +105,21 @@ std::vector<std::uint8_t> encode_counts_pgm(const Canvas& canvas) {
   if (!canvas.write_counts_enabled()) {
     throw std::logic_error("write counts were not enabled on this canvas");
   }
-  const int w = canvas.width();
-  const int h = canvas.height();
+  return encode_counts_pgm(canvas.width(), canvas.height(), canvas.write_counts());
+}
+
+std::vector<std::uint8_t> encode_counts_pgm(int w, int h, std::span<const std::uint32_t> counts) {
+  if (counts.size() != static_cast<std::size_t>(w) * static_cast<std::size_t>(h)) {
+    throw std::logic_error("the write counts do not match a " + std::to_string(w) + "x" +
+                           std::to_string(h) + " canvas");
+  }
   const std::string header = "P5\n" + std::to_string(w) + " " + std::to_string(h) + "\n255\n";
   std::vector<std::uint8_t> pgm(header.begin(), header.end());
-  pgm.reserve(pgm.size() + static_cast<std::size_t>(w) * h);
+  pgm.reserve(pgm.size() + counts.size());
   for (int y = h - 1; y >= 0; --y) {
     for (int x = 0; x < w; ++x) {
       pgm.push_back(
-          static_cast<std::uint8_t>(std::min<std::uint32_t>(canvas.write_count(x, y), 255)));
+          static_cast<std::uint8_t>(std::min<std::uint32_t>(counts[pixel_index(x, y, w)], 255)));
     }
   }
   return pgm;

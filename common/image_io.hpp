@@ -17,6 +17,9 @@ std::vector<std::uint8_t> encode_png(const Canvas& canvas);
 /// The canvas's per-pixel write counts as a binary PGM ("P5", maxval 255, counts above 255
 /// saturate), top row first. Throws std::logic_error when write counting is off.
 std::vector<std::uint8_t> encode_counts_pgm(const Canvas& canvas);
+/// The same for counts held apart from a canvas: w x h of them, bottom row first (as
+/// Canvas::write_counts). Throws std::logic_error when their number is not w x h.
+std::vector<std::uint8_t> encode_counts_pgm(int w, int h, std::span<const std::uint32_t> counts);
 
 /// Write counts read back from a binary PGM, bottom row first (as Canvas::write_counts).
 struct CountsImage {

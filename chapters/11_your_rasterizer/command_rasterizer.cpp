@@ -18,10 +18,10 @@
 #include <stdexcept>
 #include <thread>
 
+#include "chapters/11_your_rasterizer/scene_text.hpp"
 #include "common/cli.hpp"
 #include "common/image_io.hpp"
 #include "common/printable_text.hpp"
-#include "chapters/11_your_rasterizer/scene_text.hpp"
 
 extern char** environ;
 
@@ -149,7 +149,11 @@ Answer run_once(const std::vector<std::string>& words, WorkFolder& folder, const
     return failed(e.what());
   }
   const std::optional<int> status = wait_until(pid, deadline);
-  const std::string message = printable_excerpt(read_file(error_file));
+  // The program's own words, whole up to a line's worth (a refusal says why), escaped.
+  std::string said = read_file(error_file);
+  while (!said.empty() && (said.back() == '\n' || said.back() == '\r')) said.pop_back();
+  const std::string message =
+      said.size() <= 400 ? printable_text(said) : printable_text(said.substr(0, 400)) + "...";
   if (!status) return failed("did not finish in time and was killed");
   if (WIFSIGNALED(*status)) {
     return failed("crashed: " + signal_name(WTERMSIG(*status)) +

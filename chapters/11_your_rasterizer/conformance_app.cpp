@@ -4,12 +4,12 @@
 #include <string>
 #include <vector>
 
+#include "chapters/11_your_rasterizer/command_rasterizer.hpp"
+#include "chapters/11_your_rasterizer/named_tests.hpp"
 #include "common/cli.hpp"
 #include "common/output_files.hpp"
 #include "common/printable_text.hpp"
 #include "measure/registry.hpp"
-#include "chapters/11_your_rasterizer/command_rasterizer.hpp"
-#include "chapters/11_your_rasterizer/named_tests.hpp"
 
 namespace tri::conformance {
 namespace {

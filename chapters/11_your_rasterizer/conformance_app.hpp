@@ -6,8 +6,8 @@
 #include <ostream>
 #include <span>
 
-#include "measure/drawable.hpp"
 #include "chapters/11_your_rasterizer/scorecard.hpp"
+#include "measure/drawable.hpp"
 
 namespace tri::conformance {
 

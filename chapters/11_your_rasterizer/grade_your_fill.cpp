@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <string>
 
-#include "chapters/11_your_rasterizer/your_fill.hpp"
 #include "chapters/11_your_rasterizer/conformance_app.hpp"
 #include "chapters/11_your_rasterizer/grading.hpp"
+#include "chapters/11_your_rasterizer/your_fill.hpp"
 
 namespace tri::ch11 {
 

@@ -12,10 +12,10 @@
 
 #include <glm/vec2.hpp>
 
-#include "common/scene.hpp"
 #include "chapters/11_your_rasterizer/graded_rasterizer.hpp"
 #include "chapters/11_your_rasterizer/named_tests.hpp"
 #include "chapters/11_your_rasterizer/tie_rule.hpp"
+#include "common/scene.hpp"
 
 namespace tri::conformance {
 

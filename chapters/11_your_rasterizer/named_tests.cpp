@@ -11,8 +11,8 @@
 #include <glm/common.hpp>
 
 #include "common/random.hpp"
-#include "measure/scene_generators.hpp"
 #include "measure/hard_cases.hpp"
+#include "measure/scene_generators.hpp"
 
 namespace tri::conformance {
 namespace {

@@ -10,8 +10,8 @@
 
 #include <glm/vec2.hpp>
 
-#include "common/scene.hpp"
 #include "chapters/11_your_rasterizer/graded_rasterizer.hpp"
+#include "common/scene.hpp"
 
 namespace tri::conformance {
 

@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <sstream>
 
+#include "chapters/11_your_rasterizer/failure_diagram.hpp"
 #include "common/output_files.hpp"
 #include "common/printable_text.hpp"
-#include "chapters/11_your_rasterizer/failure_diagram.hpp"
 
 namespace tri::conformance {
 namespace {

@@ -7,6 +7,7 @@
 
 #include <glm/common.hpp>
 
+#include "chapters/11_your_rasterizer/command_rasterizer.hpp"
 #include "chapters/11_your_rasterizer/graded_rasterizer.hpp"
 #include "chapters/11_your_rasterizer/grading.hpp"
 #include "chapters/11_your_rasterizer/named_tests.hpp"
@@ -20,8 +21,9 @@ std::vector<conformance::Scorecard> book_scorecards(std::span<const Drawable> dr
   for (const Drawable& d : drawables) {
     if (d.colours == nullptr) continue;  // fractions of pixels: not what the suite grades
     const conformance::TieRule rule = conformance::declared_tie_rule(d.rule);
-    cards.push_back({std::string(d.name), rule,
-                     conformance::grade_all(tests, conformance::graded_algorithm(*d.colours), rule)});
+    cards.push_back(
+        {std::string(d.name), rule,
+         conformance::grade_all(tests, conformance::graded_algorithm(*d.colours), rule)});
   }
   return cards;
 }
@@ -65,15 +67,11 @@ conformance::WrongCase page_case(const conformance::WrongCase& wrong, int side) 
   return cut;
 }
 
-std::string scorecards_markdown(std::span<const conformance::Scorecard> cards) {
+namespace {
+
+// One row per rasterizer, one column per test, and the list of what each test checks.
+std::string scorecards_table(std::span<const conformance::Scorecard> cards) {
   std::ostringstream md;
-  md << "# Scorecards <!-- doxygen: {#scorecards} -->\n\n"
-     << "Every rasterizer of the book that draws pixels, graded by the conformance suite "
-        "(chapter 11) under the tie rule it declares (top-left for those "
-        "that declare no exact rule, so their errors show). A failed test links the pixel "
-        "diagram of its smallest failing case: missed pixels, extra pixels and pixels drawn "
-        "twice, marked over the ideal triangles. This page is written by "
-        "`11_your_rasterizer --out`.\n\n";
   if (cards.empty()) return md.str();
   md << "| rasterizer | rule |";
   for (const auto& r : cards.front().results) md << " `" << r.test << "` |";
@@ -95,7 +93,56 @@ std::string scorecards_markdown(std::span<const conformance::Scorecard> cards) {
   }
   md << "\nWhat each test checks:\n\n";
   for (const auto& r : cards.front().results) md << "- `" << r.test << "`: " << r.promise << "\n";
+  // A refused scene, a crash or a hang has no wrong pixels to draw: its reason is the story.
+  bool any_without_diagram = false;
+  for (const conformance::Scorecard& card : cards) {
+    for (const conformance::TestResult& r : card.results) {
+      if (r.passed || r.smallest_failure) continue;
+      if (!any_without_diagram) md << "\nFailures without wrong pixels to show:\n\n";
+      any_without_diagram = true;
+      md << "- `" << card.rasterizer << "`, `" << r.test << "`: " << r.detail << "\n";
+    }
+  }
   return md.str();
+}
+
+}  // namespace
+
+std::string scorecards_markdown(std::span<const conformance::Scorecard> cards) {
+  return "# Scorecards <!-- doxygen: {#scorecards} -->\n\n"
+         "Every rasterizer of the book that draws pixels, graded by the conformance suite "
+         "(chapter 11) under the tie rule it declares (top-left for those that declare no exact "
+         "rule, so their errors show). A failed test links the pixel diagram of its smallest "
+         "failing case: missed pixels, extra pixels and pixels drawn twice, marked over the ideal "
+         "triangles. This page is written by `11_your_rasterizer --out`; where the site is built "
+         "with the "
+         "peers of chapter 10, their scorecards are on a page of their own.\n\n" +
+         scorecards_table(cards);
+}
+
+std::vector<conformance::Scorecard> peer_scorecards(std::span<const ExternalPeer> peers,
+                                                    const std::string& adapter) {
+  const auto tests = conformance::named_tests();
+  std::vector<conformance::Scorecard> cards;
+  for (const ExternalPeer& peer : peers) {
+    const conformance::TieRule rule = conformance::declared_tie_rule(peer.rule);
+    const std::string command =
+        adapter + " --peer " + std::string(peer.name) + " --scene {scene} --counts {counts}";
+    cards.push_back({std::string(peer.name), rule,
+                     conformance::grade_all(tests, conformance::graded_command(command), rule)});
+  }
+  return cards;
+}
+
+std::string peer_scorecards_markdown(std::span<const conformance::Scorecard> cards,
+                                     const std::string& status) {
+  return "# Scorecards of the peers <!-- doxygen: {#scorecards_peers} -->\n\n"
+         "The rasterizers from outside the book that chapter 10 measures, graded by the same "
+         "suite as [the book's own](scorecards.md), each through the `--command` protocol by a "
+         "small adapter (`tools/peer_rasterizer`) and under the tie rule it declares. A scene "
+         "beyond a library's fixed-point range is refused with a message, and the test that "
+         "holds it fails with that reason. Peers of this build: " +
+         status + ".\n\n" + scorecards_table(cards);
 }
 
 }  // namespace tri::ch11

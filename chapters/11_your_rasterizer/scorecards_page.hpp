@@ -8,9 +8,10 @@
 #include <string>
 #include <vector>
 
-#include "measure/drawable.hpp"
 #include "chapters/11_your_rasterizer/grading.hpp"
 #include "chapters/11_your_rasterizer/scorecard.hpp"
+#include "measure/drawable.hpp"
+#include "measure/peers/peer.hpp"
 
 namespace tri::ch11 {
 
@@ -27,5 +28,15 @@ conformance::WrongCase page_case(const conformance::WrongCase& wrong, int side);
 
 /// The page (docs/figures/scorecards.md, on the site): the table and what each test checks.
 std::string scorecards_markdown(std::span<const conformance::Scorecard> cards);
+
+/// The scorecard of every external peer, each graded through the --command protocol by
+/// `adapter` (tools/peer_rasterizer) under the rule it declares.
+std::vector<conformance::Scorecard> peer_scorecards(std::span<const ExternalPeer> peers,
+                                                    const std::string& adapter);
+
+/// The site's page of the peers' scorecards (scorecards_peers.md), built where the peers are:
+/// the table, what each test checks, and `status`, the line that says which peers were built.
+std::string peer_scorecards_markdown(std::span<const conformance::Scorecard> cards,
+                                     const std::string& status);
 
 }  // namespace tri::ch11

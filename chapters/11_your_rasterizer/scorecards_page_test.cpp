@@ -5,8 +5,8 @@
 #include <algorithm>
 #include <string>
 
-#include "measure/registry.hpp"
 #include "chapters/11_your_rasterizer/named_tests.hpp"
+#include "measure/registry.hpp"
 
 namespace {
 
@@ -41,9 +41,10 @@ TEST_CASE("The scorecards page grades every registered fill that draws pixels, a
   }
 }
 
-TEST_CASE("On the scorecards page the exact fills pass everything and each failure links its "
-          "diagram",
-          "[11_your_rasterizer][step4]") {
+TEST_CASE(
+    "On the scorecards page the exact fills pass everything and each failure links its "
+    "diagram",
+    "[11_your_rasterizer][step4]") {
   for (const char* exact : {"exact_oracle", "fixed_point_8", "fast_batched"}) {
     CAPTURE(exact);
     CHECK(card_of(exact).all_passed());

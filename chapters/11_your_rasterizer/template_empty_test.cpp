@@ -12,8 +12,8 @@ TEST_CASE(
     "[11_your_rasterizer][step2]") {
   const tri::testing::ScratchFolder scratch("template_empty");
   std::ostringstream out, err;
-  CHECK(tri::ch11::grade_your_fill(tri::conformance::TieRule::top_left, scratch.path(), out,
-                                   err) == 1);
+  CHECK(tri::ch11::grade_your_fill(tri::conformance::TieRule::top_left, scratch.path(), out, err) ==
+        1);
   CHECK_THAT(err.str(), Catch::Contains("your_fill draws no pixel yet") &&
                             Catch::Contains("chapters/11_your_rasterizer/your_fill.cpp"));
   CHECK(tri::ch11::test::failed_in_scorecard(scratch.path()) ==

@@ -12,8 +12,8 @@ TEST_CASE("Filled with a correct fill, the template passes every test of the sui
           "[11_your_rasterizer][step3]") {
   const tri::testing::ScratchFolder scratch("template_filled");
   std::ostringstream out, err;
-  CHECK(tri::ch11::grade_your_fill(tri::conformance::TieRule::top_left, scratch.path(), out,
-                                   err) == 0);
+  CHECK(tri::ch11::grade_your_fill(tri::conformance::TieRule::top_left, scratch.path(), out, err) ==
+        0);
   CHECK(err.str().empty());
   CHECK(std::filesystem::exists(scratch.path() / "scorecard.md"));
   CHECK(tri::ch11::test::failed_in_scorecard(scratch.path()).empty());

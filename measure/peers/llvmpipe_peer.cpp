@@ -56,6 +56,11 @@ ExternalPeer llvmpipe_peer(std::string_view name, std::string_view summary, bool
           [threads](const PreparedScene& prepared, const TimingPlan& plan) {
             set_llvmpipe_threads(threads);
             return time_llvmpipe_here(prepared, plan);
+          },
+          // Called by the peer's own adapter process, where Mesa may start.
+          [threads](int width, int height, std::span<const SceneTriangle> triangles) {
+            set_llvmpipe_threads(threads);
+            return llvmpipe_write_counts(width, height, triangles);
           }};
 }
 

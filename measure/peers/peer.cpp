@@ -19,10 +19,10 @@ ExternalPeer in_process_peer(const Drawable& description, std::string_view libra
                              std::function<Timing(const PreparedScene&, const TimingPlan&)> time,
                              CountingDraw draw) {
   return {description, library,
-          [time, draw = std::move(draw)](const PreparedScene& prepared, const TimingPlan& plan) {
+          [time, draw](const PreparedScene& prepared, const TimingPlan& plan) {
             return peer_result(time(prepared, plan), draw, prepared);
           },
-          std::move(time)};
+          std::move(time), draw};
 }
 
 }  // namespace tri

@@ -43,6 +43,9 @@ struct ExternalPeer : Drawable {
   /// Times one draw of the prepared scene and nothing else (no counts, no error), in this
   /// process: the scaling sweeps call it in a child process of their own.
   std::function<Timing(const PreparedScene&, const TimingPlan&)> time;
+  /// The write counts of triangles on a width x height canvas, in this process (llvmpipe starts
+  /// Mesa here): what its adapter for the conformance suite (tools/peer_rasterizer) answers.
+  CountingDraw write_counts;
 };
 
 /// The description of an aliased peer: chapter "external", outputs {counts}.

@@ -14,7 +14,8 @@ CHAPTER_FOLDER = re.compile(r"^(\d{2})_\w+$")
 MAIN_PAGE = "index.html"
 HARD_CASES_PAGE = "hard_cases.html"
 # The other Markdown pages: opened, and their figures and links checked, where the site has them.
-OTHER_PAGES = ("design.html", "playground.html", "fuzzing.html", "scorecards.html")
+OTHER_PAGES = ("design.html", "playground.html", "fuzzing.html", "scorecards.html",
+               "scorecards_peers.html")
 # The report chapter's plot, which the main page shows once that chapter exists.
 SPEED_VS_ERROR_CHAPTER = 10
 SPEED_VS_ERROR_PLOT = "10_speed_vs_error.svg"
