@@ -41,9 +41,10 @@ struct GradedRasterizer {
   std::function<Answer(const Scene& scene, Threads threads, Deadline deadline)> draw;
 };
 
-/// A registered algorithm: Threads::all draws through a BatchDrawer (its batch or threaded entry),
-/// Threads::one draws triangle after triangle through its one-triangle entry. Refused triangles
-/// (NaN, infinite, beyond ±2^30) draw nothing, as draw_triangle promises.
+/// A registered algorithm (which must outlive the result): Threads::all draws through a BatchDrawer
+/// (its batch or threaded entry), Threads::one draws triangle after triangle through its
+/// one-triangle entry. Refused triangles (NaN, infinite, beyond ±2^30) draw nothing, as
+/// draw_triangle promises.
 GradedRasterizer graded_algorithm(const TriangleAlgorithm& algorithm);
 
 /// A fill function, as chapter 11's learner writes it: one triangle on a canvas, in one colour.

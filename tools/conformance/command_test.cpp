@@ -82,10 +82,18 @@ TEST_CASE("A crash on NaN fails bad_input only, and says it crashed", "[conforma
              Catch::Matches("case \"nan_vertex\": crashed: signal 6 .*"));
 }
 
-TEST_CASE("Refusing a NaN scene with a message passes; a hang fails that test at its time limit",
-          "[conformance]") {
+TEST_CASE(
+    "Refusing a NaN scene with a message passes, and a hang fails that test at its time limit",
+    "[conformance]") {
   CHECK(failed(graded("refuse_nan", TieRule::top_left)).empty());
-  const auto hung = graded("hang_on_nan", TieRule::top_left, std::chrono::milliseconds(300));
+  // A short limit for the test that hangs, the default for the others (a busy machine needs it).
+  const GradedRasterizer hanging = graded_command(command_with("hang_on_nan"));
+  std::vector<TestResult> hung;
+  for (const NamedTest& test : named_tests()) {
+    const bool bad_input = test.name == "bad_input";
+    hung.push_back(grade(test, hanging, TieRule::top_left,
+                         bad_input ? std::chrono::milliseconds(500) : default_time_limit));
+  }
   CHECK(failed(hung) == std::set<std::string>{"bad_input"});
   CHECK(result_of(hung, "bad_input").detail.find("did not finish in time and was killed") !=
         std::string::npos);
