@@ -190,7 +190,7 @@ TEST_CASE("tinyrenderer's three test triangles outline as closed curves",
         std::vector<std::size_t>{91 + 81 + 61 - 3 - 1, 50 + 180 + 131 - 3, 61 + 21 + 51 - 3});
 }
 
-TEST_CASE("outline_edge_pixels gives each edge's pixels; only the joints are in two",
+TEST_CASE("outline_edge_pixels gives each edge's pixels, and only the joints are in two",
           "[02_wireframe][step1][wireframe][figure]") {
   const auto edges = tri::ch02::outline_edge_pixels({1, 1}, {7, 3}, {3, 6});
   PixelSet all, twice;

@@ -104,6 +104,9 @@ std::string convention_problem(const DeclaredTest& test, std::string_view prefix
                                const std::set<int>& steps, std::string_view code) {
   if (test.name.empty()) return "the name is empty";
   if (test.name.back() == '.') return "the name ends with a full stop";
+  // CTest takes a ';' in a name as a list separator: the test would split and run nothing.
+  if (test.name.find(';') != std::string::npos)
+    return "the name holds a ';', which splits it into two CTest tests that run nothing";
   const char first = test.name.front();
   if (std::islower(static_cast<unsigned char>(first)) != 0) {
     std::size_t end = 0;

@@ -37,6 +37,14 @@ TEST_CASE("A name in lower case passes only when its first word is an identifier
   CHECK_FALSE(convention_problem(only_test(quoted), "01_lines", {2}, quoted).empty());
 }
 
+TEST_CASE("A name with a semicolon fails, since CTest would split it into two tests",
+          "[conventions][names]") {
+  const std::string split = "TEST_CASE(\"It holds; it runs\", \"[common]\") {}\n";
+  CHECK_THAT(convention_problem(only_test(split), "common", {}, split), Catch::Contains("';'"));
+  const std::string whole = "TEST_CASE(\"It holds, it runs\", \"[common]\") {}\n";
+  CHECK(convention_problem(only_test(whole), "common", {}, whole).empty());
+}
+
 TEST_CASE("The first tag must be the folder's prefix and a chapter needs a real step",
           "[conventions][tags]") {
   const std::string untagged = "TEST_CASE(\"It holds\") {}\n";

@@ -71,7 +71,7 @@ TEST_CASE("Only the READMEs that quote measurements are held to markers", "[list
   }
 }
 
-TEST_CASE("A measured number typed outside a marker fails the check; code and markers do not",
+TEST_CASE("A measured number typed outside a marker fails the check, in code and markers not",
           "[listings]") {
   TempRepo repo;
   repo.write("docs/measurements/report_quick.csv", "key,value\nfast.speedup,3.2\n");
