@@ -282,6 +282,19 @@ void add_band(RowCells& cells, const Band& b) {
   cells.add_segment(RowCells::Side::right, b.right0, b.y0, b.right1, b.y1, b.right_dy_dx);
 }
 
+// Sets every value from first up to end to 1, four floats per store, as chapter 08's fill_pixels
+// fills a span: the last store ends exactly at end, overlapping the one before (equal values).
+void store_ones(float* first, float* end) {
+  using Four = ch08::Vector<float, 4>;
+  const Four ones = Four{} + 1.0f;
+  if (end - first < 4) {
+    std::fill(first, end, 1.0f);
+    return;
+  }
+  for (; first < end - 4; first += 4) std::memcpy(first, &ones, sizeof ones);
+  std::memcpy(end - 4, &ones, sizeof ones);
+}
+
 // [listing add_band_directly]
 // Composited over (step 5), most bands need no cells either. Walking the left piece's cells, then
 // the pixels between the sides, then the right piece's cells, from left to right, the running
@@ -289,7 +302,8 @@ void add_band(RowCells& cells, const Band& b) {
 // side wholly off the canvas is not walked: left of it, its cover reaches column 0; right of it,
 // the pixels between reach the last column. False, having written nothing, when a piece crosses
 // the canvas's left or right edge, or when the sides share cells, where a pixel must receive its
-// whole coverage at once.
+// whole coverage at once. Put composites a coverage over a pixel; the pixels wholly inside a band
+// of a whole row become 1 whatever they held, so they are stored, not blended.
 template <class Put>
 bool add_band_directly(float* row, int width, const Band& b, Put put) {
   bool walk_left = true, walk_right = true;
@@ -312,9 +326,12 @@ bool add_band_directly(float* row, int width, const Band& b, Put put) {
     inside = -cover;
   }
   const float between = static_cast<float>(inside);
+  float* const begin = row + (walk_left ? b.left_last + 1 : 0);
   float* const end = row + (walk_right ? b.right_first : width);
-  for (float* pixel = row + (walk_left ? b.left_last + 1 : 0); pixel < end; ++pixel) {
-    put(*pixel, between);
+  if (between == 1.0f) {
+    store_ones(begin, end);  // a whole pixel over any value v is v + (1 - v) = 1: no read
+  } else {
+    for (float* pixel = begin; pixel < end; ++pixel) put(*pixel, between);
   }
   if (walk_right) {
     double cover = 0;  // the right piece runs up: what lies right of it is outside
