@@ -407,15 +407,38 @@ template <int Width>
   for (int i = 0; first + i < width; ++i) row[first + i] += each[i];
 }
 
+// [listing add_run]
+// Adds h to the count >= 4 values from first on, two groups of Width floats at a time. The last
+// two groups (the first and the last group of a shorter run) are read before any group is written
+// and written last, so they may overlap the groups before them, as chapter 08's fill_pixels ends
+// a span with two overlapping stores: no pixels are left over, so no loop of smaller groups.
+template <int Width>
+[[gnu::always_inline]] inline void add_run(float* first, int count, float h) {
+  if constexpr (Width > 4) {
+    if (count < Width) return add_run<4>(first, count, h);
+  }
+  const Lanes<Width> add = Lanes<Width>{} + h;
+  float* const last[2] = {first + std::max(count - 2 * Width, 0), first + count - Width};
+  Lanes<Width> kept[2];  // their values before the run
+  for (int k = 0; k < 2; ++k) std::memcpy(&kept[k], last[k], sizeof add);
+  for (int i = 0; i < count - 2 * Width; i += 2 * Width) {
+    add_group(first + i, add);
+    add_group(first + i + Width, add);
+  }
+  for (int k = 0; k < 2; ++k) std::memcpy(last[k], &(kept[k] += add), sizeof add);
+}
+// [/listing]
+
 // [listing add_band_lanes]
 // A band summed onto the row four pixels at a time: a band within four pixels in one step;
 // otherwise groups of four from the left piece's first column (or the canvas's) until past its
-// last, pairs of groups of Width floats of H while they end before the right piece (eight in the
-// AVX2 copy of the row loop, then four), then groups of four until past the right piece's last
-// column (or the canvas's). Only the pixels between the sides take groups of eight: each pixel
-// gets the same bits from both copies (the playground's WebAssembly has only the portable one and
-// draws what raster draws). A pixel that a group passes outside the triangle gets exactly 0. The
-// band's numbers come as arguments, so that they stay in registers.
+// last, then the run of pixels wholly inside, up to the right piece's first column, given H by
+// add_run (groups of eight in the AVX2 copy of the row loop, four in the portable one), then
+// groups of four from there until past the right piece's last column (or the canvas's). A run
+// shorter than four pixels is left to the right piece's groups. Only the run takes groups of
+// eight: each pixel gets the same bits from both copies (the playground's WebAssembly has only
+// the portable one and draws what raster draws). A pixel that a group passes outside the triangle
+// gets exactly 0. The band's numbers come as arguments, so that they stay in registers.
 template <int Width>
 [[gnu::always_inline]] inline void add_band_lanes(float* row, int width, double y0, double y1,
                                                   double left0, double left1, double right0,
@@ -436,19 +459,10 @@ template <int Width>
   for (; column <= left_last; column += 4) {
     add_lanes<4>(row, column, width, height * (left.right_of(column) - right.right_of(column)));
   }
-  const Lanes<Width> inside = Lanes<Width>{} + height;
   const int inside_end = std::min(right_first, width);  // the pixels wholly inside end here
-  for (; column + 2 * Width <= inside_end; column += 2 * Width) {
-    add_group(row + column, inside);
-    add_group(row + column + Width, inside);
-  }
-  if (column + Width <= inside_end) {
-    add_group(row + column, inside);
-    column += Width;
-  }
-  if (column + 4 <= inside_end) {
-    add_group(row + column, Lanes<4>{} + height);
-    column += 4;
+  if (inside_end - column >= 4) {
+    add_run<Width>(row + column, inside_end - column, height);
+    column = inside_end;
   }
   const int last = std::min(right_last, width - 1);
   for (; column <= last; column += 4) {
