@@ -282,6 +282,19 @@ void add_band(RowCells& cells, const Band& b) {
   cells.add_segment(RowCells::Side::right, b.right0, b.y0, b.right1, b.y1, b.right_dy_dx);
 }
 
+// Sets every value from first up to end to 1, four floats per store, as chapter 08's fill_pixels
+// fills a span: the last store ends exactly at end, overlapping the one before (equal values).
+void store_ones(float* first, float* end) {
+  using Four = ch08::Vector<float, 4>;
+  const Four ones = Four{} + 1.0f;
+  if (end - first < 4) {
+    std::fill(first, end, 1.0f);
+    return;
+  }
+  for (; first < end - 4; first += 4) std::memcpy(first, &ones, sizeof ones);
+  std::memcpy(end - 4, &ones, sizeof ones);
+}
+
 // [listing add_band_directly]
 // Composited over (step 5), most bands need no cells either. Walking the left piece's cells, then
 // the pixels between the sides, then the right piece's cells, from left to right, the running
@@ -289,7 +302,8 @@ void add_band(RowCells& cells, const Band& b) {
 // side wholly off the canvas is not walked: left of it, its cover reaches column 0; right of it,
 // the pixels between reach the last column. False, having written nothing, when a piece crosses
 // the canvas's left or right edge, or when the sides share cells, where a pixel must receive its
-// whole coverage at once.
+// whole coverage at once. Put composites a coverage over a pixel; the pixels wholly inside a band
+// of a whole row become 1 whatever they held, so they are stored, not blended.
 template <class Put>
 bool add_band_directly(float* row, int width, const Band& b, Put put) {
   bool walk_left = true, walk_right = true;
@@ -312,9 +326,12 @@ bool add_band_directly(float* row, int width, const Band& b, Put put) {
     inside = -cover;
   }
   const float between = static_cast<float>(inside);
+  float* const begin = row + (walk_left ? b.left_last + 1 : 0);
   float* const end = row + (walk_right ? b.right_first : width);
-  for (float* pixel = row + (walk_left ? b.left_last + 1 : 0); pixel < end; ++pixel) {
-    put(*pixel, between);
+  if (between == 1.0f) {
+    store_ones(begin, end);  // a whole pixel over any value v is v + (1 - v) = 1: no read
+  } else {
+    for (float* pixel = begin; pixel < end; ++pixel) put(*pixel, between);
   }
   if (walk_right) {
     double cover = 0;  // the right piece runs up: what lies right of it is outside
@@ -390,15 +407,38 @@ template <int Width>
   for (int i = 0; first + i < width; ++i) row[first + i] += each[i];
 }
 
+// [listing add_run]
+// Adds h to the count >= 4 values from first on, two groups of Width floats at a time. The last
+// two groups (the first and the last group of a shorter run) are read before any group is written
+// and written last, so they may overlap the groups before them, as chapter 08's fill_pixels ends
+// a span with two overlapping stores: no pixels are left over, so no loop of smaller groups.
+template <int Width>
+[[gnu::always_inline]] inline void add_run(float* first, int count, float h) {
+  if constexpr (Width > 4) {
+    if (count < Width) return add_run<4>(first, count, h);
+  }
+  const Lanes<Width> add = Lanes<Width>{} + h;
+  float* const last[2] = {first + std::max(count - 2 * Width, 0), first + count - Width};
+  Lanes<Width> kept[2];  // their values before the run
+  for (int k = 0; k < 2; ++k) std::memcpy(&kept[k], last[k], sizeof add);
+  for (int i = 0; i < count - 2 * Width; i += 2 * Width) {
+    add_group(first + i, add);
+    add_group(first + i + Width, add);
+  }
+  for (int k = 0; k < 2; ++k) std::memcpy(last[k], &(kept[k] += add), sizeof add);
+}
+// [/listing]
+
 // [listing add_band_lanes]
 // A band summed onto the row four pixels at a time: a band within four pixels in one step;
 // otherwise groups of four from the left piece's first column (or the canvas's) until past its
-// last, pairs of groups of Width floats of H while they end before the right piece (eight in the
-// AVX2 copy of the row loop, then four), then groups of four until past the right piece's last
-// column (or the canvas's). Only the pixels between the sides take groups of eight: each pixel
-// gets the same bits from both copies (the playground's WebAssembly has only the portable one and
-// draws what raster draws). A pixel that a group passes outside the triangle gets exactly 0. The
-// band's numbers come as arguments, so that they stay in registers.
+// last, then the run of pixels wholly inside, up to the right piece's first column, given H by
+// add_run (groups of eight in the AVX2 copy of the row loop, four in the portable one), then
+// groups of four from there until past the right piece's last column (or the canvas's). A run
+// shorter than four pixels is left to the right piece's groups. Only the run takes groups of
+// eight: each pixel gets the same bits from both copies (the playground's WebAssembly has only
+// the portable one and draws what raster draws). A pixel that a group passes outside the triangle
+// gets exactly 0. The band's numbers come as arguments, so that they stay in registers.
 template <int Width>
 [[gnu::always_inline]] inline void add_band_lanes(float* row, int width, double y0, double y1,
                                                   double left0, double left1, double right0,
@@ -419,19 +459,10 @@ template <int Width>
   for (; column <= left_last; column += 4) {
     add_lanes<4>(row, column, width, height * (left.right_of(column) - right.right_of(column)));
   }
-  const Lanes<Width> inside = Lanes<Width>{} + height;
   const int inside_end = std::min(right_first, width);  // the pixels wholly inside end here
-  for (; column + 2 * Width <= inside_end; column += 2 * Width) {
-    add_group(row + column, inside);
-    add_group(row + column + Width, inside);
-  }
-  if (column + Width <= inside_end) {
-    add_group(row + column, inside);
-    column += Width;
-  }
-  if (column + 4 <= inside_end) {
-    add_group(row + column, Lanes<4>{} + height);
-    column += 4;
+  if (inside_end - column >= 4) {
+    add_run<Width>(row + column, inside_end - column, height);
+    column = inside_end;
   }
   const int last = std::min(right_last, width - 1);
   for (; column <= last; column += 4) {
