@@ -150,7 +150,7 @@ std::uint64_t pixels_per_frame(const Scene& scene, const TriangleAlgorithm* algo
 }
 
 // What a --bench does once before its frames (the scene's triangles copied into what the frames
-// draw, and checked), and how long that took: it is printed on its own line.
+// draw; for RGBA8 also checked), and how long that took: it is printed on its own line.
 struct Preparation {
   double seconds = 0;
 };
