@@ -60,29 +60,50 @@ BatchDrawer::BatchDrawer(const TriangleAlgorithm& algorithm)
     : algorithm_(&algorithm),
       renderer_(algorithm.make_renderer != nullptr ? algorithm.make_renderer() : nullptr) {}
 
+PreparedBatch::PreparedBatch(std::span<const SceneTriangle> triangles) {
+  reserve(triangles.size());
+  for (const SceneTriangle& t : triangles) add(t);
+}
+
+DrawResult PreparedBatch::add(const SceneTriangle& triangle) {
+  const DrawResult result = validate_triangle(triangle.vertices);
+  if (result == DrawResult::drawn) {
+    accepted_.push_back(triangle);
+  } else {
+    ++refused_;
+  }
+  return result;
+}
+
+void BatchDrawer::draw_accepted(Canvas& canvas, std::span<const SceneTriangle> accepted) {
+  if (renderer_ != nullptr) {
+    renderer_->draw(canvas, accepted);
+  } else if (algorithm_->draw_batch != nullptr) {
+    algorithm_->draw_batch(canvas, accepted);
+  } else {
+    for (const SceneTriangle& t : accepted) algorithm_->draw(canvas, t.vertices, t.color);
+  }
+}
+
 std::size_t BatchDrawer::draw(Canvas& canvas, std::span<const SceneTriangle> triangles) {
   std::size_t refused = 0;
   for (const SceneTriangle& t : triangles)
     refused += validate_triangle(t.vertices) != DrawResult::drawn;
-  if (renderer_ == nullptr && algorithm_->draw_batch == nullptr) {
-    for (const SceneTriangle& t : triangles)
-      draw_triangle(*algorithm_, canvas, t.vertices, t.color);
-    return refused;
+  if (refused == 0) {
+    draw_accepted(canvas, triangles);
+    return 0;
   }
-  std::span<const SceneTriangle> batch = triangles;
-  if (refused > 0) {
-    valid_.clear();  // only when some input was refused
-    for (const SceneTriangle& t : triangles) {
-      if (validate_triangle(t.vertices) == DrawResult::drawn) valid_.push_back(t);
-    }
-    batch = valid_;
+  valid_.clear();  // only when some input was refused
+  for (const SceneTriangle& t : triangles) {
+    if (validate_triangle(t.vertices) == DrawResult::drawn) valid_.push_back(t);
   }
-  if (renderer_ != nullptr) {
-    renderer_->draw(canvas, batch);
-  } else {
-    algorithm_->draw_batch(canvas, batch);
-  }
+  draw_accepted(canvas, valid_);
   return refused;
+}
+
+std::size_t BatchDrawer::draw(Canvas& canvas, const PreparedBatch& batch) {
+  draw_accepted(canvas, batch.triangles());
+  return batch.refused();
 }
 
 std::size_t draw_triangles(const TriangleAlgorithm& algorithm, Canvas& canvas,

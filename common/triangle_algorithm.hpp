@@ -94,6 +94,29 @@ DrawResult validate_triangle(const Triangle& triangle) noexcept;
 DrawResult draw_triangle(const TriangleAlgorithm& algorithm, Canvas& canvas,
                          const Triangle& triangle, Color color);
 
+/// Triangles checked once: those that passed validate_triangle, in order, in the layout every
+/// batch entry point takes, and how many were refused. A BatchDrawer draws it without checking
+/// or copying anything again, so a program that draws the same triangles every frame prepares
+/// them once, before its clock runs.
+class PreparedBatch {
+ public:
+  PreparedBatch() = default;
+  explicit PreparedBatch(std::span<const SceneTriangle> triangles);
+
+  /// Makes room for `count` more triangles, so adding them allocates once.
+  void reserve(std::size_t count) { accepted_.reserve(accepted_.size() + count); }
+  /// Checks one more triangle and keeps it when it passes; says what the check found.
+  DrawResult add(const SceneTriangle& triangle);
+  /// The accepted triangles, in the order they were added.
+  std::span<const SceneTriangle> triangles() const noexcept { return accepted_; }
+  /// How many were refused (non-finite or out of range).
+  std::size_t refused() const noexcept { return refused_; }
+
+ private:
+  std::vector<SceneTriangle> accepted_;
+  std::size_t refused_ = 0;
+};
+
 /// Draws batches of triangles with one algorithm; every caller that draws batches goes through
 /// one. Each triangle is validated, refused ones are skipped, and the rest go to the algorithm's
 /// renderer (made once, by the constructor, and kept until the drawer goes), else to its batch
@@ -105,10 +128,16 @@ class BatchDrawer {
 
   /// Draws the triangles in order; returns how many were refused. One batch at a time.
   std::size_t draw(Canvas& canvas, std::span<const SceneTriangle> triangles);
+  /// Draws a prepared batch's triangles in order, checking none again; returns how many its
+  /// preparation refused. What a program that draws the same triangles every frame times.
+  std::size_t draw(Canvas& canvas, const PreparedBatch& batch);
   /// The algorithm it draws with.
   const TriangleAlgorithm& algorithm() const noexcept { return *algorithm_; }
 
  private:
+  // Hands triangles that passed validate_triangle to the renderer, the batch entry or draw.
+  void draw_accepted(Canvas& canvas, std::span<const SceneTriangle> accepted);
+
   const TriangleAlgorithm* algorithm_;
   std::unique_ptr<BatchRenderer> renderer_;  // null unless the algorithm has make_renderer
   std::vector<SceneTriangle> valid_;         // a batch's accepted triangles when some are refused

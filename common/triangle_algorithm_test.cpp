@@ -211,6 +211,55 @@ TEST_CASE("A batch drawer keeps the algorithm's renderer and hands it only accep
   CHECK(rgba(once.pixel(0, 2)) == rgba(colors::black));
 }
 
+TEST_CASE(
+    "A prepared batch keeps the accepted triangles in order and refuses what the drawer "
+    "refuses",
+    "[common][algorithm][draw]") {
+  const std::vector<SceneTriangle> triangles{
+      scene_triangle(ordinary, 31),
+      scene_triangle(with_coordinate(0, not_a_number), 32),
+      scene_triangle(with_coordinate(3, -infinity), 33),
+      scene_triangle(ordinary, 34),
+      scene_triangle(with_coordinate(1, std::nextafter(limit, infinity)), 35),
+      scene_triangle(with_coordinate(4, -limit), 36),
+      scene_triangle(with_coordinate(5, -1e12), 37)};
+  const std::vector<DrawResult> expected{DrawResult::drawn,
+                                         DrawResult::rejected_non_finite,
+                                         DrawResult::rejected_non_finite,
+                                         DrawResult::drawn,
+                                         DrawResult::rejected_out_of_range,
+                                         DrawResult::drawn,
+                                         DrawResult::rejected_out_of_range};
+  PreparedBatch added;
+  for (std::size_t i = 0; i < triangles.size(); ++i) CHECK(added.add(triangles[i]) == expected[i]);
+  const PreparedBatch prepared(triangles);
+  for (const PreparedBatch* batch : {static_cast<const PreparedBatch*>(&added), &prepared}) {
+    CHECK(batch->refused() == 4);
+    REQUIRE(batch->triangles().size() == 3);
+    CHECK(batch->triangles()[0].color.r == 31);
+    CHECK(batch->triangles()[1].color.r == 34);
+    CHECK(batch->triangles()[2].color.r == 36);
+    CHECK(batch->triangles()[2].vertices[2].x == -limit);
+  }
+  // Drawn through a drawer: the renderer gets the accepted triangles as one batch, as the
+  // unprepared draw of the same list gives them, and the count refused is the same.
+  Canvas from_prepared(8, 8), from_list(8, 8);
+  from_prepared.enable_write_counts();
+  from_list.enable_write_counts();
+  CHECK(BatchDrawer(numbering_algorithm).draw(from_prepared, prepared) == 4);
+  CHECK(BatchDrawer(numbering_algorithm).draw(from_list, triangles) == 4);
+  CHECK(testing::written_pixels(from_prepared) == PixelSet{{0, 1}, {1, 1}, {2, 1}});
+  CHECK(testing::written_pixels(from_prepared) == testing::written_pixels(from_list));
+  CHECK(from_prepared.pixel(1, 1).r == 34);
+  CHECK(from_prepared.pixel(2, 1).r == 36);
+  // An algorithm without batch entries draws the accepted triangles one by one.
+  Canvas one_by_one(8, 8);
+  one_by_one.enable_write_counts();
+  CHECK(BatchDrawer(one_pixel_algorithm).draw(one_by_one, prepared) == 4);
+  CHECK(testing::written_pixels(one_by_one) == PixelSet{{1, 1}});
+  CHECK(one_by_one.pixel(1, 1).r == 36);
+}
+
 TEST_CASE("nearest_pixel rounds to the nearest pixel centre, halves up",
           "[common][algorithm][round]") {
   struct Case {

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "common/scene.hpp"
+#include "common/triangle_algorithm.hpp"
 #include "measure/scene_generators.hpp"
 
 namespace tri {
@@ -25,10 +26,11 @@ struct PreparedScene {
   SuiteScene suite;
   Scene scene;
   std::vector<SceneTriangle> triangles;  ///< the scene's triangles, as draw_triangles takes them
-  Scene error_scene;  ///< what the error is measured on: the scene, or its first triangles
+  Scene error_scene;    ///< what the error is measured on: the scene, or its first triangles
+  PreparedBatch batch;  ///< the triangles checked once: what the algorithms' timed draws take
 };
 
-/// Generates the scene and its triangle list; the error scene keeps the first
+/// Generates the scene, its triangle list and its prepared batch; the error scene keeps the first
 /// error_triangle_limit triangles (all of them for 0).
 PreparedScene prepare_scene(const SuiteScene& suite, std::size_t error_triangle_limit);
 

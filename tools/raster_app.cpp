@@ -74,7 +74,8 @@ CommandLine raster_command_line(std::span<const Drawable> drawables) {
            "rule area: write the triangles' coverage, summed and clamped to [0, 1], as a 16-bit "
            "binary PGM, value round(65535 x coverage) ('-': standard output)"},
           {"bench", "N",
-           "time N draws of the scene after a warm-up; print the median frame's speed"},
+           "prepare the scene once, then time N draws of it after a warm-up; print the "
+           "preparation's time and the median frame's speed"},
           {"force", "", "run a --bench estimated to take more than 10 minutes anyway"},
           {"progress-after", "S",
            "report progress on standard error after S seconds of work and then every S seconds "
@@ -148,13 +149,23 @@ std::uint64_t pixels_per_frame(const Scene& scene, const TriangleAlgorithm* algo
   return std::accumulate(counts.begin(), counts.end(), std::uint64_t{0});
 }
 
+// What a --bench does once before its frames (the scene's triangles copied into what the frames
+// draw; for RGBA8 also checked), and how long that took: it is printed on its own line.
+struct Preparation {
+  double seconds = 0;
+};
+
+Preparation prepare(const std::function<void()>& preparation) {
+  return {seconds_of(preparation)};
+}
+
 // Times `frames` frames of draw() with the book's one method (measure/timing.hpp): each frame is
 // a sample of one draw after an untimed warm-up, and the rates come from the median frame. Prints
-// the line of docs/DESIGN.md section 9 (`pixels` is what one frame writes); refuses (unless
+// the two lines of docs/DESIGN.md section 9 (`pixels` is what one frame writes); refuses (unless
 // forced) a run whose estimate is absurd.
-void benchmark(const std::function<void()>& draw, std::size_t triangles,
-               const std::function<std::uint64_t()>& pixels, long long frames, bool forced,
-               std::ostream& out, std::ostream& err) {
+void benchmark(const Preparation& preparation, const std::function<void()>& draw,
+               std::size_t triangles, const std::function<std::uint64_t()>& pixels,
+               long long frames, bool forced, std::ostream& out, std::ostream& err) {
   const double frame_seconds = seconds_of(draw);  // untimed by the plan: it estimates
   refuse_absurd_run(frame_seconds * static_cast<double>(frames),
                     "--bench " + std::to_string(frames), forced);
@@ -166,6 +177,7 @@ void benchmark(const std::function<void()>& draw, std::size_t triangles,
                           progress.advance(static_cast<std::uint64_t>(done));
                         }).front();
   const double median = timing.seconds.median;
+  out << "preparation_seconds=" << preparation.seconds << '\n';
   out << "triangles=" << triangles << " frames=" << frames << " seconds=" << median
       << " min_seconds=" << timing.seconds.min << " max_seconds=" << timing.seconds.max
       << " tris_per_s=" << (median > 0 ? static_cast<double>(triangles) / median : 0.0)
@@ -179,8 +191,16 @@ void benchmark(const Scene& scene, const TriangleAlgorithm* algorithm, long long
   std::optional<BatchDrawer> drawer;
   if (algorithm != nullptr) drawer.emplace(*algorithm);
   BatchDrawer* kept = drawer ? &*drawer : nullptr;
-  benchmark([&] { render_scene(scene, kept, canvas); }, count_triangles(scene),
-            [&] { return pixels_per_frame(scene, algorithm); }, frames, forced, out, err);
+  // The triangles are copied out of the scene and checked once; every frame draws that copy.
+  PreparedDrawing prepared;
+  const Preparation preparation = prepare([&] {
+    prepared = allocating("the prepared triangles of the scene",
+                          static_cast<double>(count_triangles(scene)) * sizeof(SceneTriangle),
+                          "the scene's triangle count", [&] { return prepare_drawing(scene); });
+  });
+  benchmark(
+      preparation, [&] { draw_prepared(prepared, kept, canvas); }, count_triangles(scene),
+      [&] { return pixels_per_frame(scene, algorithm); }, frames, forced, out, err);
 }
 
 // An algorithm of rule area: its coverage of the scene's triangles (lines have no area and are
@@ -191,8 +211,10 @@ int run_coverage(const CliArguments& args, const Scene& scene, const ch09::AreaA
       "the coverage values of " + canvas_words(scene), pixel_count(scene) * sizeof(float),
       "the scene's canvas size", [&] { return ch09::CoverageCanvas(scene.width, scene.height); });
   if (frames) {
-    const std::vector<SceneTriangle> triangles = scene_triangles(scene);
+    std::vector<SceneTriangle> triangles;
+    const Preparation preparation = prepare([&] { triangles = scene_triangles(scene); });
     benchmark(
+        preparation,
         [&] {
           canvas.clear();
           ch09::draw_coverage(area, canvas, triangles);
@@ -259,14 +281,17 @@ int run_narrow(const CliArguments& args, const Scene& scene, const TriangleAlgor
                PixelFormat format, std::optional<long long> frames, bool to_standard_output,
                std::ostream& out, std::ostream& err) {
   if (const auto refusal = format_refusal(scene, format)) throw std::runtime_error(*refusal);
-  NarrowRender render =
-      allocating("the " + std::string(format_name(format)) + " pixels of " + canvas_words(scene),
-                 pixel_count(scene) / (format == PixelFormat::mask1 ? 8 : 1),
-                 "the scene's canvas size", [&] { return NarrowRender(scene, format); });
+  std::optional<NarrowRender> made;  // its triangles are copied out of the scene once
+  const Preparation preparation = prepare([&] {
+    allocating("the " + std::string(format_name(format)) + " pixels of " + canvas_words(scene),
+               pixel_count(scene) / (format == PixelFormat::mask1 ? 8 : 1),
+               "the scene's canvas size", [&] { made.emplace(scene, format); });
+  });
+  NarrowRender& render = *made;
   if (frames) {
-    benchmark([&] { render.draw(); }, count_triangles(scene),
-              [&] { return pixels_per_frame(scene, &algorithm); }, *frames, args.has("force"), out,
-              err);
+    benchmark(
+        preparation, [&] { render.draw(); }, count_triangles(scene),
+        [&] { return pixels_per_frame(scene, &algorithm); }, *frames, args.has("force"), out, err);
     return 0;
   }
   Progress drawing = progress_of(args, "raster: drawing", count_triangles(scene), err);

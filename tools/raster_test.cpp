@@ -281,12 +281,13 @@ TEST_CASE("raster reports a missing scene file, a missing --scene and bad option
   CHECK(dir.file_count() == 1);
 }
 
-TEST_CASE("raster --bench prints the one-line speed report", "[raster][bench]") {
+TEST_CASE("raster --bench prints the preparation line and the speed line", "[raster][bench]") {
   TempFolder dir;
   const auto scene = dir.write("l.scene", "canvas 8 8\nline 0 0 7 7\nline 0 7 7 0\n");
   const Run run = raster({"--scene", scene.string(), "--bench", "5"});
   REQUIRE(run.status == 0);
   const std::regex format(
+      "preparation_seconds=[0-9.e+-]+\n"
       "triangles=0 frames=5 seconds=[0-9.e+-]+ min_seconds=[0-9.e+-]+ max_seconds=[0-9.e+-]+ "
       "tris_per_s=[0-9.e+-]+ mpix_per_s=[0-9.e+-]+\n");
   CHECK(std::regex_match(run.out, format));
@@ -513,7 +514,7 @@ TEST_CASE("raster --coverage refuses an out-of-range scene and keeps the earlier
   CHECK(dir.file_count() == 2);
 }
 
-TEST_CASE("raster --bench times a rule-area algorithm with the one-line speed report",
+TEST_CASE("raster --bench times a rule-area algorithm with the preparation and speed lines",
           "[raster][coverage]") {
   TempFolder dir;
   const auto scene = dir.write("t.scene", "canvas 8 8\ntri 0 0 7 0 0 7\n");
@@ -521,6 +522,7 @@ TEST_CASE("raster --bench times a rule-area algorithm with the one-line speed re
       raster({"--algo", "samples_standard_4", "--scene", scene.string(), "--bench", "3"});
   REQUIRE(run.status == 0);
   const std::regex format(
+      "preparation_seconds=[0-9.e+-]+\n"
       "triangles=1 frames=3 seconds=[0-9.e+-]+ min_seconds=[0-9.e+-]+ max_seconds=[0-9.e+-]+ "
       "tris_per_s=[0-9.e+-]+ mpix_per_s=[0-9.e+-]+\n");
   CHECK(std::regex_match(run.out, format));
@@ -625,14 +627,15 @@ TEST_CASE(
           "area_cells has rule area: --format is for colour pictures");
 }
 
-TEST_CASE("raster --bench times a narrow format with the one-line speed report",
+TEST_CASE("raster --bench times a narrow format with the preparation and speed lines",
           "[raster][format][bench]") {
   TempFolder dir;
   const auto scene = dir.write("one.scene", random_scene(20, 1, 6));
   const Run run = raster(
       {"--algo", "fast_spans", "--scene", scene.string(), "--format", "mask1", "--bench", "3"});
   REQUIRE(run.status == 0);
-  CHECK(std::regex_match(run.out, std::regex("triangles=20 frames=3 seconds=[0-9.e+-]+ "
+  CHECK(std::regex_match(run.out, std::regex("preparation_seconds=[0-9.e+-]+\n"
+                                             "triangles=20 frames=3 seconds=[0-9.e+-]+ "
                                              "min_seconds=[0-9.e+-]+ max_seconds=[0-9.e+-]+ "
                                              "tris_per_s=[0-9.e+-]+ mpix_per_s=[0-9.e+-]+\n")));
 }

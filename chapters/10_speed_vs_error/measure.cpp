@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cstdio>
 #include <numeric>
+#include <stdexcept>
 
 #include "measure/render_scene.hpp"
 
@@ -71,13 +72,15 @@ Measurement row_for(std::string_view name, std::string_view chapter, std::string
 std::vector<Timing> time_algorithms(std::span<const TriangleAlgorithm> algorithms,
                                     const PreparedScene& prepared, const TimingPlan& plan) {
   Canvas canvas = make_canvas(prepared.scene);  // no write counts: they would be timed too
-  const std::span<const SceneTriangle> triangles(prepared.triangles);
+  const PreparedBatch& batch = prepared.batch;  // checked once, by prepare_scene
+  if (batch.triangles().size() + batch.refused() != prepared.triangles.size())
+    throw std::logic_error("time_algorithms needs a scene made by prepare_scene");
   // Each algorithm's drawer is made before the clock runs and kept for all its draws: a
   // renderer's threads are started once, as a real renderer's are.
   std::vector<BatchDrawer> drawers(algorithms.begin(), algorithms.end());
   std::vector<std::function<void()>> draws;
   for (BatchDrawer& drawer : drawers)
-    draws.emplace_back([&canvas, &drawer, triangles] { drawer.draw(canvas, triangles); });
+    draws.emplace_back([&canvas, &drawer, &batch] { drawer.draw(canvas, batch); });
   return time_interleaved(draws, plan);
 }
 

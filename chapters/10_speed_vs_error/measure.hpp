@@ -87,10 +87,10 @@ struct Measurement : RowIdentity {
 std::uint64_t count_written_pixels(const TriangleAlgorithm& algorithm, const Scene& scene,
                                    std::span<const SceneTriangle> triangles);
 
-/// Times every algorithm drawing the prepared scene, each through one BatchDrawer kept for all its
-/// draws (a renderer's threads started once), against each other in interleaved rounds
-/// (time_interleaved), on one canvas without write counts; drawers and canvas are made before the
-/// clock starts. One Timing per algorithm, in order.
+/// Times every algorithm drawing the prepared scene's batch (checked once by prepare_scene), each
+/// through one BatchDrawer kept for all its draws (a renderer's threads started once), against
+/// each other in interleaved rounds (time_interleaved), on one canvas without write counts;
+/// drawers and canvas are made before the clock starts. One Timing per algorithm, in order.
 std::vector<Timing> time_algorithms(std::span<const TriangleAlgorithm> algorithms,
                                     const PreparedScene& prepared, const TimingPlan& plan);
 
