@@ -693,6 +693,8 @@ TEST_CASE("Blend2D's shapes are drawn by every drawer at every size, the scenes 
       CHECK(row.box_side == side);
       CHECK(row.triangles == 4u);
       CHECK(row.timing.samples == 1);
+      // bl_bench's rate: render calls (triangles) per millisecond of the median frame.
+      CHECK(row.calls_per_ms() == 4 / (row.timing.seconds.median * 1000));
       CHECK(row.calls_per_ms() > 0);
     }
   }
