@@ -161,8 +161,8 @@ int main(int argc, char** argv) {
           const tri::ch10::SnapshotHeader header{args.value_or("commit", "unknown"),
                                                  tri::ch10::utc_date(), tri::peer_versions(),
                                                  args.value_or("note", "")};
-          tri::write_file_safely(
-              *snapshot, tri::bytes_of_text(tri::ch10::snapshot_text(report, coverage, header)));
+          tri::write_file_safely(*snapshot, tri::bytes_of_text(tri::ch10::snapshot_text(
+                                                report, coverage, header, shapes)));
           std::cout << "wrote " << *snapshot << '\n';
         }
         return 0;

@@ -760,3 +760,21 @@ TEST_CASE("The Markdown has the shapes' section: a row per drawer, a column per 
   for (const std::string& line : csv) CHECK(occurrences(line, ",") == occurrences(csv[0], ","));
   CHECK(tri::ch10::blend2d_shapes_markdown({}, tiny_run().report.machine).empty());
 }
+
+TEST_CASE("The snapshot adds a rate per drawer and size of Blend2D's shapes, and the vectors",
+          "[10_speed_vs_error][snapshot][blend2d]") {
+  const TinyRun& run = tiny_run();
+  const tri::ch10::SnapshotHeader header{"0123abc", "2026-01-02", "pixman 1.2", ""};
+  const auto without = lines_of(tri::ch10::snapshot_text(run.report, run.coverage, header));
+  const auto with =
+      lines_of(tri::ch10::snapshot_text(run.report, run.coverage, header, run.shapes));
+  REQUIRE(with.size() == without.size() + 1 + run.shapes.size());
+  CHECK(std::equal(without.begin(), without.end(), with.begin()));
+  CHECK(with[without.size()] == "blend2d_shapes.vectors," + tri::ch10::host_instruction_set());
+  for (std::size_t i = 0; i < run.shapes.size(); ++i) {
+    const tri::ch10::ShapeRate& r = run.shapes[i];
+    CHECK(with[without.size() + 1 + i] == r.drawer + ".blend2d_" + std::to_string(r.box_side) +
+                                              ".calls_per_ms," +
+                                              tri::format_number(r.calls_per_ms(), 6));
+  }
+}
