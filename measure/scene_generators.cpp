@@ -113,6 +113,7 @@ void jittered_grid(const SceneRecipe& r, Scene& scene, Random& random) {
 // Blend2D's bl_bench FillTriangle shape: the square's corner uniform over the canvas less its
 // side, then each vertex uniform inside the square, x before y.
 void in_boxes(const SceneRecipe& r, Scene& scene, Random& random) {
+  // [listing in_boxes]
   const double side = r.box_side;
   for (int i = 0; i < r.triangles; ++i) {
     const double corner_x = random.real(0, r.width - side);
@@ -124,6 +125,7 @@ void in_boxes(const SceneRecipe& r, Scene& scene, Random& random) {
     }
     add(scene, random, vertices[0], vertices[1], vertices[2], r.grid_bits);
   }
+  // [/listing]
 }
 
 }  // namespace
