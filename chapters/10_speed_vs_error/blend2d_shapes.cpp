@@ -38,18 +38,24 @@ SuiteScene blend2d_shape_scene(int box_side, int triangles) {
   return {std::to_string(box_side) + "x" + std::to_string(box_side), "1/256", recipe, false};
 }
 
+namespace {
+
+// Each way of writing in ShapeWrites's order: its name, and bl_bench's composition operator.
+struct WritesNames {
+  std::string_view name;
+  std::string_view comp_op;
+};
+constexpr std::array<WritesNames, 4> writes_names{
+    {{"replace", "SrcCopy"}, {"add", "Plus"}, {"over", "SrcOver"}, {"peer", "Peer"}}};
+
+const WritesNames& names_of(ShapeWrites writes) noexcept {
+  return writes_names[static_cast<std::size_t>(writes)];
+}
+
+}  // namespace
+
 std::string_view writes_name(ShapeWrites writes) noexcept {
-  switch (writes) {
-    case ShapeWrites::replace:
-      return "replace";
-    case ShapeWrites::add:
-      return "add";
-    case ShapeWrites::over:
-      return "over";
-    case ShapeWrites::peer:
-      return "peer";
-  }
-  return "peer";
+  return names_of(writes).name;
 }
 
 double ShapeRate::calls_per_ms() const noexcept {
@@ -163,21 +169,6 @@ std::string bl_bench_number(double calls_per_ms) {
   return text;
 }
 
-// bl_bench's name of a composition operator for the way a drawer writes.
-std::string_view comp_op_name(ShapeWrites writes) noexcept {
-  switch (writes) {
-    case ShapeWrites::replace:
-      return "SrcCopy";
-    case ShapeWrites::add:
-      return "Plus";
-    case ShapeWrites::over:
-      return "SrcOver";
-    case ShapeWrites::peer:
-      return "Peer";
-  }
-  return "Peer";
-}
-
 // A JSON string: quotes, backslashes and control characters escaped.
 std::string json_string(std::string_view text) {
   std::string out = "\"";
@@ -287,7 +278,7 @@ std::string bl_bench_json(std::span<const ShapeRate> rows, const Machine& machin
     json << (i ? "," : "") << "\n    {\"name\": " << json_string(first.drawer)
          << ", \"chapter\": " << json_string(first.chapter) << ", \"records\": [\n"
          << "      {\"test\": \"FillTriangle\", \"compOp\": "
-         << json_string(comp_op_name(first.writes)) << ", \"style\": \"Solid\", \"rcpms\": [";
+         << json_string(names_of(first.writes).comp_op) << ", \"style\": \"Solid\", \"rcpms\": [";
     for (std::size_t s = 0; s < drawers[i].by_size.size(); ++s) {
       const ShapeRate* r = drawers[i].by_size[s];
       json << (s ? ", " : "") << (r ? bl_bench_number(r->calls_per_ms()) : "null");
