@@ -19,7 +19,7 @@ Blend2dShapesSettings blend2d_shapes_settings(SuiteSize size) {
     case SuiteSize::tiny:
       return {4, {0.0, 1, 1}, 1};  // one run, one sample: the tests check the form only
     case SuiteSize::quick:
-      return {100, {0.01, 3, 1 << 20}, 4};
+      return {100, {0.005, 3, 1 << 20}, 4};  // short samples: a part of the quick run, not its bulk
     case SuiteSize::full:
       return {1000, {0.02, 7, 1 << 22}, 16};
   }
