@@ -110,6 +110,24 @@ void jittered_grid(const SceneRecipe& r, Scene& scene, Random& random) {
   }
 }
 
+// Blend2D's bl_bench FillTriangle shape: the square's corner uniform over the canvas less its
+// side, then each vertex uniform inside the square, x before y.
+void in_boxes(const SceneRecipe& r, Scene& scene, Random& random) {
+  // [listing in_boxes]
+  const double side = r.box_side;
+  for (int i = 0; i < r.triangles; ++i) {
+    const double corner_x = random.real(0, r.width - side);
+    const double corner_y = random.real(0, r.height - side);
+    glm::dvec2 vertices[3];
+    for (glm::dvec2& v : vertices) {
+      v.x = random.real(corner_x, corner_x + side);
+      v.y = random.real(corner_y, corner_y + side);
+    }
+    add(scene, random, vertices[0], vertices[1], vertices[2], r.grid_bits);
+  }
+  // [/listing]
+}
+
 }  // namespace
 
 Color random_color(Random& random) {
@@ -144,6 +162,9 @@ Scene generate_scene(const SceneRecipe& recipe) {
       break;
     case SceneRecipe::Kind::jittered_grid:
       jittered_grid(recipe, scene, random);
+      break;
+    case SceneRecipe::Kind::in_boxes:
+      in_boxes(recipe, scene, random);
       break;
   }
   return scene;

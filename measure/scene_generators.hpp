@@ -1,6 +1,7 @@
 /// @file
 /// Seeded scene families shared by the tests and the speed-vs-error report: random triangles of
-/// chosen sizes, slivers, fans and jittered-grid meshes, on the integer or the 1/256 grid.
+/// chosen sizes, slivers, fans, jittered-grid meshes and Blend2D's benchmark triangles, on the
+/// integer or the 1/256 grid.
 #pragma once
 
 #include <cstdint>
@@ -19,6 +20,7 @@ struct SceneRecipe {
     slivers,        ///< long needles less than a pixel thick
     fan,            ///< triangles around one centre, sharing edges
     jittered_grid,  ///< a grid of cells split in two, vertices jittered: a mesh
+    in_boxes,  ///< three points in a box_side square placed anywhere on the canvas (bl_bench's)
   };
   Kind kind = Kind::random;
   int width = 256;
@@ -28,7 +30,8 @@ struct SceneRecipe {
   double max_extent = 10.0;  ///< [min_extent, max_extent]
   double min_area = 0;       ///< random: a triangle whose area is outside [min_area, max_area]
   double max_area = std::numeric_limits<double>::infinity();  ///< is drawn again
-  int grid_bits = 8;  ///< vertices rounded to 1/2^grid_bits (0: integer pixel centres)
+  double box_side = 8;  ///< in_boxes: the side of each triangle's square
+  int grid_bits = 8;    ///< vertices rounded to 1/2^grid_bits (0: integer pixel centres)
   std::uint64_t seed = 1;
 };
 

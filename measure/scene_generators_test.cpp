@@ -1,9 +1,11 @@
 #include <bit>
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <variant>
 
 #include <catch2/catch.hpp>
+#include <glm/common.hpp>
 
 #include "measure/scene_generators.hpp"
 
@@ -58,6 +60,7 @@ TEST_CASE("Every scene family draws the same vertices and colours from every com
   CHECK(scene_hash(generate_scene(recipe(Kind::slivers, 8, 2))) == 0x8fff1938701b95b6u);
   CHECK(scene_hash(generate_scene(recipe(Kind::fan, 8, 3))) == 0xf5b9055a2683cc9au);
   CHECK(scene_hash(generate_scene(recipe(Kind::jittered_grid, 8, 4))) == 0x2be5ff47f5f49ed3u);
+  CHECK(scene_hash(generate_scene(recipe(Kind::in_boxes, 8, 5))) == 0x901f798b040f1759u);
 }
 
 TEST_CASE("A random scene keeps only triangles within the asked areas", "[measure][scenes]") {
@@ -71,5 +74,43 @@ TEST_CASE("A random scene keeps only triangles within the asked areas", "[measur
     const double area = std::abs((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x)) / 2;
     CHECK(area >= 4);
     CHECK(area <= 30);
+  }
+}
+
+// Blend2D's bl_bench FillTriangle shape: three points in a box_side square, the square anywhere
+// on the canvas. On the 1/256 grid a vertex moves at most half a step when snapped.
+TEST_CASE("A boxed scene keeps each triangle within its square, inside the canvas, seeded",
+          "[measure][scenes]") {
+  for (const double side : {8.0, 64.0, 256.0}) {
+    const SceneRecipe r{.kind = SceneRecipe::Kind::in_boxes,
+                        .width = 512,
+                        .height = 600,
+                        .triangles = 300,
+                        .box_side = side,
+                        .seed = 11};
+    const Scene scene = generate_scene(r);
+    REQUIRE(scene.primitives.size() == 300u);
+    double widest = 0;
+    for (const auto& primitive : scene.primitives) {
+      const auto& vertices = std::get<SceneTriangle>(primitive).vertices;
+      glm::dvec2 low = vertices[0], high = vertices[0];
+      for (const auto& v : vertices) {
+        CHECK(v.x >= 0);
+        CHECK(v.x <= 512);
+        CHECK(v.y >= 0);
+        CHECK(v.y <= 600);
+        CHECK(v.x * 256 == std::floor(v.x * 256));
+        low = glm::min(low, v);
+        high = glm::max(high, v);
+      }
+      CHECK(high.x - low.x <= side + 1.0 / 256);
+      CHECK(high.y - low.y <= side + 1.0 / 256);
+      widest = std::max({widest, high.x - low.x, high.y - low.y});
+    }
+    CHECK(widest > side * 0.9);  // the squares are filled, not just a corner of them
+    CHECK(scene_hash(generate_scene(r)) == scene_hash(scene));
+    SceneRecipe other = r;
+    other.seed = 12;
+    CHECK(scene_hash(generate_scene(other)) != scene_hash(scene));
   }
 }

@@ -32,6 +32,18 @@ std::string progress_line(std::size_t done, std::size_t total, const CoverageMea
 
 }  // namespace
 
+std::vector<Timing> time_area_algorithms(std::span<const ch09::AreaAlgorithm> algorithms,
+                                         const PreparedScene& prepared, const TimingPlan& plan) {
+  // One canvas each, allocated before the clock starts; timed against each other.
+  std::vector<ch09::CoverageCanvas> canvases(
+      algorithms.size(), ch09::CoverageCanvas(prepared.scene.width, prepared.scene.height));
+  std::vector<std::function<void()>> runs;
+  for (std::size_t i = 0; i < algorithms.size(); ++i) {
+    runs.emplace_back([&, i] { algorithms[i].draw(canvases[i], prepared.triangles); });
+  }
+  return time_interleaved(runs, plan);
+}
+
 std::vector<CoverageMeasurement> run_coverage_benchmark(
     std::span<const ch09::AreaAlgorithm> algorithms, std::span<const CoveragePeer> peers,
     const BenchSettings& settings, std::ostream& progress) {
@@ -47,14 +59,7 @@ std::vector<CoverageMeasurement> run_coverage_benchmark(
   for (const SuiteScene& suite : settings.scenes) {
     const PreparedScene prepared = prepare_scene(suite, settings.error_triangle_limit);
     const AreaTruth truth(prepared.error_scene);  // the oracle once, for every algorithm
-    // One canvas each, allocated before the clock starts; timed against each other.
-    std::vector<ch09::CoverageCanvas> canvases(
-        algorithms.size(), ch09::CoverageCanvas(prepared.scene.width, prepared.scene.height));
-    std::vector<std::function<void()>> runs;
-    for (std::size_t i = 0; i < algorithms.size(); ++i) {
-      runs.emplace_back([&, i] { algorithms[i].draw(canvases[i], prepared.triangles); });
-    }
-    const std::vector<Timing> timings = time_interleaved(runs, settings.timing);
+    const std::vector<Timing> timings = time_area_algorithms(algorithms, prepared, settings.timing);
     for (std::size_t i = 0; i < algorithms.size(); ++i) {
       const ch09::AreaAlgorithm& a = algorithms[i];
       CoverageMeasurement m = row_for(a.name, a.chapter, rule_name(a.rule), a.samples, prepared);

@@ -29,6 +29,12 @@ struct CoverageMeasurement : RowIdentity {
   double triangles_per_second() const noexcept;
 };
 
+/// Times every coverage algorithm drawing the prepared scene, against each other in interleaved
+/// rounds (time_interleaved), each on a canvas of its own made before the clock and not cleared
+/// between runs. One Timing per algorithm, in order.
+std::vector<Timing> time_area_algorithms(std::span<const ch09::AreaAlgorithm> algorithms,
+                                         const PreparedScene& prepared, const TimingPlan& plan);
+
 /// Times every coverage algorithm on every scene of the settings (interleaved rounds, one canvas
 /// per algorithm, not cleared between runs), measures its error against the exact area of the
 /// error scene (computed once per scene), then every peer; one progress line per row.

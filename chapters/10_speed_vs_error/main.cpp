@@ -94,8 +94,10 @@ int main(int argc, char** argv) {
       "algorithm, times them (warm-up, median of repeated samples, beside the write ceiling)\n"
       "and measures their error against the exact oracle; then chapter 09's coverage algorithms\n"
       "against the exact area; then how the time of a frame grows with the triangles and the\n"
-      "canvas. Writes 10_report.csv, 10_coverage.csv and 10_scaling.csv (every measurement),\n"
-      "10_report.md (the machine, one row per algorithm, the sweeps' tables), and the plots\n"
+      "canvas; then Blend2D's benchmark triangles (N x N boxes, N = 8 to 256, 512x600). Writes\n"
+      "10_report.csv, 10_coverage.csv, 10_scaling.csv and 10_blend2d_shapes.csv (every\n"
+      "measurement), 10_report.md (the machine, one row per algorithm, the sweeps' and shapes'\n"
+      "tables), 10_blend2d_shapes.json (bl_bench's layout), and the plots\n"
       "10_speed_vs_error.svg, 10_coverage_speed_vs_error.svg, 10_scaling_triangles.svg and\n"
       "10_scaling_canvas.svg. Quick by default (about a minute on two cores); --full for the\n"
       "complete sweep.",
@@ -146,13 +148,21 @@ int main(int argc, char** argv) {
           const auto drawers = tri::ch10::scaling_drawers(selection.algorithms, selection.peers);
           scaling = tri::ch10::run_scaling(drawers, tri::ch10::scaling_settings(size), std::cout);
         }
-        tri::ch10::save_report(folder, report, coverage, scaling, std::cout);
+        // Blend2D's benchmark shapes: every chosen drawer, skipped like the sweeps when --scene
+        // or --grid narrowed the run.
+        std::vector<tri::ch10::ShapeRate> shapes;
+        if (!args.has("scene") && !args.has("grid")) {
+          shapes = tri::ch10::run_blend2d_shapes(
+              selection.algorithms, selection.peers, selection.area_algorithms,
+              selection.coverage_peers, tri::ch10::blend2d_shapes_settings(size), std::cout);
+        }
+        tri::ch10::save_report(folder, report, coverage, scaling, shapes, std::cout);
         if (snapshot) {
           const tri::ch10::SnapshotHeader header{args.value_or("commit", "unknown"),
                                                  tri::ch10::utc_date(), tri::peer_versions(),
                                                  args.value_or("note", "")};
-          tri::write_file_safely(
-              *snapshot, tri::bytes_of_text(tri::ch10::snapshot_text(report, coverage, header)));
+          tri::write_file_safely(*snapshot, tri::bytes_of_text(tri::ch10::snapshot_text(
+                                                report, coverage, header, shapes)));
           std::cout << "wrote " << *snapshot << '\n';
         }
         return 0;

@@ -11,7 +11,8 @@
 namespace tri::ch10 {
 
 ReportFiles render_report(const BenchReport& report, const CoverageReport& coverage,
-                          std::span<const ScalingPoint> scaling) {
+                          std::span<const ScalingPoint> scaling,
+                          std::span<const ShapeRate> shapes) {
   const std::vector<AlgorithmSummary> summaries = summarize(report.rows);
   const std::vector<CoverageSummary> coverage_summaries =
       summarize_coverage(coverage.rows, report.rows);
@@ -24,13 +25,15 @@ ReportFiles render_report(const BenchReport& report, const CoverageReport& cover
   return {to_csv(report.rows),
           to_markdown(report, summaries) +
               coverage_markdown(coverage_summaries, coverage.rows, coverage.peer_status) +
-              scaling_markdown(scaling),
+              scaling_markdown(scaling) + blend2d_shapes_markdown(shapes, report.machine),
           to_svg(report, summaries),
           coverage_csv(coverage.rows),
           coverage_svg(coverage_summaries, subtitle),
           scaling_csv(scaling),
           scaling_svg(scaling, "triangles", machine_line),
-          scaling_svg(scaling, "canvas", machine_line)};
+          scaling_svg(scaling, "canvas", machine_line),
+          blend2d_shapes_csv(shapes),
+          bl_bench_json(shapes, report.machine)};
 }
 
 std::vector<std::filesystem::path> report_paths(const std::filesystem::path& folder) {
@@ -41,13 +44,15 @@ std::vector<std::filesystem::path> report_paths(const std::filesystem::path& fol
           folder / coverage_svg_file_name,
           folder / scaling_csv_file_name,
           folder / scaling_triangles_svg_file_name,
-          folder / scaling_canvas_svg_file_name};
+          folder / scaling_canvas_svg_file_name,
+          folder / blend2d_shapes_csv_file_name,
+          folder / blend2d_shapes_json_file_name};
 }
 
 void save_report(const std::filesystem::path& folder, const BenchReport& report,
                  const CoverageReport& coverage, std::span<const ScalingPoint> scaling,
-                 std::ostream& log) {
-  const ReportFiles files = render_report(report, coverage, scaling);
+                 std::span<const ShapeRate> shapes, std::ostream& log) {
+  const ReportFiles files = render_report(report, coverage, scaling, shapes);
   const auto paths = report_paths(folder);
   const std::string* contents[] = {&files.csv,
                                    &files.markdown,
@@ -56,7 +61,9 @@ void save_report(const std::filesystem::path& folder, const BenchReport& report,
                                    &files.coverage_svg,
                                    &files.scaling_csv,
                                    &files.scaling_triangles_svg,
-                                   &files.scaling_canvas_svg};
+                                   &files.scaling_canvas_svg,
+                                   &files.blend2d_shapes_csv,
+                                   &files.blend2d_shapes_json};
   OutputTransaction set;
   for (std::size_t i = 0; i < paths.size(); ++i) set.stage(paths[i], bytes_of_text(*contents[i]));
   set.commit();

@@ -1,6 +1,6 @@
 /// @file
-/// The eight files of a run, rendered from one BenchReport (with the coverage rows and the
-/// scaling sweeps) and saved side by side.
+/// The ten files of a run, rendered from one BenchReport (with the coverage rows, the scaling
+/// sweeps and Blend2D's benchmark shapes) and saved side by side.
 #pragma once
 
 #include <filesystem>
@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "chapters/10_speed_vs_error/blend2d_shapes.hpp"
 #include "chapters/10_speed_vs_error/coverage_measure.hpp"
 #include "chapters/10_speed_vs_error/measure.hpp"
 #include "chapters/10_speed_vs_error/scaling.hpp"
@@ -31,29 +32,32 @@ struct CoverageReport {
   std::string peer_status;  ///< which anti-aliasing peers were measured, or why not
 };
 
-/// The contents of the eight files.
+/// The contents of the ten files.
 struct ReportFiles {
   std::string csv;
-  std::string markdown;  ///< every part: triangle algorithms, coverage algorithms, how cost grows
+  std::string markdown;  ///< every part: triangle and coverage algorithms, cost, Blend2D's shapes
   std::string svg;
   std::string coverage_csv;
   std::string coverage_svg;
   std::string scaling_csv;
   std::string scaling_triangles_svg;
   std::string scaling_canvas_svg;
+  std::string blend2d_shapes_csv;
+  std::string blend2d_shapes_json;  ///< bl_bench's layout
 };
 
-/// Summarizes the report and renders the CSVs, the Markdown and the four plots.
+/// Summarizes the report and renders the CSVs, the Markdown, the four plots and the JSON.
 ReportFiles render_report(const BenchReport& report, const CoverageReport& coverage = {},
-                          std::span<const ScalingPoint> scaling = {});
+                          std::span<const ScalingPoint> scaling = {},
+                          std::span<const ShapeRate> shapes = {});
 
-/// The paths of the eight files in folder, to check before measuring.
+/// The paths of the ten files in folder, to check before measuring.
 std::vector<std::filesystem::path> report_paths(const std::filesystem::path& folder);
 
-/// Writes the eight files into folder as one set (all replaced, or none when one fails) and logs
+/// Writes the ten files into folder as one set (all replaced, or none when one fails) and logs
 /// each path.
 void save_report(const std::filesystem::path& folder, const BenchReport& report,
                  const CoverageReport& coverage, std::span<const ScalingPoint> scaling,
-                 std::ostream& log);
+                 std::span<const ShapeRate> shapes, std::ostream& log);
 
 }  // namespace tri::ch10

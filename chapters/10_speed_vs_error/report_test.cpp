@@ -1,17 +1,20 @@
 // The report code on the tiny setting: three algorithms, 32x32 scenes, one run per sample. These
 // tests check the outputs' form and the error numbers, never a speed.
 #include <algorithm>
+#include <cctype>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <random>
 #include <regex>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include <catch2/catch.hpp>
 
+#include "chapters/10_speed_vs_error/blend2d_shapes.hpp"
 #include "chapters/10_speed_vs_error/coverage_report.hpp"
 #include "chapters/10_speed_vs_error/plot_svg.hpp"
 #include "chapters/10_speed_vs_error/report.hpp"
@@ -75,6 +78,8 @@ struct TinyRun {
   tri::ch10::CoverageReport coverage;
   std::ostringstream scaling_progress;  // the sweeps' own lines, apart from the two parts'
   std::vector<tri::ch10::ScalingPoint> scaling;
+  std::ostringstream shapes_progress;  // Blend2D's shapes, lines of their own
+  std::vector<tri::ch10::ShapeRate> shapes;
   tri::ch10::ReportFiles files;
   TinyRun() {
     report =
@@ -87,7 +92,10 @@ struct TinyRun {
     scaling = tri::ch10::run_scaling(tri::ch10::scaling_drawers(all, peers),
                                      tri::ch10::scaling_settings(tri::ch10::SuiteSize::tiny),
                                      scaling_progress);
-    files = tri::ch10::render_report(report, coverage, scaling);
+    shapes = tri::ch10::run_blend2d_shapes(
+        chosen_algorithms(), peers, chosen_area_algorithms(), tri::coverage_peers(),
+        tri::ch10::blend2d_shapes_settings(tri::ch10::SuiteSize::tiny), shapes_progress);
+    files = tri::ch10::render_report(report, coverage, scaling, shapes);
   }
 };
 
@@ -137,6 +145,95 @@ std::string unbalanced_tag(const std::string& svg) {
   }
   return open.empty() ? "" : "<" + open.back() + "> is never closed";
 }
+
+// A JSON value parsed back from a file the report wrote: enough of JSON for bl_bench's layout
+// (objects, arrays, strings without escapes beyond \" and \\, numbers, null). Throws on
+// anything else, and on text after the value.
+struct Json {
+  enum class Kind { null, number, string, array, object } kind = Kind::null;
+  double number = 0;
+  std::string text;
+  std::vector<Json> items;
+  std::vector<std::pair<std::string, Json>> members;
+
+  const Json& at(const std::string& key) const {
+    for (const auto& [name, value] : members) {
+      if (name == key) return value;
+    }
+    throw std::runtime_error("no key " + key);
+  }
+};
+
+class JsonParser {
+ public:
+  explicit JsonParser(const std::string& text) : text_(text) {}
+  Json document() {
+    Json value = parse();
+    skip_space();
+    if (at_ != text_.size()) throw std::runtime_error("text after the value");
+    return value;
+  }
+
+ private:
+  void skip_space() {
+    while (at_ < text_.size() && std::isspace(static_cast<unsigned char>(text_[at_]))) ++at_;
+  }
+  void expect(char c) {
+    skip_space();
+    if (at_ >= text_.size() || text_[at_] != c) throw std::runtime_error(std::string("no ") + c);
+    ++at_;
+  }
+  bool next_is(char c) {
+    skip_space();
+    return at_ < text_.size() && text_[at_] == c;
+  }
+  std::string string() {
+    expect('"');
+    std::string out;
+    while (at_ < text_.size() && text_[at_] != '"') {
+      if (text_[at_] == '\\') ++at_;
+      out += text_.at(at_++);
+    }
+    expect('"');
+    return out;
+  }
+  Json parse() {
+    Json value;
+    if (next_is('{')) {
+      value.kind = Json::Kind::object;
+      expect('{');
+      while (!next_is('}')) {
+        if (!value.members.empty()) expect(',');
+        std::string key = string();
+        expect(':');
+        value.members.emplace_back(std::move(key), parse());
+      }
+      expect('}');
+    } else if (next_is('[')) {
+      value.kind = Json::Kind::array;
+      expect('[');
+      while (!next_is(']')) {
+        if (!value.items.empty()) expect(',');
+        value.items.push_back(parse());
+      }
+      expect(']');
+    } else if (next_is('"')) {
+      value.kind = Json::Kind::string;
+      value.text = string();
+    } else if (text_.compare(at_, 4, "null") == 0) {
+      at_ += 4;
+    } else {
+      std::size_t used = 0;
+      value.kind = Json::Kind::number;
+      value.number = std::stod(text_.substr(at_, 32), &used);
+      at_ += used;
+    }
+    return value;
+  }
+
+  const std::string& text_;
+  std::size_t at_ = 0;
+};
 
 }  // namespace
 
@@ -331,11 +428,12 @@ TEST_CASE("Error rates are exact at zero, else three significant digits",
   CHECK(tri::format_error_rate(5.41e-06) == "5.41e-06");
 }
 
-TEST_CASE("save_report writes the eight files the run rendered", "[10_speed_vs_error][report]") {
+TEST_CASE("save_report writes the ten files the run rendered", "[10_speed_vs_error][report]") {
   const auto folder = unique_temporary_folder("tri_ch09_report_test");
   std::filesystem::remove_all(folder);
   std::ostringstream log;
-  tri::ch10::save_report(folder, tiny_run().report, tiny_run().coverage, tiny_run().scaling, log);
+  tri::ch10::save_report(folder, tiny_run().report, tiny_run().coverage, tiny_run().scaling,
+                         tiny_run().shapes, log);
   const auto read = [&](const char* name) {
     std::ifstream in(folder / name, std::ios::binary);
     return std::string(std::istreambuf_iterator<char>(in), {});
@@ -348,8 +446,10 @@ TEST_CASE("save_report writes the eight files the run rendered", "[10_speed_vs_e
   CHECK(read(tri::ch10::scaling_csv_file_name) == tiny_run().files.scaling_csv);
   CHECK(read(tri::ch10::scaling_triangles_svg_file_name) == tiny_run().files.scaling_triangles_svg);
   CHECK(read(tri::ch10::scaling_canvas_svg_file_name) == tiny_run().files.scaling_canvas_svg);
+  CHECK(read(tri::ch10::blend2d_shapes_csv_file_name) == tiny_run().files.blend2d_shapes_csv);
+  CHECK(read(tri::ch10::blend2d_shapes_json_file_name) == tiny_run().files.blend2d_shapes_json);
   CHECK_THAT(tiny_run().files.markdown, Catch::Contains("## How cost grows"));
-  CHECK(lines_of(log.str()).size() == 8);
+  CHECK(lines_of(log.str()).size() == 10);
   std::filesystem::remove_all(folder);
 }
 
@@ -361,7 +461,7 @@ TEST_CASE("save_report writes the set whole or not at all: a failing file keeps 
   std::ofstream(folder / tri::ch10::csv_file_name) << "earlier csv";
   std::ostringstream log;
   CHECK_THROWS_WITH(tri::ch10::save_report(folder, tiny_run().report, tiny_run().coverage,
-                                           tiny_run().scaling, log),
+                                           tiny_run().scaling, tiny_run().shapes, log),
                     Catch::Contains("Is a directory"));
   std::ifstream csv(folder / tri::ch10::csv_file_name);
   CHECK(std::string(std::istreambuf_iterator<char>(csv), {}) == "earlier csv");
@@ -562,4 +662,119 @@ TEST_CASE("The snapshot names the run's header, then one KEY,VALUE line per quot
   std::replace(grid.begin(), grid.end(), '/', '_');
   CHECK(values.at(row.algorithm + "." + row.scene + "_" + grid + ".median_s") ==
         tri::format_number(row.timing.seconds.median, 6));
+}
+
+// The drawers of Blend2D's shapes (bl_bench's FillTriangle) in the tiny run, in its order: the
+// aliased algorithms, the coverage algorithms, the peers, the anti-aliasing peers.
+std::vector<std::string> shape_drawers() {
+  std::vector<std::string> names = tiny_algorithms;
+  for (const std::string& name : tiny_area_algorithms) names.push_back(name);
+  for (const tri::ExternalPeer& peer : tiny_run().peers) names.emplace_back(peer.name);
+  for (const tri::CoveragePeer& peer : tri::coverage_peers()) names.emplace_back(peer.name);
+  return names;
+}
+
+TEST_CASE("Blend2D's shapes are drawn by every drawer at every size, the scenes its boxes",
+          "[10_speed_vs_error][blend2d]") {
+  const auto& rows = tiny_run().shapes;
+  const auto names = shape_drawers();
+  REQUIRE(rows.size() == names.size() * tri::ch10::blend2d_box_sides.size());
+  for (std::size_t s = 0; s < tri::ch10::blend2d_box_sides.size(); ++s) {
+    const int side = tri::ch10::blend2d_box_sides[s];
+    const tri::SuiteScene scene = tri::ch10::blend2d_shape_scene(side, 4);
+    CHECK(scene.recipe.kind == tri::SceneRecipe::Kind::in_boxes);
+    CHECK(scene.recipe.box_side == side);
+    CHECK(scene.recipe.width == 512);
+    CHECK(scene.recipe.height == 600);
+    for (std::size_t d = 0; d < names.size(); ++d) {
+      const tri::ch10::ShapeRate& row = rows[s * names.size() + d];
+      INFO(row.drawer << " at " << side);
+      CHECK(row.drawer == names[d]);
+      CHECK(row.box_side == side);
+      CHECK(row.triangles == 4u);
+      CHECK(row.timing.samples == 1);
+      // bl_bench's rate: render calls (triangles) per millisecond of the median frame.
+      CHECK(row.calls_per_ms() == 4 / (row.timing.seconds.median * 1000));
+      CHECK(row.calls_per_ms() > 0);
+    }
+  }
+  CHECK(lines_of(tiny_run().shapes_progress.str()).size() == rows.size());
+}
+
+TEST_CASE("The shapes' JSON file has bl_bench's layout: one positive rate per size per drawer",
+          "[10_speed_vs_error][blend2d]") {
+  const Json json = JsonParser(tiny_run().files.blend2d_shapes_json).document();
+  CHECK(json.at("screen").at("width").number == 512);
+  CHECK(json.at("screen").at("height").number == 600);
+  CHECK(json.at("cpu").at("brand").text == tiny_run().report.machine.cpu_model);
+  CHECK(json.at("cpu").at("instructionSet").text == tri::ch10::host_instruction_set());
+  CHECK(json.at("options").at("quantity").number == 4);
+  const auto& sizes = json.at("options").at("sizes").items;
+  REQUIRE(sizes.size() == 6u);
+  const char* expected_sizes[] = {"8x8", "16x16", "32x32", "64x64", "128x128", "256x256"};
+  for (std::size_t i = 0; i < sizes.size(); ++i) CHECK(sizes[i].text == expected_sizes[i]);
+  const auto names = shape_drawers();
+  const auto& runs = json.at("runs").items;
+  REQUIRE(runs.size() == names.size());
+  for (std::size_t d = 0; d < runs.size(); ++d) {
+    INFO(names[d]);
+    CHECK(runs[d].at("name").text == names[d]);
+    const auto& records = runs[d].at("records").items;
+    REQUIRE(records.size() == 1u);
+    CHECK(records[0].at("test").text == "FillTriangle");
+    CHECK(records[0].at("style").text == "Solid");
+    const auto& rates = records[0].at("rcpms").items;
+    REQUIRE(rates.size() == 6u);
+    for (std::size_t s = 0; s < rates.size(); ++s) {
+      CHECK(rates[s].kind == Json::Kind::number);
+      CHECK(rates[s].number > 0);
+      // The row's rate as bl_bench rounds it: 4 decimals up to 0.1, then 3 significant digits
+      // or more, so within half a unit of 0.0001 or 0.5% of the rate.
+      const double rate = tiny_run().shapes[s * names.size() + d].calls_per_ms();
+      CHECK(std::abs(rates[s].number - rate) <= std::max(0.00005, 0.005 * rate) * (1 + 1e-9));
+    }
+  }
+  // An aliased algorithm replaces; chapter 09's area_cells adds its coverage.
+  CHECK(runs[0].at("records").items[0].at("compOp").text == "SrcCopy");
+  const auto area = std::find(names.begin(), names.end(), "area_cells") - names.begin();
+  CHECK(runs[area].at("records").items[0].at("compOp").text == "Plus");
+}
+
+TEST_CASE("The Markdown has the shapes' section: a row per drawer, a column per size",
+          "[10_speed_vs_error][blend2d]") {
+  const std::string& md = tiny_run().files.markdown;
+  REQUIRE_THAT(md, Catch::Contains("## Blend2D's benchmark shapes"));
+  const std::string section = md.substr(md.find("## Blend2D's benchmark shapes"));
+  CHECK_THAT(section, Catch::Contains("| drawer | chapter | writes | 8x8 | 16x16 | 32x32 | 64x64 | "
+                                      "128x128 | 256x256 |"));
+  CHECK_THAT(section, Catch::Contains(tri::ch10::host_instruction_set()));
+  CHECK_THAT(section, Catch::Contains(tiny_run().report.machine.cpu_model));
+  for (const std::string& name : shape_drawers()) {
+    CHECK(occurrences(section, "| " + name + " |") == 1);
+  }
+  CHECK_THAT(section, Catch::Contains("| area_cells | 09_anti_aliasing | add |"));
+  CHECK(occurrences(section, " | replace |") == tiny_algorithms.size());
+  CHECK_THAT(section, Catch::Contains("not measured"));
+  const auto csv = lines_of(tiny_run().files.blend2d_shapes_csv);
+  REQUIRE(csv.size() == tiny_run().shapes.size() + 1);
+  for (const std::string& line : csv) CHECK(occurrences(line, ",") == occurrences(csv[0], ","));
+  CHECK(tri::ch10::blend2d_shapes_markdown({}, tiny_run().report.machine).empty());
+}
+
+TEST_CASE("The snapshot adds a rate per drawer and size of Blend2D's shapes, and the vectors",
+          "[10_speed_vs_error][snapshot][blend2d]") {
+  const TinyRun& run = tiny_run();
+  const tri::ch10::SnapshotHeader header{"0123abc", "2026-01-02", "pixman 1.2", ""};
+  const auto without = lines_of(tri::ch10::snapshot_text(run.report, run.coverage, header));
+  const auto with =
+      lines_of(tri::ch10::snapshot_text(run.report, run.coverage, header, run.shapes));
+  REQUIRE(with.size() == without.size() + 1 + run.shapes.size());
+  CHECK(std::equal(without.begin(), without.end(), with.begin()));
+  CHECK(with[without.size()] == "blend2d_shapes.vectors," + tri::ch10::host_instruction_set());
+  for (std::size_t i = 0; i < run.shapes.size(); ++i) {
+    const tri::ch10::ShapeRate& r = run.shapes[i];
+    CHECK(with[without.size() + 1 + i] == r.drawer + ".blend2d_" + std::to_string(r.box_side) +
+                                              ".calls_per_ms," +
+                                              tri::format_number(r.calls_per_ms(), 6));
+  }
 }

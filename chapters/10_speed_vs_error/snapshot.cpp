@@ -36,7 +36,7 @@ std::string scene_key(const Measurement& m) {
 }  // namespace
 
 std::string snapshot_text(const BenchReport& report, const CoverageReport& coverage,
-                          const SnapshotHeader& header) {
+                          const SnapshotHeader& header, std::span<const ShapeRate> shapes) {
   std::ostringstream out;
   out << "# Measurement snapshot of chapter 10's report, " << size_name(report.size) << " setting\n"
       << "# machine: " << report.machine.cpu_model << ", " << report.machine.threads
@@ -70,6 +70,11 @@ std::string snapshot_text(const BenchReport& report, const CoverageReport& cover
     keys.add(s.algorithm + ".tris_per_s", s.tris_per_s);
     keys.add(s.algorithm + ".mean_error", s.mean_error);
     keys.add(s.algorithm + ".max_error", s.max_error);
+  }
+  if (!shapes.empty()) keys.add("blend2d_shapes.vectors", host_instruction_set());
+  for (const ShapeRate& r : shapes) {
+    keys.add(r.drawer + ".blend2d_" + std::to_string(r.box_side) + ".calls_per_ms",
+             r.calls_per_ms());
   }
   return out.str() + keys.text();
 }

@@ -3,6 +3,7 @@
 /// a header naming the machine, compiler, commit and date (read by tools/listings/measured.hpp).
 #pragma once
 
+#include <span>
 #include <string>
 
 #include "chapters/10_speed_vs_error/report.hpp"
@@ -25,9 +26,11 @@ struct SnapshotHeader {
 /// large_mpix_per_s, tiny_tris_per_s, mesh_tris_per_s, ratio_to_ceiling, error_rate; the coverage
 /// algorithms' cost_vs_fastest, tris_per_s, mean_error, max_error) and
 /// `<algorithm>.<scene>_<grid>.<metric>` per scene (median_s, tris_per_s, mpix_per_s,
-/// ratio_to_ceiling), the grid `1/256` written `1_256`.
+/// ratio_to_ceiling), the grid `1/256` written `1_256`; then, with Blend2D's shapes,
+/// `blend2d_shapes.vectors` (host_instruction_set) and `<drawer>.blend2d_<N>.calls_per_ms` per
+/// drawer and size.
 std::string snapshot_text(const BenchReport& report, const CoverageReport& coverage,
-                          const SnapshotHeader& header);
+                          const SnapshotHeader& header, std::span<const ShapeRate> shapes = {});
 
 /// Today's date in UTC, as YYYY-MM-DD.
 std::string utc_date();
