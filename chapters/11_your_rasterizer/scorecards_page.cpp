@@ -80,19 +80,23 @@ std::string scorecards_table(std::span<const conformance::Scorecard> cards) {
   md << "\n";
   for (const conformance::Scorecard& card : cards) {
     md << "| `" << card.rasterizer << "` | " << conformance::tie_rule_name(card.rule) << " |";
-    for (const conformance::TestResult& r : card.results) {
-      if (r.passed) {
-        md << " pass |";
-      } else if (r.smallest_failure) {
-        md << " [**fail**](" << page_diagram_name(card, r) << ") |";
-      } else {
-        md << " **fail** |";
-      }
-    }
+    for (const conformance::TestResult& r : card.results)
+      md << (r.passed ? " pass |" : " **fail** |");
     md << "\n";
   }
   md << "\nWhat each test checks:\n\n";
   for (const auto& r : cards.front().results) md << "- `" << r.test << "`: " << r.promise << "\n";
+  // Images, not links: the site copies a page's images, and a reader sees every failure at once.
+  for (const conformance::Scorecard& card : cards) {
+    bool heading = false;
+    for (const conformance::TestResult& r : card.results) {
+      if (r.passed || !r.smallest_failure) continue;
+      if (!heading) md << "\n## The failures of `" << card.rasterizer << "`\n";
+      heading = true;
+      md << "\n![" << card.rasterizer << " on " << r.test << ": " << r.smallest_failure->label
+         << ", its wrong pixels marked](" << page_diagram_name(card, r) << ")\n";
+    }
+  }
   // A refused scene, a crash or a hang has no wrong pixels to draw: its reason is the story.
   bool any_without_diagram = false;
   for (const conformance::Scorecard& card : cards) {
@@ -112,9 +116,10 @@ std::string scorecards_markdown(std::span<const conformance::Scorecard> cards) {
   return "# Scorecards <!-- doxygen: {#scorecards} -->\n\n"
          "Every rasterizer of the book that draws pixels, graded by the conformance suite "
          "(chapter 11) under the tie rule it declares (top-left for those that declare no exact "
-         "rule, so their errors show). A failed test links the pixel diagram of its smallest "
-         "failing case: missed pixels, extra pixels and pixels drawn twice, marked over the ideal "
-         "triangles. This page is written by `11_your_rasterizer --out`; where the site is built "
+         "rule, so their errors show). Below the table, each failed test shows the pixel diagram "
+         "of its smallest failing case: missed pixels, extra pixels and pixels drawn twice, marked "
+         "over the ideal triangles. This page is written by `11_your_rasterizer --out`; where the "
+         "site is built "
          "with the "
          "peers of chapter 10, their scorecards are on a page of their own.\n\n" +
          scorecards_table(cards);

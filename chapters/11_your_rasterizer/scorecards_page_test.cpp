@@ -42,7 +42,7 @@ TEST_CASE("The scorecards page grades every registered fill that draws pixels, a
 }
 
 TEST_CASE(
-    "On the scorecards page the exact fills pass everything and each failure links its "
+    "On the scorecards page the exact fills pass everything and each failure shows its "
     "diagram",
     "[11_your_rasterizer][step4]") {
   for (const char* exact : {"exact_oracle", "fixed_point_8", "fast_batched"}) {
@@ -55,7 +55,6 @@ TEST_CASE(
   for (const auto& r : scanline.results) {
     if (r.passed) continue;
     CAPTURE(r.test);
-    CHECK(page.find("[**fail**](" + tri::ch11::page_diagram_name(scanline, r) + ")") !=
-          std::string::npos);
+    CHECK(page.find("](" + tri::ch11::page_diagram_name(scanline, r) + ")\n") != std::string::npos);
   }
 }
