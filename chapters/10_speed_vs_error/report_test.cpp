@@ -154,11 +154,13 @@ struct Json {
   double number = 0;
   std::string text;
   std::vector<Json> items;
-  std::vector<std::pair<std::string, Json>> members;
+  // An object's keys and values side by side: a pair would need Json complete (Clang's check).
+  std::vector<std::string> keys;
+  std::vector<Json> values;
 
   const Json& at(const std::string& key) const {
-    for (const auto& [name, value] : members) {
-      if (name == key) return value;
+    for (std::size_t i = 0; i < keys.size(); ++i) {
+      if (keys[i] == key) return values[i];
     }
     throw std::runtime_error("no key " + key);
   }
@@ -203,10 +205,11 @@ class JsonParser {
       value.kind = Json::Kind::object;
       expect('{');
       while (!next_is('}')) {
-        if (!value.members.empty()) expect(',');
+        if (!value.keys.empty()) expect(',');
         std::string key = string();
         expect(':');
-        value.members.emplace_back(std::move(key), parse());
+        value.keys.push_back(std::move(key));
+        value.values.push_back(parse());
       }
       expect('}');
     } else if (next_is('[')) {

@@ -88,15 +88,17 @@ namespace {
 
 // A triangle reaching x = far_x on an 8x8 canvas: the library must refuse the scene with a message
 // naming itself and its limit, never draw it with wrapped-around fixed-point coordinates.
-void check_refuses_far_vertex(const tri::CountingDraw& write_counts, double far_x,
-                              const std::string& library, const std::string& limit) {
+[[maybe_unused]] void check_refuses_far_vertex(const tri::CountingDraw& write_counts, double far_x,
+                                               const std::string& library,
+                                               const std::string& limit) {
   const std::vector<tri::SceneTriangle> far{{{{{0, 0}, {far_x, 0}, {0, 5}}}, tri::colors::white}};
   CHECK_THROWS_WITH(write_counts(8, 8, far),
                     Catch::Contains(library + " cannot draw this scene") && Catch::Contains(limit));
 }
 
-void check_refuses_far_vertex(const tri::CoveragePeer& peer, double far_x,
-                              const std::string& library, const std::string& limit) {
+[[maybe_unused]] void check_refuses_far_vertex(const tri::CoveragePeer& peer, double far_x,
+                                               const std::string& library,
+                                               const std::string& limit) {
   tri::Scene scene = tri::peers_test::small_scene(tri::SceneRecipe::Kind::random, 8, 63);
   scene.primitives.push_back(tri::SceneTriangle{{{{0, 0}, {far_x, 0}, {0, 5}}}});
   CHECK_THROWS_WITH(tri::peers_test::measure_coverage_peer(peer, scene),
