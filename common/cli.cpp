@@ -92,6 +92,12 @@ std::string CommandLine::help_text() const {
   return text.str();
 }
 
+std::string comma_separated(const std::vector<std::string>& names) {
+  std::string joined;
+  for (const auto& n : names) joined += (joined.empty() ? "" : ", ") + n;
+  return joined;
+}
+
 std::vector<std::string> parse_name_list(std::string_view option, std::string_view list,
                                          const std::vector<std::string>& valid) {
   std::vector<std::string> names;
@@ -104,10 +110,8 @@ std::vector<std::string> parse_name_list(std::string_view option, std::string_vi
                        "' has an empty name (a leading, trailing or doubled comma)");
     }
     if (std::find(valid.begin(), valid.end(), name) == valid.end()) {
-      std::string choices;
-      for (const auto& v : valid) choices += (choices.empty() ? "" : ", ") + v;
       throw UsageError("--" + std::string(option) + ": unknown name '" + name +
-                       "' (valid: " + choices + ")");
+                       "' (valid: " + comma_separated(valid) + ")");
     }
     if (std::find(names.begin(), names.end(), name) != names.end()) {
       throw UsageError("--" + std::string(option) + ": '" + name + "' is named twice");

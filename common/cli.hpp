@@ -71,6 +71,9 @@ class CommandLine {
   std::vector<CliOption> options_;
 };
 
+/// The names joined with ", ", as help texts and errors list the valid choices.
+std::string comma_separated(const std::vector<std::string>& names);
+
 /// The names of a comma-separated list given to --option: each must be one of valid, none empty
 /// (so a leading, trailing or doubled comma is refused) and none twice. Throws UsageError naming
 /// the valid names otherwise.

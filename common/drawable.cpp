@@ -1,21 +1,22 @@
 #include "common/drawable.hpp"
 
+#include "common/enum_names.hpp"
+
 namespace tri {
 
+namespace {
+
+constexpr auto rule_names =
+    all_names<CoverageRule::area>({{CoverageRule::top_left, "top-left"},
+                                   {CoverageRule::bottom_left, "bottom-left"},
+                                   {CoverageRule::inclusive, "inclusive"},
+                                   {CoverageRule::approximate, "approximate"},
+                                   {CoverageRule::area, "area"}});
+
+}  // namespace
+
 std::string_view rule_name(CoverageRule rule) noexcept {
-  switch (rule) {
-    case CoverageRule::top_left:
-      return "top-left";
-    case CoverageRule::bottom_left:
-      return "bottom-left";
-    case CoverageRule::inclusive:
-      return "inclusive";
-    case CoverageRule::approximate:
-      return "approximate";
-    case CoverageRule::area:
-      return "area";
-  }
-  return "approximate";
+  return name_in(rule_names, rule, "approximate");
 }
 
 }  // namespace tri

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "common/enum_names.hpp"
 #include "common/scene.hpp"
 
 namespace tri {
@@ -14,16 +15,17 @@ const TriangleAlgorithm* algorithm_with_role(std::span<const TriangleAlgorithm> 
   return nullptr;
 }
 
+namespace {
+
+constexpr auto result_texts = all_names<DrawResult::rejected_out_of_range>(
+    {{DrawResult::drawn, "drawn"},
+     {DrawResult::rejected_non_finite, "not drawn: a vertex coordinate is NaN or infinite"},
+     {DrawResult::rejected_out_of_range, "not drawn: a vertex coordinate is outside ±2^30"}});
+
+}  // namespace
+
 std::string_view describe(DrawResult result) noexcept {
-  switch (result) {
-    case DrawResult::drawn:
-      return "drawn";
-    case DrawResult::rejected_non_finite:
-      return "not drawn: a vertex coordinate is NaN or infinite";
-    case DrawResult::rejected_out_of_range:
-      return "not drawn: a vertex coordinate is outside ±2^30";
-  }
-  return "not drawn";
+  return name_in(result_texts, result, "not drawn");
 }
 
 DrawResult validate_triangle(const Triangle& triangle) noexcept {

@@ -14,24 +14,26 @@
 #include "measure/render_scene.hpp"
 
 int main(int argc, char** argv) {
+  // The help and the refusal list the peers this build has, from the list itself.
+  const auto peers = tri::external_peers();
+  std::vector<std::string> names;
+  for (const auto& p : peers) names.emplace_back(p.name);
+  const std::string valid = names.empty() ? "none" : tri::comma_separated(names);
   const tri::CommandLine command_line(
       "peer_rasterizer",
       "Draws a scene with one external peer and writes its write counts, so that the\n"
       "conformance suite can grade it through --command:\n"
       "  conformance --command 'peer_rasterizer --peer NAME --scene {scene} --counts {counts}'",
-      {{"peer", "NAME", "the peer (one this build has, e.g. pixman_a1)"},
+      {{"peer", "NAME", "the peer, one this build has: " + valid},
        {"scene", "FILE", "the scene to draw (docs/DESIGN.md section 4)"},
        {"counts", "FILE.pgm", "where the write counts go"}});
   return tri::run_command_line(
-      command_line, argc, argv, std::cout, std::cerr, [](const tri::CliArguments& args) {
-        const auto peers = tri::external_peers();
+      command_line, argc, argv, std::cout, std::cerr, [&](const tri::CliArguments& args) {
         const std::string name = args.value_or("peer", "");
         const tri::ExternalPeer* peer = tri::find_named(peers, name);
         if (peer == nullptr) {
-          std::string names;
-          for (const auto& p : peers) (names += names.empty() ? "" : ", ") += p.name;
-          throw tri::UsageError("--peer: unknown peer '" + name +
-                                "' (this build has: " + (names.empty() ? "none" : names) + ")");
+          throw tri::UsageError("--peer: unknown peer '" + name + "' (this build has: " + valid +
+                                ")");
         }
         const auto scene_path = args.value("scene");
         const auto counts_path = args.value("counts");

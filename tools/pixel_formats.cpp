@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "chapters/08_fast_exact/narrow_canvases.hpp"
+#include "common/enum_names.hpp"
 #include "measure/render_scene.hpp"
 
 namespace tri {
@@ -22,25 +23,18 @@ std::vector<Color> triangle_colors(const Scene& scene) {
 
 constexpr std::size_t max_palette_colors = 255;  // index 0 is the background
 
-constexpr std::array<std::pair<PixelFormat, std::string_view>, 3> format_names{
-    {{PixelFormat::rgba8, "rgba8"},
-     {PixelFormat::index8, "index8"},
-     {PixelFormat::mask1, "mask1"}}};
+constexpr auto format_names = all_names<PixelFormat::mask1>({{PixelFormat::rgba8, "rgba8"},
+                                                             {PixelFormat::index8, "index8"},
+                                                             {PixelFormat::mask1, "mask1"}});
 
 }  // namespace
 
 std::string_view format_name(PixelFormat format) noexcept {
-  for (const auto& [f, name] : format_names) {
-    if (f == format) return name;
-  }
-  return "rgba8";
+  return name_in(format_names, format, "rgba8");
 }
 
 std::optional<PixelFormat> parse_format(std::string_view name) noexcept {
-  for (const auto& [f, n] : format_names) {
-    if (n == name) return f;
-  }
-  return std::nullopt;
+  return value_named(format_names, name);
 }
 
 Output output_of(PixelFormat format) noexcept {

@@ -23,6 +23,7 @@
 #include "common/scene.hpp"
 #include "measure/registry.hpp"
 #include "measure/render_scene.hpp"
+#include "tests/support/program_run.hpp"
 #include "tools/raster_app.hpp"
 
 namespace fs = std::filesystem;
@@ -54,18 +55,13 @@ class ScratchFolder {
   fs::path path_;
 };
 
-struct Outcome {
-  int status;
-  std::string out;
-  std::string err;
-};
+using Outcome = tri::testing::ProgramRun;
 
 Outcome raster(const std::vector<std::string>& words) {
-  std::vector<const char*> argv{"raster"};
-  for (const auto& w : words) argv.push_back(w.c_str());
-  std::ostringstream out, err;
-  const int status = tri::run_raster(static_cast<int>(argv.size()), argv.data(), out, err);
-  return {status, out.str(), err.str()};
+  return tri::testing::run_program(
+      "raster", words, [](int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
+        return tri::run_raster(argc, argv, out, err);
+      });
 }
 
 // How many lines of err match the pattern.

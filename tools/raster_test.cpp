@@ -20,52 +20,35 @@
 #include "measure/drawable.hpp"
 #include "measure/registry.hpp"
 #include "measure/render_scene.hpp"
+#include "tests/support/program_run.hpp"
+#include "tests/support/scratch_folder.hpp"
 #include "tools/raster_app.hpp"
 
 namespace fs = std::filesystem;
 
 namespace {
 
-// A fresh folder per test case, removed afterwards.
+// A fresh folder per test case (the scratch folder), with the writes and the count the tests use.
 class TempFolder {
  public:
-  TempFolder() {
-    path_ = fs::temp_directory_path() /
-            ("raster_test_" + std::to_string(reinterpret_cast<std::uintptr_t>(this)));
-    fs::remove_all(path_);
-    fs::create_directories(path_);
-  }
-  ~TempFolder() {
-    std::error_code ignored;
-    fs::remove_all(path_, ignored);
-  }
   fs::path write(const std::string& name, const std::string& text) const {
-    std::ofstream(path_ / name) << text;
-    return path_ / name;
+    tri::testing::write_text(folder_ / name, text);
+    return folder_ / name;
   }
-  fs::path operator/(const std::string& name) const { return path_ / name; }
-  std::size_t file_count() const {
-    return static_cast<std::size_t>(
-        std::distance(fs::directory_iterator(path_), fs::directory_iterator()));
-  }
+  fs::path operator/(const std::string& name) const { return folder_ / name; }
+  std::size_t file_count() const { return tri::testing::names_in(folder_.path()).size(); }
 
  private:
-  fs::path path_;
+  tri::testing::ScratchFolder folder_{"raster_test"};
 };
 
-struct Run {
-  int status;
-  std::string out;
-  std::string err;
-};
+using Run = tri::testing::ProgramRun;
 
-Run raster(std::vector<std::string> args) {
-  args.insert(args.begin(), "raster");
-  std::vector<const char*> argv;
-  for (const auto& a : args) argv.push_back(a.c_str());
-  std::ostringstream out, err;
-  const int status = tri::run_raster(static_cast<int>(argv.size()), argv.data(), out, err);
-  return {status, out.str(), err.str()};
+Run raster(const std::vector<std::string>& args) {
+  return tri::testing::run_program(
+      "raster", args, [](int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
+        return tri::run_raster(argc, argv, out, err);
+      });
 }
 
 std::string read_file(const fs::path& path) {

@@ -228,33 +228,13 @@ PixelDiagram count_diagram(const Canvas& counted, std::string title, double cell
   return diagram;
 }
 
-// The part of segment a-b inside the box [low, high]^2 (Liang-Barsky), if any: mesh edges that
-// reach beyond the canvas are cut at the diagram's border.
-std::optional<std::pair<glm::dvec2, glm::dvec2>> clipped(glm::dvec2 a, glm::dvec2 b, double low,
-                                                         double high) {
-  double t0 = 0, t1 = 1;
-  const glm::dvec2 d = b - a;
-  for (int axis = 0; axis < 2; ++axis) {
-    for (const auto& [p, q] : {std::pair{-d[axis], a[axis] - low}, {d[axis], high - a[axis]}}) {
-      if (p == 0) {
-        if (q < 0) return std::nullopt;
-        continue;
-      }
-      const double r = q / p;
-      if (p < 0) t0 = std::max(t0, r);
-      if (p > 0) t1 = std::min(t1, r);
-    }
-  }
-  if (t0 > t1) return std::nullopt;
-  return std::pair{a + t0 * d, a + t1 * d};
-}
-
 // The mesh's edges over a count map of a size x size canvas, cut at the canvas's border.
 void draw_mesh_edges(PixelDiagram& diagram, const std::vector<Triangle>& mesh, int size) {
   for (const Triangle& t : mesh) {
     for (int i = 0; i < 3; ++i) {
-      if (const auto part = clipped(t[i], t[(i + 1) % 3], -0.5, size - 0.5)) {
-        diagram.line(part->first, part->second, palette::black, 1);
+      if (const auto part =
+              tri::clip_segment(t[i], t[(i + 1) % 3], glm::dvec2(-0.5), glm::dvec2(size - 0.5))) {
+        diagram.line((*part)[0], (*part)[1], palette::black, 1);
       }
     }
   }

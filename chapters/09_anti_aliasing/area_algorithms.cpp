@@ -40,6 +40,30 @@ SamplePattern pattern() {
 
 constexpr std::string_view chapter = "09_anti_aliasing";
 
+// A sampling entry: the pattern and its size decide how it draws, its rows and its samples.
+template <SamplePattern (*pattern_of)(int), int n>
+constexpr AreaAlgorithm sampling(std::string_view name, std::string_view summary, int samples) {
+  return {.name = name,
+          .chapter = chapter,
+          .summary = summary,
+          .draw = draw_samples<pattern_of, n>,
+          .samples = samples,
+          .draw_rows = draw_samples_rows<pattern_of, n>,
+          .sample_pattern = pattern<pattern_of, n>};
+}
+
+// n x n regular samples per pixel.
+template <int n>
+constexpr AreaAlgorithm grid(std::string_view name, std::string_view summary) {
+  return sampling<regular_grid, n>(name, summary, n * n);
+}
+
+// Vulkan's standard n-sample pattern.
+template <int n>
+constexpr AreaAlgorithm standard(std::string_view name, std::string_view summary) {
+  return sampling<standard_pattern, n>(name, summary, n);
+}
+
 constexpr std::array algorithms = {
     AreaAlgorithm{.name = "area_cells",
                   .chapter = chapter,
@@ -50,70 +74,21 @@ constexpr std::array algorithms = {
                   .summary = "exact area per triangle, composited over as alpha (seams on meshes)",
                   .draw = draw_area_cells<Blend::over>,
                   .composites_over = true},
-    AreaAlgorithm{.name = "samples_grid_1x1",
-                  .chapter = chapter,
-                  .summary = "1 sample per pixel (the centre), top-left rule: inside or outside",
-                  .draw = draw_samples<regular_grid, 1>,
-                  .samples = 1,
-                  .draw_rows = draw_samples_rows<regular_grid, 1>,
-                  .sample_pattern = pattern<regular_grid, 1>},
-    AreaAlgorithm{.name = "samples_grid_2x2",
-                  .chapter = chapter,
-                  .summary = "2x2 regular samples per pixel, each by chapter 08's span walker",
-                  .draw = draw_samples<regular_grid, 2>,
-                  .samples = 4,
-                  .draw_rows = draw_samples_rows<regular_grid, 2>,
-                  .sample_pattern = pattern<regular_grid, 2>},
-    AreaAlgorithm{.name = "samples_grid_4x4",
-                  .chapter = chapter,
-                  .summary = "4x4 regular samples per pixel, each by chapter 08's span walker",
-                  .draw = draw_samples<regular_grid, 4>,
-                  .samples = 16,
-                  .draw_rows = draw_samples_rows<regular_grid, 4>,
-                  .sample_pattern = pattern<regular_grid, 4>},
-    AreaAlgorithm{.name = "samples_grid_8x8",
-                  .chapter = chapter,
-                  .summary = "8x8 regular samples per pixel, each by chapter 08's span walker",
-                  .draw = draw_samples<regular_grid, 8>,
-                  .samples = 64,
-                  .draw_rows = draw_samples_rows<regular_grid, 8>,
-                  .sample_pattern = pattern<regular_grid, 8>},
-    AreaAlgorithm{.name = "samples_grid_16x16",
-                  .chapter = chapter,
-                  .summary = "16x16 regular samples per pixel, each by chapter 08's span walker",
-                  .draw = draw_samples<regular_grid, 16>,
-                  .samples = 256,
-                  .draw_rows = draw_samples_rows<regular_grid, 16>,
-                  .sample_pattern = pattern<regular_grid, 16>},
-    AreaAlgorithm{.name = "samples_standard_2",
-                  .chapter = chapter,
-                  .summary = "Vulkan's standard 2-sample pattern, each by chapter 08's span walker",
-                  .draw = draw_samples<standard_pattern, 2>,
-                  .samples = 2,
-                  .draw_rows = draw_samples_rows<standard_pattern, 2>,
-                  .sample_pattern = pattern<standard_pattern, 2>},
-    AreaAlgorithm{.name = "samples_standard_4",
-                  .chapter = chapter,
-                  .summary = "Vulkan's standard 4-sample pattern, each by chapter 08's span walker",
-                  .draw = draw_samples<standard_pattern, 4>,
-                  .samples = 4,
-                  .draw_rows = draw_samples_rows<standard_pattern, 4>,
-                  .sample_pattern = pattern<standard_pattern, 4>},
-    AreaAlgorithm{.name = "samples_standard_8",
-                  .chapter = chapter,
-                  .summary = "Vulkan's standard 8-sample pattern, each by chapter 08's span walker",
-                  .draw = draw_samples<standard_pattern, 8>,
-                  .samples = 8,
-                  .draw_rows = draw_samples_rows<standard_pattern, 8>,
-                  .sample_pattern = pattern<standard_pattern, 8>},
-    AreaAlgorithm{
-        .name = "samples_standard_16",
-        .chapter = chapter,
-        .summary = "Vulkan's standard 16-sample pattern, each by chapter 08's span walker",
-        .draw = draw_samples<standard_pattern, 16>,
-        .samples = 16,
-        .draw_rows = draw_samples_rows<standard_pattern, 16>,
-        .sample_pattern = pattern<standard_pattern, 16>},
+    grid<1>("samples_grid_1x1",
+            "1 sample per pixel (the centre), top-left rule: inside or outside"),
+    grid<2>("samples_grid_2x2", "2x2 regular samples per pixel, each by chapter 08's span walker"),
+    grid<4>("samples_grid_4x4", "4x4 regular samples per pixel, each by chapter 08's span walker"),
+    grid<8>("samples_grid_8x8", "8x8 regular samples per pixel, each by chapter 08's span walker"),
+    grid<16>("samples_grid_16x16",
+             "16x16 regular samples per pixel, each by chapter 08's span walker"),
+    standard<2>("samples_standard_2",
+                "Vulkan's standard 2-sample pattern, each by chapter 08's span walker"),
+    standard<4>("samples_standard_4",
+                "Vulkan's standard 4-sample pattern, each by chapter 08's span walker"),
+    standard<8>("samples_standard_8",
+                "Vulkan's standard 8-sample pattern, each by chapter 08's span walker"),
+    standard<16>("samples_standard_16",
+                 "Vulkan's standard 16-sample pattern, each by chapter 08's span walker"),
 };
 
 }  // namespace

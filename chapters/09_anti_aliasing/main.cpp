@@ -56,28 +56,6 @@ tri::SvgFigure exact_coverage_figure() {
   return {"09_exact_coverage", d.svg()};
 }
 
-// The part of segment a -> b inside the box [x0, x1] x [y0, y1] (Liang-Barsky), if any: where
-// the figures draw an edge's piece.
-std::optional<std::array<glm::dvec2, 2>> clip_segment(glm::dvec2 a, glm::dvec2 b, glm::dvec2 low,
-                                                      glm::dvec2 high) {
-  double t0 = 0, t1 = 1;
-  const glm::dvec2 d = b - a;
-  for (int axis = 0; axis < 2; ++axis) {
-    for (const auto& [p, q] :
-         {std::pair{-d[axis], a[axis] - low[axis]}, std::pair{d[axis], high[axis] - a[axis]}}) {
-      if (p == 0) {
-        if (q < 0) return std::nullopt;
-        continue;
-      }
-      const double t = q / p;
-      if (p < 0) t0 = std::max(t0, t);
-      if (p > 0) t1 = std::min(t1, t);
-    }
-  }
-  if (t0 >= t1) return std::nullopt;
-  return std::array<glm::dvec2, 2>{a + t0 * d, a + t1 * d};
-}
-
 // Which side of the pixel a figure measures each edge piece from.
 enum class MeasuredFrom { left_side, right_side };
 
@@ -147,8 +125,8 @@ tri::SvgFigure edge_pieces_figure(MeasuredFrom from) {
     }};
     for (const Part& part : pieces) {
       if (part.height == Fraction(0)) continue;
-      const auto piece = clip_segment(a, b, part.low, part.high);
-      if (!piece) continue;
+      const auto piece = tri::clip_segment(a, b, part.low, part.high);
+      if (!piece || (*piece)[0] == (*piece)[1]) continue;  // a corner touched: no piece to draw
       const Fraction adds = part.height * part.width;
       const glm::dvec2 middle = ((*piece)[0] + (*piece)[1]) / 2.0;
       if (part.where == "inside") {  // the trapezoid between the piece and the measured side

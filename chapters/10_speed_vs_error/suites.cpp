@@ -6,67 +6,56 @@ namespace tri::ch10 {
 namespace {
 
 // One scene kind at one suite size: what generate_scene needs besides the canvas and the grid.
-struct KindSpec {
-  const char* name;
-  SceneRecipe::Kind kind;
+struct KindSize {
   int triangles;
   double min_extent;
   double max_extent;
 };
 
-// One suite size: its name, its scenes, how it is timed.
+using Kind = SceneRecipe::Kind;
+
+// One scene kind: its name, its generator and its size in each suite, in SuiteSize's order.
+struct KindSpec {
+  const char* name;
+  Kind kind;
+  std::array<KindSize, 3> sizes;
+};
+
+// From 1-pixel triangles to canvas-sized ones, plus the shapes that break rasterizers: needles,
+// a fan around one vertex, a jittered mesh; "mixed" spans every size at once.
+constexpr std::array<KindSpec, 7> kinds{{
+    {"tiny", Kind::random, {{{20, 0.5, 2}, {4000, 0.5, 2}, {50000, 0.5, 2}}}},
+    {"medium", Kind::random, {{{10, 2, 6}, {1000, 4, 16}, {10000, 4, 16}}}},
+    {"large", Kind::random, {{{2, 8, 20}, {16, 64, 160}, {64, 128, 320}}}},
+    {"slivers", Kind::slivers, {{{10, 4, 16}, {1000, 8, 64}, {10000, 16, 128}}}},
+    {"mesh", Kind::jittered_grid, {{{32, 0, 0}, {4000, 0, 0}, {100352, 0, 0}}}},  // 224x224 cells
+    {"fan", Kind::fan, {{{16, 0, 0}, {256, 0, 0}, {1024, 0, 0}}}},
+    {"mixed", Kind::random, {{{10, 0.5, 12}, {1000, 0.5, 64}, {10000, 0.5, 128}}}},
+}};
+
+// One suite size: its name, its canvas, how it is timed.
 struct SizeSpec {
   std::string_view name;
   int side;  // square canvas
-  std::array<KindSpec, 7> kinds;
   TimingPlan timing;
   int reference_canvas_sides[2];  // 0: none
 };
 
-using Kind = SceneRecipe::Kind;
+// The sizes in SuiteSize's order; tiny is timed once with one sample: the tests check the format.
+constexpr std::array<SizeSpec, 3> specs{{
+    {"tiny", 32, {0.0, 1, 1}, {64, 0}},
+    {"quick", 256, {0.01, 3, 1 << 20}, {512, 4096}},
+    {"full", 512, {0.02, 7, 1 << 22}, {512, 4096}},
+}};
 
-// From 1-pixel triangles to canvas-sized ones, plus the shapes that break rasterizers: needles,
-// a fan around one vertex, a jittered mesh; "mixed" spans every size at once.
-constexpr SizeSpec tiny_spec{"tiny",
-                             32,
-                             {{{"tiny", Kind::random, 20, 0.5, 2},
-                               {"medium", Kind::random, 10, 2, 6},
-                               {"large", Kind::random, 2, 8, 20},
-                               {"slivers", Kind::slivers, 10, 4, 16},
-                               {"mesh", Kind::jittered_grid, 32, 0, 0},
-                               {"fan", Kind::fan, 16, 0, 0},
-                               {"mixed", Kind::random, 10, 0.5, 12}}},
-                             {0.0, 1, 1},  // one run, one sample: the tests check the format only
-                             {64, 0}};
-constexpr SizeSpec quick_spec{"quick",
-                              256,
-                              {{{"tiny", Kind::random, 4000, 0.5, 2},
-                                {"medium", Kind::random, 1000, 4, 16},
-                                {"large", Kind::random, 16, 64, 160},
-                                {"slivers", Kind::slivers, 1000, 8, 64},
-                                {"mesh", Kind::jittered_grid, 4000, 0, 0},
-                                {"fan", Kind::fan, 256, 0, 0},
-                                {"mixed", Kind::random, 1000, 0.5, 64}}},
-                              {0.01, 3, 1 << 20},
-                              {512, 4096}};
-constexpr SizeSpec full_spec{"full",
-                             512,
-                             {{{"tiny", Kind::random, 50000, 0.5, 2},
-                               {"medium", Kind::random, 10000, 4, 16},
-                               {"large", Kind::random, 64, 128, 320},
-                               {"slivers", Kind::slivers, 10000, 16, 128},
-                               {"mesh", Kind::jittered_grid, 100352, 0, 0},  // 224x224 cells
-                               {"fan", Kind::fan, 1024, 0, 0},
-                               {"mixed", Kind::random, 10000, 0.5, 128}}},
-                             {0.02, 7, 1 << 22},
-                             {512, 4096}};
-
-// The sizes in SuiteSize's order.
-constexpr std::array<const SizeSpec*, 3> specs{&tiny_spec, &quick_spec, &full_spec};
+// The index of a size in specs and in every kind's sizes; an unknown size reads as quick.
+std::size_t index_of(SuiteSize size) noexcept {
+  const auto i = static_cast<std::size_t>(size);
+  return i < specs.size() ? i : 1;
+}
 
 const SizeSpec& spec_of(SuiteSize size) noexcept {
-  const auto i = static_cast<std::size_t>(size);
-  return i < specs.size() ? *specs[i] : quick_spec;
+  return specs[index_of(size)];
 }
 
 }  // namespace
@@ -87,13 +76,14 @@ std::vector<SuiteScene> scene_suite(SuiteSize size) {
   std::vector<SuiteScene> scenes;
   std::uint64_t seed = 9000;  // chapter 10's scenes, distinct from every test's seeds
   for (const int grid_bits : {0, 8}) {
-    for (const KindSpec& kind : spec.kinds) {
+    for (const KindSpec& kind : kinds) {
+      const KindSize& at = kind.sizes[index_of(size)];
       const SceneRecipe recipe{.kind = kind.kind,
                                .width = spec.side,
                                .height = spec.side,
-                               .triangles = kind.triangles,
-                               .min_extent = kind.min_extent,
-                               .max_extent = kind.max_extent,
+                               .triangles = at.triangles,
+                               .min_extent = at.min_extent,
+                               .max_extent = at.max_extent,
                                .grid_bits = grid_bits,
                                .seed = ++seed};
       scenes.push_back({kind.name, grid_label(grid_bits), recipe, is_mesh(recipe)});

@@ -22,9 +22,7 @@ void save_diagrams(tri::FigureWriter& figures, std::span<const tri::conformance:
   for (const auto& card : cards) {
     for (const auto& r : card.results) {
       if (r.passed || !r.smallest_failure) continue;
-      std::string name = tri::ch11::page_diagram_name(card, r);
-      name.resize(name.size() - 4);  // FigureWriter adds ".svg"
-      figures.save_svg(name,
+      figures.save_svg(tri::ch11::page_diagram_stem(card, r),
                        tri::conformance::failure_diagram_svg(
                            tri::ch11::page_case(*r.smallest_failure, 16),
                            card.rasterizer + ", " + r.test + ": " + r.smallest_failure->label));

@@ -28,9 +28,14 @@ std::vector<conformance::Scorecard> book_scorecards(std::span<const Drawable> dr
   return cards;
 }
 
+std::string page_diagram_stem(const conformance::Scorecard& card,
+                              const conformance::TestResult& result) {
+  return "scorecard_" + card.rasterizer + "_" + result.test;
+}
+
 std::string page_diagram_name(const conformance::Scorecard& card,
                               const conformance::TestResult& result) {
-  return "scorecard_" + card.rasterizer + "_" + result.test + ".svg";
+  return page_diagram_stem(card, result) + ".svg";
 }
 
 conformance::WrongCase page_case(const conformance::WrongCase& wrong, int side) {

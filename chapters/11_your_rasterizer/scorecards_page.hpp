@@ -18,6 +18,11 @@ namespace tri::ch11 {
 /// The scorecard of every drawable that draws colours (rule area left out), in registry order.
 std::vector<conformance::Scorecard> book_scorecards(std::span<const Drawable> drawables);
 
+/// The stem of one algorithm's failure diagram on the page: "scorecard_NAME_TEST" (what a
+/// FigureWriter, which adds ".svg", is given).
+std::string page_diagram_stem(const conformance::Scorecard& card,
+                              const conformance::TestResult& result);
+
 /// The file name of one algorithm's failure diagram on the page: "scorecard_NAME_TEST.svg".
 std::string page_diagram_name(const conformance::Scorecard& card,
                               const conformance::TestResult& result);

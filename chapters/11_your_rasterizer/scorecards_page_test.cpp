@@ -56,5 +56,9 @@ TEST_CASE(
     if (r.passed) continue;
     CAPTURE(r.test);
     CHECK(page.find("](" + tri::ch11::page_diagram_name(scanline, r) + ")\n") != std::string::npos);
+    // The figure program saves the diagram under the stem, the page links the file.
+    CHECK(tri::ch11::page_diagram_stem(scanline, r) == "scorecard_scanline_two_loops_" + r.test);
+    CHECK(tri::ch11::page_diagram_name(scanline, r) ==
+          tri::ch11::page_diagram_stem(scanline, r) + ".svg");
   }
 }

@@ -6,10 +6,15 @@
 
 #include "chapters/07_exact_coverage/coverage_oracle.hpp"
 #include "common/canvas.hpp"
+#include "common/enum_names.hpp"
 #include "common/triangle_algorithm.hpp"
 
 namespace tri::conformance {
 namespace {
+
+constexpr auto tie_rule_names = all_names<TieRule::any>({{TieRule::top_left, "top-left"},
+                                                         {TieRule::bottom_left, "bottom-left"},
+                                                         {TieRule::any, "any"}});
 
 // Which axes a scene is mirrored in before the oracle draws it: mirroring maps the top-left rule
 // onto the bottom-left (y), top-right (x) and bottom-right (both) rules.
@@ -53,22 +58,11 @@ std::vector<std::uint32_t> oracle_counts(const Scene& scene, Mirror mirror) {
 }  // namespace
 
 std::string_view tie_rule_name(TieRule rule) noexcept {
-  switch (rule) {
-    case TieRule::top_left:
-      return "top-left";
-    case TieRule::bottom_left:
-      return "bottom-left";
-    case TieRule::any:
-      return "any";
-  }
-  return "?";
+  return name_in(tie_rule_names, rule, "?");
 }
 
 std::optional<TieRule> parse_tie_rule(std::string_view name) noexcept {
-  for (const TieRule rule : {TieRule::top_left, TieRule::bottom_left, TieRule::any}) {
-    if (tie_rule_name(rule) == name) return rule;
-  }
-  return std::nullopt;
+  return value_named(tie_rule_names, name);
 }
 
 TieRule declared_tie_rule(CoverageRule rule) noexcept {

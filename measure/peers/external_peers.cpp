@@ -8,47 +8,37 @@
 
 namespace tri {
 
-namespace {
-
-// Every peer this build has, one block per library; the anti-aliasing peers in the report's
-// order: AGG, cairo, pixman, FreeType.
-struct BuiltPeers {
-  std::vector<ExternalPeer> aliased;
-  std::vector<CoveragePeer> coverage;
-};
-
-BuiltPeers built_peers() {
-  BuiltPeers peers;
+// Each list builds only its own peers, one block per library found.
+std::vector<ExternalPeer> external_peers() {
+  std::vector<ExternalPeer> peers;
 #if TUTORIAL_WITH_OSMESA
-  peers.aliased = llvmpipe_peers();
-#endif
-#if TUTORIAL_WITH_AGG
-  peers.coverage.push_back(agg_coverage_peer());
+  peers = llvmpipe_peers();
 #endif
 #if TUTORIAL_WITH_PIXMAN
-  peers.aliased.push_back(pixman_peer());
+  peers.push_back(pixman_peer());
 #endif
 #if TUTORIAL_WITH_CAIRO
-  peers.aliased.push_back(cairo_peer());
-  peers.coverage.push_back(cairo_coverage_peer());
-#endif
-#if TUTORIAL_WITH_PIXMAN
-  peers.coverage.push_back(pixman_coverage_peer());
-#endif
-#if TUTORIAL_WITH_FREETYPE
-  peers.coverage.push_back(freetype_coverage_peer());
+  peers.push_back(cairo_peer());
 #endif
   return peers;
 }
 
-}  // namespace
-
-std::vector<ExternalPeer> external_peers() {
-  return built_peers().aliased;
-}
-
+// The report's order: AGG, cairo, pixman, FreeType.
 std::vector<CoveragePeer> coverage_peers() {
-  return built_peers().coverage;
+  std::vector<CoveragePeer> peers;
+#if TUTORIAL_WITH_AGG
+  peers.push_back(agg_coverage_peer());
+#endif
+#if TUTORIAL_WITH_CAIRO
+  peers.push_back(cairo_coverage_peer());
+#endif
+#if TUTORIAL_WITH_PIXMAN
+  peers.push_back(pixman_coverage_peer());
+#endif
+#if TUTORIAL_WITH_FREETYPE
+  peers.push_back(freetype_coverage_peer());
+#endif
+  return peers;
 }
 
 std::string external_peer_status(std::span<const ExternalPeer> measured) {

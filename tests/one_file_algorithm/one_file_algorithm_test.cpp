@@ -9,12 +9,13 @@
 #include <string>
 #include <vector>
 
-#include "measure/peers/external_peers.hpp"
 #include "chapters/10_speed_vs_error/measure.hpp"
 #include "chapters/10_speed_vs_error/report.hpp"
-#include "measure/machine.hpp"
-#include "measure/registry.hpp"
 #include "measure/hard_cases.hpp"
+#include "measure/machine.hpp"
+#include "measure/peers/external_peers.hpp"
+#include "measure/registry.hpp"
+#include "tests/support/program_run.hpp"
 #include "tests/support/scratch_folder.hpp"
 #include "tools/raster_app.hpp"
 
@@ -37,17 +38,14 @@ const tri::TriangleAlgorithm& added() {
   return tri::one_file::triangle_algorithms().front();
 }
 
-struct Run {
-  int status = 0;
-  std::string out, err;
-};
+using Run = tri::testing::ProgramRun;
 
-Run raster(std::span<const tri::Drawable> drawables, std::vector<const char*> args) {
-  args.insert(args.begin(), "raster");
-  std::ostringstream out, err;
-  const int status =
-      tri::run_raster(drawables, static_cast<int>(args.size()), args.data(), out, err);
-  return {status, out.str(), err.str()};
+Run raster(std::span<const tri::Drawable> drawables, const std::vector<std::string>& args) {
+  return tri::testing::run_program(
+      "raster", args,
+      [drawables](int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
+        return tri::run_raster(drawables, argc, argv, out, err);
+      });
 }
 
 std::vector<std::string> lines_of(const std::string& text) {

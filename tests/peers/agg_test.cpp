@@ -11,16 +11,10 @@ using Kind = tri::SceneRecipe::Kind;
 
 TEST_CASE("AGG's coverage is the exact area to within 3/255, on every pixel of 300 triangles",
           "[peers][agg]") {
-  for (const int grid_bits : {0, 8}) {
-    INFO("grid 1/2^" << grid_bits);
-    const auto r = on_random_triangles(tri::agg_coverage_peer(), grid_bits, 61);
-    // AGG sums areas exactly in 1/256-pixel units, then cuts the area to 8 bits (a shift, so
-    // rounding down), reads 0..255 as 0..1 and blends the result into the image: together
-    // within 3/255, more than one 8-bit step (measured: up to about 2.6/255).
-    CHECK(r.error.max <= 3.0 / 255);
-    CHECK(r.error.max > 1.0 / 255);
-    CHECK(r.error.mean > 0);
-  }
+  // AGG sums areas exactly in 1/256-pixel units, then cuts the area to 8 bits (a shift, so
+  // rounding down), reads 0..255 as 0..1 and blends the result into the image: together
+  // within 3/255, more than one 8-bit step (measured: up to about 2.6/255).
+  check_eight_bit_area(tri::agg_coverage_peer(), {0, 8}, 61, 3.0 / 255);
 }
 
 TEST_CASE("AGG composites triangles over each other: seams on a mesh", "[peers][agg]") {

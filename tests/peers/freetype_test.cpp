@@ -9,13 +9,8 @@ using Kind = tri::SceneRecipe::Kind;
 
 TEST_CASE("FreeType's coverage is the exact area to within 2/255 on its own 1/64 grid",
           "[peers][freetype]") {
-  for (const int grid_bits : {0, 6}) {
-    INFO("grid 1/2^" << grid_bits);
-    const auto r = on_random_triangles(tri::freetype_coverage_peer(), grid_bits, 91);
-    // The area of the outline, cut to 8 bits (measured: up to about 1.9/255).
-    CHECK(r.error.max <= 2.0 / 255);
-    CHECK(r.error.max > 1.0 / 255);
-  }
+  // The area of the outline, cut to 8 bits (measured: up to about 1.9/255).
+  check_eight_bit_area(tri::freetype_coverage_peer(), {0, 6}, 91, 2.0 / 255);
 }
 
 TEST_CASE("FreeType rounds 1/256-grid vertices to its 26.6 fixed point: more than 2/255 off",

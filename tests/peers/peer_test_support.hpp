@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <initializer_list>
 #include <limits>
 #include <span>
 #include <string>
@@ -132,6 +133,19 @@ inline CoveragePeerResult on_random_triangles(const CoveragePeer& peer, int grid
   CHECK(r.error.pixels > 1000);
   CHECK(r.touched_pixels > 0);
   return r;
+}
+
+/// An area peer that keeps its coverage in 8 bits, on 300 random triangles of each grid: within
+/// `bound` of the exact area on every pixel, yet more than one 8-bit step (1/255) off somewhere.
+inline void check_eight_bit_area(const CoveragePeer& peer, std::initializer_list<int> grids,
+                                 std::uint64_t seed, double bound) {
+  for (const int grid_bits : grids) {
+    INFO("grid 1/2^" << grid_bits);
+    const auto r = on_random_triangles(peer, grid_bits, seed);
+    CHECK(r.error.max <= bound);
+    CHECK(r.error.max > 1.0 / 255);
+    CHECK(r.error.mean > 0);
+  }
 }
 
 }  // namespace tri::peers_test

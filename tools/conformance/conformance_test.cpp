@@ -9,11 +9,12 @@
 #include <vector>
 
 #include "chapters/07_exact_coverage/coverage_oracle.hpp"
-#include "measure/registry.hpp"
-#include "tests/support/scratch_folder.hpp"
 #include "chapters/11_your_rasterizer/conformance_app.hpp"
 #include "chapters/11_your_rasterizer/grading.hpp"
 #include "chapters/11_your_rasterizer/named_tests.hpp"
+#include "measure/registry.hpp"
+#include "tests/support/program_run.hpp"
+#include "tests/support/scratch_folder.hpp"
 
 namespace fs = std::filesystem;
 using namespace tri;
@@ -21,19 +22,14 @@ using namespace tri::conformance;
 
 namespace {
 
-struct Run {
-  int status;
-  std::string out;
-  std::string err;
-};
+using Run = testing::ProgramRun;
 
-Run run_program(std::vector<std::string> args) {
-  args.insert(args.begin(), "conformance");
-  std::vector<const char*> argv;
-  for (const auto& a : args) argv.push_back(a.c_str());
-  std::ostringstream out, err;
-  const int status = run_conformance(static_cast<int>(argv.size()), argv.data(), out, err);
-  return {status, out.str(), err.str()};
+Run run_program(const std::vector<std::string>& args) {
+  return testing::run_program(
+      "conformance", args,
+      [](int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
+        return run_conformance(argc, argv, out, err);
+      });
 }
 
 std::set<std::string> failed_tests(const GradedRasterizer& rasterizer, TieRule rule) {

@@ -3,51 +3,31 @@
 /// What the listings tool's tests share: a temporary repository and a look into a report.
 
 #include <algorithm>
-#include <chrono>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
-#include <random>
 #include <string>
 
+#include "tests/support/scratch_folder.hpp"
 #include "tools/listings/listings.hpp"
 
 namespace tri::listings::testing {
 
 namespace fs = std::filesystem;
 
-// A fresh folder under the system's temporary folder, removed with everything in it at the end.
+// A fresh repository in a scratch folder, removed with everything in it at the end.
 class TempRepo {
  public:
-  TempRepo() {
-    // The clock and a random number: CTest runs the tests in parallel processes.
-    const auto stamp = std::chrono::steady_clock::now().time_since_epoch().count();
-    root_ = fs::temp_directory_path() / ("listings_test_" + std::to_string(stamp) + "_" +
-                                         std::to_string(std::random_device{}()));
-    fs::create_directories(root_);
-  }
-  TempRepo(const TempRepo&) = delete;
-  TempRepo& operator=(const TempRepo&) = delete;
-  ~TempRepo() {
-    std::error_code ignored;
-    fs::remove_all(root_, ignored);
-  }
-
-  const fs::path& root() const { return root_; }
+  const fs::path& root() const { return folder_.path(); }
 
   void write(const std::string& name, const std::string& text) const {
-    const auto path = root_ / name;
+    const auto path = root() / name;
     fs::create_directories(path.parent_path());
-    std::ofstream(path, std::ios::binary) << text;
+    tri::testing::write_text(path, text);
   }
 
-  std::string read(const std::string& name) const {
-    std::ifstream in(root_ / name, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-  }
+  std::string read(const std::string& name) const { return tri::testing::read_text(root() / name); }
 
  private:
-  fs::path root_;
+  tri::testing::ScratchFolder folder_{"listings_test"};
 };
 
 // True when one of the report's problems, formatted, contains `part`.
