@@ -30,6 +30,8 @@
 
 using tri::ch10::BenchReport;
 using tri::ch10::Measurement;
+using tri::testing::fields_of;
+using tri::testing::lines_of;
 using tri::testing::occurrences;
 
 namespace {
@@ -109,21 +111,6 @@ std::vector<std::string> measured_names() {
   std::vector<std::string> names = tiny_algorithms;
   for (const tri::ExternalPeer& peer : tiny_run().peers) names.emplace_back(peer.name);
   return names;
-}
-
-std::vector<std::string> lines_of(const std::string& text) {
-  std::vector<std::string> lines;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) lines.push_back(line);
-  return lines;
-}
-
-std::vector<std::string> fields_of(const std::string& line) {
-  std::vector<std::string> fields;
-  std::istringstream in(line);
-  for (std::string field; std::getline(in, field, ',');) fields.push_back(field);
-  if (!line.empty() && line.back() == ',') fields.emplace_back();
-  return fields;
 }
 
 // Checks that every element is closed in order: "<a>" ... "</a>", or "<a/>". Returns the first

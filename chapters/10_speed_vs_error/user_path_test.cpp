@@ -10,24 +10,13 @@
 #include "chapters/10_speed_vs_error/user_path.hpp"
 #include "measure/number_format.hpp"
 #include "measure/registry.hpp"
+#include "tests/support/text.hpp"
 
 namespace {
 
 using tri::ch10::UserPathComparison;
-
-std::vector<std::string> csv_lines(const std::string& text) {
-  std::vector<std::string> lines;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) lines.push_back(line);
-  return lines;
-}
-
-std::vector<std::string> csv_fields(const std::string& line) {
-  std::vector<std::string> fields;
-  std::istringstream in(line);
-  for (std::string field; std::getline(in, field, ',');) fields.push_back(field);
-  return fields;
-}
+using tri::testing::fields_of;
+using tri::testing::lines_of;
 
 // A tiny run of the algorithm the comparison follows, and the comparison through raster_program.
 struct TinyUserPath {
@@ -115,10 +104,10 @@ TEST_CASE("The user's path runs raster --bench on the run's first scene beside t
              Catch::Contains("report's own " + tri::format_number(c.report_seconds * 1e3, 3)));
   CHECK_THAT(markdown, Catch::Contains("report = " + tri::format_number(c.ratio(), 3) + "."));
 
-  const auto lines = csv_lines(tri::ch10::user_path_csv(run.comparison));
+  const auto lines = lines_of(tri::ch10::user_path_csv(run.comparison));
   REQUIRE(lines.size() == 2);
-  const auto header = csv_fields(lines[0]);
-  const auto fields = csv_fields(lines[1]);
+  const auto header = fields_of(lines[0]);
+  const auto fields = fields_of(lines[1]);
   REQUIRE(fields.size() == header.size());
   CHECK(header[5] == "report_median_s");
   CHECK(header[6] == "raster_median_s");
@@ -144,7 +133,7 @@ TEST_CASE("Without the raster program the report says so instead of a time",
   CHECK_THAT(tri::ch10::user_path_markdown(run.comparison),
              Catch::Contains("`raster` was not measured on the run's " + c.scene + " scene") &&
                  Catch::Contains(c.problem) && Catch::Contains("--raster FILE"));
-  const auto lines = csv_lines(tri::ch10::user_path_csv(run.comparison));
+  const auto lines = lines_of(tri::ch10::user_path_csv(run.comparison));
   REQUIRE(lines.size() == 2);
   CHECK_THAT(lines[1], Catch::EndsWith(",,,,\"" + c.problem + "\""));
   CHECK_THAT(run.progress.str(), Catch::Contains("not measured: " + c.problem));
