@@ -7,6 +7,7 @@
 #endif
 
 namespace tri {
+#if defined(__linux__)
 namespace {
 
 std::size_t whole_huge_pages(std::size_t bytes) noexcept {
@@ -14,6 +15,7 @@ std::size_t whole_huge_pages(std::size_t bytes) noexcept {
 }
 
 }  // namespace
+#endif
 
 void* allocate_large_buffer(std::size_t bytes) {
 #if defined(__linux__)
@@ -36,7 +38,7 @@ void* allocate_large_buffer(std::size_t bytes) {
   return ::operator new(bytes);
 }
 
-void release_large_buffer(void* buffer, std::size_t bytes) noexcept {
+void release_large_buffer(void* buffer, [[maybe_unused]] std::size_t bytes) noexcept {
   if (buffer == nullptr) return;
 #if defined(__linux__)
   if (bytes >= huge_page_bytes) {
