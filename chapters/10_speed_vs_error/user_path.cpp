@@ -126,7 +126,9 @@ std::optional<UserPathComparison> measure_user_path(const BenchReport& report,
   try {
     const TemporaryFolder folder("tri_user_path");
     const auto scene_file = folder.path() / file_name;
-    std::ofstream(scene_file, std::ios::binary) << scene_text(generate_scene(suite->recipe));
+    std::ofstream out(scene_file, std::ios::binary);
+    if (!(out << scene_text(generate_scene(suite->recipe))).flush())
+      throw std::runtime_error("cannot write the scene file " + scene_file.string());
     const ProgramRun run = run_program({raster_program.string(), "--algo", comparison.algorithm,
                                         "--scene", scene_file.string(), "--bench", frames});
     if (!run.succeeded()) {
