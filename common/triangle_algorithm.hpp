@@ -15,6 +15,7 @@
 #include "common/canvas.hpp"
 #include "common/color.hpp"
 #include "common/drawable.hpp"
+#include "common/large_buffer.hpp"
 #include "common/scene.hpp"
 
 namespace tri {
@@ -113,7 +114,9 @@ class PreparedBatch {
   std::size_t refused() const noexcept { return refused_; }
 
  private:
-  std::vector<SceneTriangle> accepted_;
+  // Filled once, drawn every frame: huge pages make its page faults few
+  // (docs/performance_notes.md).
+  std::vector<SceneTriangle, LargeBufferAllocator<SceneTriangle>> accepted_;
   std::size_t refused_ = 0;
 };
 

@@ -13,6 +13,7 @@
 #include "chapters/10_speed_vs_error/scaling.hpp"
 #include "chapters/10_speed_vs_error/snapshot.hpp"
 #include "chapters/10_speed_vs_error/suites.hpp"
+#include "chapters/10_speed_vs_error/user_path.hpp"
 #include "common/cli.hpp"
 #include "common/output_files.hpp"
 #include "common/printable_text.hpp"
@@ -94,10 +95,12 @@ int main(int argc, char** argv) {
       "algorithm, times them (warm-up, median of repeated samples, beside the write ceiling)\n"
       "and measures their error against the exact oracle; then chapter 09's coverage algorithms\n"
       "against the exact area; then how the time of a frame grows with the triangles and the\n"
-      "canvas; then Blend2D's benchmark triangles (N x N boxes, N = 8 to 256, 512x600). Writes\n"
-      "10_report.csv, 10_coverage.csv, 10_scaling.csv and 10_blend2d_shapes.csv (every\n"
+      "canvas; then Blend2D's benchmark triangles (N x N boxes, N = 8 to 256, 512x600); and\n"
+      "times one algorithm with the raster program as a user would. Writes 10_report.csv,\n"
+      "10_coverage.csv, 10_scaling.csv, 10_blend2d_shapes.csv and 10_user_path.csv (every\n"
       "measurement), 10_report.md (the machine, one row per algorithm, the sweeps' and shapes'\n"
-      "tables), 10_blend2d_shapes.json (bl_bench's layout), and the plots\n"
+      "tables, raster's time beside the report's), 10_blend2d_shapes.json (bl_bench's layout),\n"
+      "and the plots\n"
       "10_speed_vs_error.svg, 10_coverage_speed_vs_error.svg, 10_scaling_triangles.svg and\n"
       "10_scaling_canvas.svg. Quick by default (about a minute on two cores); --full for the\n"
       "complete sweep.",
@@ -112,7 +115,9 @@ int main(int argc, char** argv) {
         "also write the measurement snapshot the book's measured numbers come from "
         "(docs/measurements/)"},
        {"commit", "TEXT", "the commit measured, for the snapshot's header (default: unknown)"},
-       {"note", "TEXT", "a note for the snapshot's header, e.g. that the machine was shared"}});
+       {"note", "TEXT", "a note for the snapshot's header, e.g. that the machine was shared"},
+       {"raster", "FILE",
+        "the raster program timed beside the report (default: the one this build made)"}});
   return tri::run_command_line(
       command_line, argc, argv, std::cout, std::cerr, [](const tri::CliArguments& args) {
         const auto size =
@@ -137,6 +142,13 @@ int main(int argc, char** argv) {
         const tri::ch10::BenchReport report = tri::ch10::run_benchmark(
             selection.algorithms, selection.peers, settings,
             tri::describe_machine(tri::external_peer_status(selection.peers)), std::cout);
+        // One algorithm timed again through `raster --bench`, the way a user times it.
+        std::optional<tri::ch10::UserPathComparison> user_path;
+        if (const auto* algorithm = tri::ch10::user_path_algorithm(selection.algorithms)) {
+          user_path = tri::ch10::measure_user_path(
+              report, *algorithm, settings.scenes, args.value_or("raster", TUTORIAL_RASTER_PROGRAM),
+              tri::ch10::user_path_budget_seconds(size), std::cout);
+        }
         const tri::ch10::CoverageReport coverage{
             tri::ch10::run_coverage_benchmark(selection.area_algorithms, selection.coverage_peers,
                                               settings, std::cout),
@@ -156,7 +168,7 @@ int main(int argc, char** argv) {
               selection.algorithms, selection.peers, selection.area_algorithms,
               selection.coverage_peers, tri::ch10::blend2d_shapes_settings(size), std::cout);
         }
-        tri::ch10::save_report(folder, report, coverage, scaling, shapes, std::cout);
+        tri::ch10::save_report(folder, report, coverage, scaling, shapes, user_path, std::cout);
         if (snapshot) {
           const tri::ch10::SnapshotHeader header{args.value_or("commit", "unknown"),
                                                  tri::ch10::utc_date(), tri::peer_versions(),

@@ -11,8 +11,8 @@
 namespace tri::ch10 {
 
 ReportFiles render_report(const BenchReport& report, const CoverageReport& coverage,
-                          std::span<const ScalingPoint> scaling,
-                          std::span<const ShapeRate> shapes) {
+                          std::span<const ScalingPoint> scaling, std::span<const ShapeRate> shapes,
+                          const std::optional<UserPathComparison>& user_path) {
   const std::vector<AlgorithmSummary> summaries = summarize(report.rows);
   const std::vector<CoverageSummary> coverage_summaries =
       summarize_coverage(coverage.rows, report.rows);
@@ -23,7 +23,7 @@ ReportFiles render_report(const BenchReport& report, const CoverageReport& cover
                                std::to_string(report.width) + "×" + std::to_string(report.height) +
                                " canvas, " + machine_line;
   return {to_csv(report.rows),
-          to_markdown(report, summaries) +
+          to_markdown(report, summaries) + user_path_markdown(user_path) +
               coverage_markdown(coverage_summaries, coverage.rows, coverage.peer_status) +
               scaling_markdown(scaling) + blend2d_shapes_markdown(shapes, report.machine),
           to_svg(report, summaries),
@@ -33,7 +33,8 @@ ReportFiles render_report(const BenchReport& report, const CoverageReport& cover
           scaling_svg(scaling, "triangles", machine_line),
           scaling_svg(scaling, "canvas", machine_line),
           blend2d_shapes_csv(shapes),
-          bl_bench_json(shapes, report.machine)};
+          bl_bench_json(shapes, report.machine),
+          user_path_csv(user_path)};
 }
 
 std::vector<std::filesystem::path> report_paths(const std::filesystem::path& folder) {
@@ -46,13 +47,15 @@ std::vector<std::filesystem::path> report_paths(const std::filesystem::path& fol
           folder / scaling_triangles_svg_file_name,
           folder / scaling_canvas_svg_file_name,
           folder / blend2d_shapes_csv_file_name,
-          folder / blend2d_shapes_json_file_name};
+          folder / blend2d_shapes_json_file_name,
+          folder / user_path_csv_file_name};
 }
 
 void save_report(const std::filesystem::path& folder, const BenchReport& report,
                  const CoverageReport& coverage, std::span<const ScalingPoint> scaling,
-                 std::span<const ShapeRate> shapes, std::ostream& log) {
-  const ReportFiles files = render_report(report, coverage, scaling, shapes);
+                 std::span<const ShapeRate> shapes,
+                 const std::optional<UserPathComparison>& user_path, std::ostream& log) {
+  const ReportFiles files = render_report(report, coverage, scaling, shapes, user_path);
   const auto paths = report_paths(folder);
   const std::string* contents[] = {&files.csv,
                                    &files.markdown,
@@ -63,7 +66,8 @@ void save_report(const std::filesystem::path& folder, const BenchReport& report,
                                    &files.scaling_triangles_svg,
                                    &files.scaling_canvas_svg,
                                    &files.blend2d_shapes_csv,
-                                   &files.blend2d_shapes_json};
+                                   &files.blend2d_shapes_json,
+                                   &files.user_path_csv};
   OutputTransaction set;
   for (std::size_t i = 0; i < paths.size(); ++i) set.stage(paths[i], bytes_of_text(*contents[i]));
   set.commit();

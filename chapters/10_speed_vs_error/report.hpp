@@ -1,9 +1,10 @@
 /// @file
-/// The ten files of a run, rendered from one BenchReport (with the coverage rows, the scaling
-/// sweeps and Blend2D's benchmark shapes) and saved side by side.
+/// The eleven files of a run, rendered from one BenchReport (with the coverage rows, the scaling
+/// sweeps, Blend2D's benchmark shapes and the user's path) and saved side by side.
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <ostream>
 #include <span>
 #include <string>
@@ -13,6 +14,7 @@
 #include "chapters/10_speed_vs_error/coverage_measure.hpp"
 #include "chapters/10_speed_vs_error/measure.hpp"
 #include "chapters/10_speed_vs_error/scaling.hpp"
+#include "chapters/10_speed_vs_error/user_path.hpp"
 
 namespace tri::ch10 {
 
@@ -32,7 +34,7 @@ struct CoverageReport {
   std::string peer_status;  ///< which anti-aliasing peers were measured, or why not
 };
 
-/// The contents of the ten files.
+/// The contents of the eleven files.
 struct ReportFiles {
   std::string csv;
   std::string markdown;  ///< every part: triangle and coverage algorithms, cost, Blend2D's shapes
@@ -44,20 +46,23 @@ struct ReportFiles {
   std::string scaling_canvas_svg;
   std::string blend2d_shapes_csv;
   std::string blend2d_shapes_json;  ///< bl_bench's layout
+  std::string user_path_csv;        ///< `raster --bench` beside the report's time
 };
 
 /// Summarizes the report and renders the CSVs, the Markdown, the four plots and the JSON.
 ReportFiles render_report(const BenchReport& report, const CoverageReport& coverage = {},
                           std::span<const ScalingPoint> scaling = {},
-                          std::span<const ShapeRate> shapes = {});
+                          std::span<const ShapeRate> shapes = {},
+                          const std::optional<UserPathComparison>& user_path = std::nullopt);
 
-/// The paths of the ten files in folder, to check before measuring.
+/// The paths of the eleven files in folder, to check before measuring.
 std::vector<std::filesystem::path> report_paths(const std::filesystem::path& folder);
 
-/// Writes the ten files into folder as one set (all replaced, or none when one fails) and logs
+/// Writes the eleven files into folder as one set (all replaced, or none when one fails) and logs
 /// each path.
 void save_report(const std::filesystem::path& folder, const BenchReport& report,
                  const CoverageReport& coverage, std::span<const ScalingPoint> scaling,
-                 std::span<const ShapeRate> shapes, std::ostream& log);
+                 std::span<const ShapeRate> shapes,
+                 const std::optional<UserPathComparison>& user_path, std::ostream& log);
 
 }  // namespace tri::ch10

@@ -30,6 +30,8 @@
 
 using tri::ch10::BenchReport;
 using tri::ch10::Measurement;
+using tri::testing::fields_of;
+using tri::testing::lines_of;
 using tri::testing::occurrences;
 
 namespace {
@@ -109,21 +111,6 @@ std::vector<std::string> measured_names() {
   std::vector<std::string> names = tiny_algorithms;
   for (const tri::ExternalPeer& peer : tiny_run().peers) names.emplace_back(peer.name);
   return names;
-}
-
-std::vector<std::string> lines_of(const std::string& text) {
-  std::vector<std::string> lines;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) lines.push_back(line);
-  return lines;
-}
-
-std::vector<std::string> fields_of(const std::string& line) {
-  std::vector<std::string> fields;
-  std::istringstream in(line);
-  for (std::string field; std::getline(in, field, ',');) fields.push_back(field);
-  if (!line.empty() && line.back() == ',') fields.emplace_back();
-  return fields;
 }
 
 // Checks that every element is closed in order: "<a>" ... "</a>", or "<a/>". Returns the first
@@ -431,12 +418,12 @@ TEST_CASE("Error rates are exact at zero, else three significant digits",
   CHECK(tri::format_error_rate(5.41e-06) == "5.41e-06");
 }
 
-TEST_CASE("save_report writes the ten files the run rendered", "[10_speed_vs_error][report]") {
+TEST_CASE("save_report writes the eleven files the run rendered", "[10_speed_vs_error][report]") {
   const auto folder = unique_temporary_folder("tri_ch09_report_test");
   std::filesystem::remove_all(folder);
   std::ostringstream log;
   tri::ch10::save_report(folder, tiny_run().report, tiny_run().coverage, tiny_run().scaling,
-                         tiny_run().shapes, log);
+                         tiny_run().shapes, std::nullopt, log);
   const auto read = [&](const char* name) {
     std::ifstream in(folder / name, std::ios::binary);
     return std::string(std::istreambuf_iterator<char>(in), {});
@@ -451,8 +438,9 @@ TEST_CASE("save_report writes the ten files the run rendered", "[10_speed_vs_err
   CHECK(read(tri::ch10::scaling_canvas_svg_file_name) == tiny_run().files.scaling_canvas_svg);
   CHECK(read(tri::ch10::blend2d_shapes_csv_file_name) == tiny_run().files.blend2d_shapes_csv);
   CHECK(read(tri::ch10::blend2d_shapes_json_file_name) == tiny_run().files.blend2d_shapes_json);
+  CHECK(read(tri::ch10::user_path_csv_file_name) == tiny_run().files.user_path_csv);
   CHECK_THAT(tiny_run().files.markdown, Catch::Contains("## How cost grows"));
-  CHECK(lines_of(log.str()).size() == 10);
+  CHECK(lines_of(log.str()).size() == 11);
   std::filesystem::remove_all(folder);
 }
 
@@ -463,9 +451,10 @@ TEST_CASE("save_report writes the set whole or not at all: a failing file keeps 
   std::filesystem::create_directories(folder / tri::ch10::svg_file_name);  // cannot be replaced
   std::ofstream(folder / tri::ch10::csv_file_name) << "earlier csv";
   std::ostringstream log;
-  CHECK_THROWS_WITH(tri::ch10::save_report(folder, tiny_run().report, tiny_run().coverage,
-                                           tiny_run().scaling, tiny_run().shapes, log),
-                    Catch::Contains("Is a directory"));
+  CHECK_THROWS_WITH(
+      tri::ch10::save_report(folder, tiny_run().report, tiny_run().coverage, tiny_run().scaling,
+                             tiny_run().shapes, std::nullopt, log),
+      Catch::Contains("Is a directory"));
   std::ifstream csv(folder / tri::ch10::csv_file_name);
   CHECK(std::string(std::istreambuf_iterator<char>(csv), {}) == "earlier csv");
   CHECK_FALSE(std::filesystem::exists(folder / tri::ch10::markdown_file_name));

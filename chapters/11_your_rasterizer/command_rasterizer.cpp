@@ -18,10 +18,10 @@
 #include <stdexcept>
 #include <thread>
 
-#include "chapters/11_your_rasterizer/scene_text.hpp"
 #include "common/cli.hpp"
 #include "common/image_io.hpp"
 #include "common/printable_text.hpp"
+#include "measure/scene_text.hpp"
 
 extern char** environ;
 

@@ -1,11 +1,11 @@
-#include "chapters/11_your_rasterizer/scene_text.hpp"
+#include "measure/scene_text.hpp"
 
 #include <array>
 #include <charconv>
 #include <cmath>
 #include <variant>
 
-namespace tri::conformance {
+namespace tri {
 namespace {
 
 std::string number(double value) {
@@ -35,4 +35,4 @@ std::string scene_text(const Scene& scene) {
   return text;
 }
 
-}  // namespace tri::conformance
+}  // namespace tri
