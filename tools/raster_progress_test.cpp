@@ -23,7 +23,7 @@
 #include "common/scene.hpp"
 #include "measure/registry.hpp"
 #include "measure/render_scene.hpp"
-#include "tests/support/program_run.hpp"
+#include "tests/support/in_process_run.hpp"
 #include "tools/raster_app.hpp"
 
 namespace fs = std::filesystem;
@@ -55,10 +55,10 @@ class ScratchFolder {
   fs::path path_;
 };
 
-using Outcome = tri::testing::ProgramRun;
+using Outcome = tri::testing::InProcessRun;
 
 Outcome raster(const std::vector<std::string>& words) {
-  return tri::testing::run_program(
+  return tri::testing::run_in_process(
       "raster", words, [](int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
         return tri::run_raster(argc, argv, out, err);
       });

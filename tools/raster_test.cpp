@@ -20,7 +20,7 @@
 #include "measure/drawable.hpp"
 #include "measure/registry.hpp"
 #include "measure/render_scene.hpp"
-#include "tests/support/program_run.hpp"
+#include "tests/support/in_process_run.hpp"
 #include "tests/support/scratch_folder.hpp"
 #include "tools/raster_app.hpp"
 
@@ -42,10 +42,10 @@ class TempFolder {
   tri::testing::ScratchFolder folder_{"raster_test"};
 };
 
-using Run = tri::testing::ProgramRun;
+using Run = tri::testing::InProcessRun;
 
 Run raster(const std::vector<std::string>& args) {
-  return tri::testing::run_program(
+  return tri::testing::run_in_process(
       "raster", args, [](int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
         return tri::run_raster(argc, argv, out, err);
       });

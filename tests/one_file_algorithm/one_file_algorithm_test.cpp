@@ -15,7 +15,7 @@
 #include "measure/machine.hpp"
 #include "measure/peers/external_peers.hpp"
 #include "measure/registry.hpp"
-#include "tests/support/program_run.hpp"
+#include "tests/support/in_process_run.hpp"
 #include "tests/support/scratch_folder.hpp"
 #include "tools/raster_app.hpp"
 
@@ -38,10 +38,10 @@ const tri::TriangleAlgorithm& added() {
   return tri::one_file::triangle_algorithms().front();
 }
 
-using Run = tri::testing::ProgramRun;
+using Run = tri::testing::InProcessRun;
 
 Run raster(std::span<const tri::Drawable> drawables, const std::vector<std::string>& args) {
-  return tri::testing::run_program(
+  return tri::testing::run_in_process(
       "raster", args,
       [drawables](int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
         return tri::run_raster(drawables, argc, argv, out, err);

@@ -13,7 +13,7 @@
 #include "chapters/11_your_rasterizer/grading.hpp"
 #include "chapters/11_your_rasterizer/named_tests.hpp"
 #include "measure/registry.hpp"
-#include "tests/support/program_run.hpp"
+#include "tests/support/in_process_run.hpp"
 #include "tests/support/scratch_folder.hpp"
 
 namespace fs = std::filesystem;
@@ -22,10 +22,10 @@ using namespace tri::conformance;
 
 namespace {
 
-using Run = testing::ProgramRun;
+using Run = testing::InProcessRun;
 
 Run run_program(const std::vector<std::string>& args) {
-  return testing::run_program(
+  return testing::run_in_process(
       "conformance", args,
       [](int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
         return run_conformance(argc, argv, out, err);

@@ -1,11 +1,11 @@
-#include "tests/support/program_run.hpp"
+#include "tests/support/in_process_run.hpp"
 
 #include <sstream>
 
 namespace tri::testing {
 
-ProgramRun run_program(std::string_view program, const std::vector<std::string>& args,
-                       const ProgramEntry& entry) {
+InProcessRun run_in_process(std::string_view program, const std::vector<std::string>& args,
+                            const ProgramEntry& entry) {
   const std::string name(program);
   std::vector<const char*> argv{name.c_str()};
   for (const auto& a : args) argv.push_back(a.c_str());

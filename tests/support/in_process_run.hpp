@@ -12,7 +12,7 @@
 namespace tri::testing {
 
 /// What one run printed and returned.
-struct ProgramRun {
+struct InProcessRun {
   int status = 0;
   std::string out;
   std::string err;
@@ -22,7 +22,7 @@ struct ProgramRun {
 using ProgramEntry = std::function<int(int, const char* const*, std::ostream&, std::ostream&)>;
 
 /// Runs `entry` as `program args...` would run from a shell (argv[0] is `program`).
-ProgramRun run_program(std::string_view program, const std::vector<std::string>& args,
-                       const ProgramEntry& entry);
+InProcessRun run_in_process(std::string_view program, const std::vector<std::string>& args,
+                            const ProgramEntry& entry);
 
 }  // namespace tri::testing
