@@ -211,27 +211,40 @@ void set_up_lanes(std::span<const SceneTriangle> triangles, int width, int heigh
 }
 // [/listing]
 
+// [listing draw_group]
+template <PixelWriter Writer>
+void draw_group(Canvas& canvas, std::span<const SceneTriangle> group, int row_end,
+                SetupLanes& lanes, InstructionSet set) {
+  const int width = canvas.width(), height = canvas.height();
+  set_up_lanes(group, width, height, lanes, set);
+  for (std::size_t i = 0; i < std::min<std::size_t>(group.size(), setup_lanes); ++i) {
+    if (lanes.result[i] == LaneResult::set_up) {
+      Writer writer(canvas, group[i].color, row_end);
+      fill_hybrid(lanes.setup(static_cast<int>(i)), writer);
+    } else if (lanes.result[i] == LaneResult::scalar) {
+      const auto setup = setup_triangle(group[i].vertices, width, height);
+      if (!setup) continue;
+      Writer writer(canvas, group[i].color, row_end);
+      fill_hybrid(*setup, writer);
+    }
+  }
+}
+// [/listing]
+
+template void draw_group<RowWriter>(Canvas&, std::span<const SceneTriangle>, int, SetupLanes&,
+                                    InstructionSet);
+template void draw_group<CountingWriter>(Canvas&, std::span<const SceneTriangle>, int, SetupLanes&,
+                                         InstructionSet);
+
 namespace {
 
 // [listing draw_groups]
 template <PixelWriter Writer>
 void draw_groups(Canvas& canvas, std::span<const SceneTriangle> triangles, InstructionSet set) {
-  const int width = canvas.width(), height = canvas.height();
   SetupLanes lanes;
   while (!triangles.empty()) {
     const std::size_t count = std::min<std::size_t>(triangles.size(), setup_lanes);
-    set_up_lanes(triangles, width, height, lanes, set);
-    for (std::size_t i = 0; i < count; ++i) {
-      if (lanes.result[i] == LaneResult::set_up) {
-        Writer writer(canvas, triangles[i].color);
-        fill_hybrid(lanes.setup(static_cast<int>(i)), writer);
-      } else if (lanes.result[i] == LaneResult::scalar) {
-        const auto setup = setup_triangle(triangles[i].vertices, width, height);
-        if (!setup) continue;
-        Writer writer(canvas, triangles[i].color);
-        fill_hybrid(*setup, writer);
-      }
-    }
+    draw_group<Writer>(canvas, triangles.first(count), canvas.width(), lanes, set);
     triangles = triangles.subspan(count);
   }
 }

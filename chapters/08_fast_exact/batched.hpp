@@ -9,6 +9,7 @@
 #include <span>
 
 #include "chapters/08_fast_exact/instruction_sets.hpp"
+#include "chapters/08_fast_exact/pixel_writers.hpp"
 #include "chapters/08_fast_exact/triangle_setup.hpp"
 #include "common/canvas.hpp"
 #include "common/color.hpp"
@@ -65,6 +66,17 @@ struct SetupLanes {
 /// generic vectors, any target's), or AVX2's four. Every copy gives the same numbers.
 void set_up_lanes(std::span<const SceneTriangle> triangles, int width, int height,
                   SetupLanes& lanes, InstructionSet set = widest_instruction_set()) noexcept;
+
+/// Step 10 · one group: set_up_lanes for the first min(setup_lanes, size) triangles of `group`,
+/// then fill_hybrid for each in order with a Writer whose rows end at `row_end` (the canvas
+/// width, or a tile's right border); `lanes` is the caller's scratch.
+template <PixelWriter Writer>
+void draw_group(Canvas& canvas, std::span<const SceneTriangle> group, int row_end,
+                SetupLanes& lanes, InstructionSet set = widest_instruction_set());
+extern template void draw_group<RowWriter>(Canvas&, std::span<const SceneTriangle>, int,
+                                           SetupLanes&, InstructionSet);
+extern template void draw_group<CountingWriter>(Canvas&, std::span<const SceneTriangle>, int,
+                                                SetupLanes&, InstructionSet);
 
 /// Step 10 · one triangle: set_up_lanes with one lane used, then fill_hybrid.
 void draw_triangle_batched(Canvas& canvas, const Triangle& triangle, Color color);

@@ -1,6 +1,7 @@
 #include "chapters/08_fast_exact/tiled.hpp"
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <memory>
 #include <system_error>
@@ -8,6 +9,7 @@
 #include <utility>
 
 #include "chapters/07_exact_coverage/fixed_point.hpp"
+#include "chapters/08_fast_exact/batched.hpp"
 #include "chapters/08_fast_exact/blocks.hpp"
 #include "chapters/08_fast_exact/hybrid.hpp"
 #include "chapters/08_fast_exact/pixel_writers.hpp"
@@ -160,25 +162,35 @@ template <class Writer>
 void TileBins::draw_tile_with(Canvas& canvas, int tile) const noexcept {
   const ch05::PixelBox box = grid_.tile(tile, width_, height_);
   const auto t = static_cast<std::size_t>(tile);
+  // The writers' row end keeps step 5's eight-pixel blends inside the tile.
+  const int row_end = box.max.x + 1;
+  // Triangles within this tile wait here to be set up eight at once (step 10's lanes) by the
+  // thread that draws the tile; a shared one first draws those before it, to keep the order.
+  std::array<SceneTriangle, setup_lanes> waiting;
+  std::size_t waiting_count = 0;
+  SetupLanes lanes;
+  const auto draw_waiting = [&] {
+    draw_group<Writer>(canvas, std::span(waiting).first(waiting_count), row_end, lanes);
+    waiting_count = 0;
+  };
   for (int c = 0; c < chunk_count_; ++c) {
     const Chunk& chunk = chunk_storage_[static_cast<std::size_t>(c)];
     for (std::uint32_t e = chunk.starts[t]; e < chunk.starts[t + 1]; ++e) {
       const std::uint32_t entry = chunk.entries[e];
       if (entry & shared_bit) {
+        if (waiting_count > 0) draw_waiting();
         // Set up while binning: clipped to the tile, which moves its origin by whole pixels.
         const Shared& shared = chunk.shared[entry & ~shared_bit];
         const auto part = clip_setup(shared.setup, box);
-        // The writer's row end keeps step 5's eight-pixel blends inside the tile.
-        Writer writer(canvas, triangles_[shared.triangle].color, box.max.x + 1);
+        Writer writer(canvas, triangles_[shared.triangle].color, row_end);
         if (part) fill_hybrid(*part, writer);
       } else {
-        // Within this tile: set up here, by the thread that draws it.
-        const auto setup = setup_triangle(triangles_[entry].vertices, width_, height_);
-        Writer writer(canvas, triangles_[entry].color, box.max.x + 1);
-        if (setup) fill_hybrid(*setup, writer);
+        waiting[waiting_count++] = triangles_[entry];
+        if (waiting_count == setup_lanes) draw_waiting();
       }
     }
   }
+  if (waiting_count > 0) draw_waiting();
 }
 // [/listing]
 
@@ -251,6 +263,10 @@ void TiledRenderer::help() noexcept {
 
 std::unique_ptr<BatchRenderer> make_tiled_renderer() {
   return std::make_unique<TiledRenderer>(hardware_threads());
+}
+
+std::unique_ptr<BatchRenderer> make_one_thread_tiled_renderer() {
+  return std::make_unique<TiledRenderer>(1);
 }
 
 }  // namespace tri::ch08
