@@ -21,6 +21,8 @@ namespace {
 // Chunks of the batch binned as one piece: enough for two or more threads to share the binning
 // of a few large triangles, few enough that a tile's lists are quick to walk.
 constexpr int max_chunks = 16;
+// The largest canvas drawn in bands without binning: 1 MiB of RGBA8, a core's level-2 cache.
+constexpr int cached_pixels = 512 * 512;
 // An entry of a tile list with this bit set names a shared setup, not a triangle.
 constexpr std::uint32_t shared_bit = std::uint32_t{1} << 31;
 
@@ -45,10 +47,19 @@ TileGrid tile_grid_for(int width, int height) noexcept {
 }
 // [/listing]
 
-void TileBins::start(std::span<const SceneTriangle> triangles, int width, int height) {
+void TileBins::start(std::span<const SceneTriangle> triangles, int width, int height, int bands) {
   triangles_ = triangles;
   width_ = width;
   height_ = height;
+  if (bands > 0) {
+    // One tile column as wide as the canvas, rows of tiles as tall as `bands` of them need.
+    int width_bits = 3, height_bits = 3;
+    while ((1 << width_bits) < width) ++width_bits;
+    while ((((height - 1) >> height_bits) + 1) > bands) ++height_bits;
+    grid_ = {width_bits, height_bits, 1, ((height - 1) >> height_bits) + 1};
+    chunk_count_ = 0;
+    return;
+  }
   grid_ = tile_grid_for(width, height);
   const std::size_t count = triangles.size();
   chunk_count_ = static_cast<int>(std::clamp<std::size_t>(count, 1, max_chunks));
@@ -143,17 +154,42 @@ void TileBins::bin_chunk(int chunk_index) noexcept {
 }
 // [/listing]
 
-std::vector<std::uint32_t> TileBins::triangles_of(int tile) const {
-  std::vector<std::uint32_t> triangles;
+template <class Within, class Over>
+void TileBins::for_each_triangle_of(int tile, Within&& within, Over&& over) const {
+  if (chunk_count_ == 0) {
+    // Not binned: every triangle of the batch, kept by its rows.
+    const ch05::PixelBox box = grid_.tile(tile, width_, height_);
+    for (std::uint32_t i = 0; i < triangles_.size(); ++i) {
+      const auto [first_row, last_row] = candidate_rows(triangles_[i].vertices, height_);
+      if (first_row > last_row || first_row > box.max.y || last_row < box.min.y) continue;
+      if (first_row >= box.min.y && last_row <= box.max.y) {
+        within(i);
+      } else if (const auto setup = setup_triangle(triangles_[i].vertices, width_, height_)) {
+        over(*setup, i);
+      }
+    }
+    return;
+  }
+  const auto t = static_cast<std::size_t>(tile);
   for (int c = 0; c < chunk_count_; ++c) {
     const Chunk& chunk = chunk_storage_[static_cast<std::size_t>(c)];
-    const auto t = static_cast<std::size_t>(tile);
     for (std::uint32_t e = chunk.starts[t]; e < chunk.starts[t + 1]; ++e) {
       const std::uint32_t entry = chunk.entries[e];
-      triangles.push_back((entry & shared_bit) ? chunk.shared[entry & ~shared_bit].triangle
-                                               : entry);
+      if (entry & shared_bit) {
+        const Shared& shared = chunk.shared[entry & ~shared_bit];
+        over(shared.setup, shared.triangle);
+      } else {
+        within(entry);
+      }
     }
   }
+}
+
+std::vector<std::uint32_t> TileBins::triangles_of(int tile) const {
+  std::vector<std::uint32_t> triangles;
+  for_each_triangle_of(
+      tile, [&](std::uint32_t i) { triangles.push_back(i); },
+      [&](const TriangleSetup&, std::uint32_t i) { triangles.push_back(i); });
   return triangles;
 }
 
@@ -161,35 +197,37 @@ std::vector<std::uint32_t> TileBins::triangles_of(int tile) const {
 template <class Writer>
 void TileBins::draw_tile_with(Canvas& canvas, int tile) const noexcept {
   const ch05::PixelBox box = grid_.tile(tile, width_, height_);
-  const auto t = static_cast<std::size_t>(tile);
   // The writers' row end keeps step 5's eight-pixel blends inside the tile.
   const int row_end = box.max.x + 1;
   // Triangles within this tile wait here to be set up eight at once (step 10's lanes) by the
-  // thread that draws the tile; a shared one first draws those before it, to keep the order.
-  std::array<SceneTriangle, setup_lanes> waiting;
+  // thread that draws the tile; one over several tiles first draws those before it, in order.
+  // Consecutive ones (most of a mesh's) are set up where they lie, others from a copy.
+  std::array<std::uint32_t, setup_lanes> waiting;
   std::size_t waiting_count = 0;
+  std::array<SceneTriangle, setup_lanes> copies;
   SetupLanes lanes;
   const auto draw_waiting = [&] {
-    draw_group<Writer>(canvas, std::span(waiting).first(waiting_count), row_end, lanes);
+    std::span<const SceneTriangle> group = triangles_.subspan(waiting[0], waiting_count);
+    if (waiting[waiting_count - 1] - waiting[0] != waiting_count - 1) {
+      for (std::size_t k = 0; k < waiting_count; ++k) copies[k] = triangles_[waiting[k]];
+      group = std::span(copies).first(waiting_count);
+    }
+    draw_group<Writer>(canvas, group, row_end, lanes);
     waiting_count = 0;
   };
-  for (int c = 0; c < chunk_count_; ++c) {
-    const Chunk& chunk = chunk_storage_[static_cast<std::size_t>(c)];
-    for (std::uint32_t e = chunk.starts[t]; e < chunk.starts[t + 1]; ++e) {
-      const std::uint32_t entry = chunk.entries[e];
-      if (entry & shared_bit) {
-        if (waiting_count > 0) draw_waiting();
-        // Set up while binning: clipped to the tile, which moves its origin by whole pixels.
-        const Shared& shared = chunk.shared[entry & ~shared_bit];
-        const auto part = clip_setup(shared.setup, box);
-        Writer writer(canvas, triangles_[shared.triangle].color, row_end);
-        if (part) fill_hybrid(*part, writer);
-      } else {
-        waiting[waiting_count++] = triangles_[entry];
+  for_each_triangle_of(
+      tile,
+      [&](std::uint32_t i) {
+        waiting[waiting_count++] = i;
         if (waiting_count == setup_lanes) draw_waiting();
-      }
-    }
-  }
+      },
+      [&](const TriangleSetup& setup, std::uint32_t i) {
+        if (waiting_count > 0) draw_waiting();
+        // Clipped to the tile, which moves its origin by whole pixels.
+        const auto part = clip_setup(setup, box);
+        Writer writer(canvas, triangles_[i].color, row_end);
+        if (part) fill_hybrid(*part, writer);
+      });
   if (waiting_count > 0) draw_waiting();
 }
 // [/listing]
@@ -207,6 +245,7 @@ TiledRenderer::TiledRenderer(int threads) {
   } catch (const std::system_error&) {
     // No more threads to be had: the ones running take all the chunks and tiles.
   }
+  threads_ = static_cast<int>(helpers_.size()) + 1;
 }
 
 TiledRenderer::~TiledRenderer() {
@@ -230,7 +269,9 @@ void TiledRenderer::work() noexcept {
 }
 
 void TiledRenderer::open(Canvas& canvas, std::span<const SceneTriangle> triangles) {
-  bins_.start(triangles, canvas.width(), canvas.height());
+  // A canvas within one core's level-2 cache gains nothing from binning: one band per thread.
+  const bool cached = canvas.width() * canvas.height() <= cached_pixels;
+  bins_.start(triangles, canvas.width(), canvas.height(), cached ? threads_ : 0);
   canvas_ = &canvas;
   next_chunk_ = 0;
   binned_ = 0;
