@@ -159,10 +159,15 @@ void TileBins::for_each_triangle_of(int tile, Within&& within, Over&& over) cons
   if (chunk_count_ == 0) {
     // Not binned: every triangle of the batch, kept by its rows.
     const ch05::PixelBox box = grid_.tile(tile, width_, height_);
+    // Snapping moves a vertex by at most 1/512 pixel, and a candidate row lies between the
+    // snapped lowest and highest y: half a pixel of margin decides in doubles, without snapping.
+    const double top = box.min.y - 0.5, bottom = box.max.y + 0.5;
     for (std::uint32_t i = 0; i < triangles_.size(); ++i) {
-      const auto [first_row, last_row] = candidate_rows(triangles_[i].vertices, height_);
-      if (first_row > last_row || first_row > box.max.y || last_row < box.min.y) continue;
-      if (first_row >= box.min.y && last_row <= box.max.y) {
+      const Triangle& t = triangles_[i].vertices;
+      const double low = std::min(t[0].y, std::min(t[1].y, t[2].y));
+      const double high = std::max(t[0].y, std::max(t[1].y, t[2].y));
+      if (high < top || low > bottom) continue;
+      if (low >= top && high <= bottom) {
         within(i);
       } else if (const auto setup = setup_triangle(triangles_[i].vertices, width_, height_)) {
         over(*setup, i);
