@@ -21,7 +21,8 @@ namespace {
 // Chunks of the batch binned as one piece: enough for two or more threads to share the binning
 // of a few large triangles, few enough that a tile's lists are quick to walk.
 constexpr int max_chunks = 16;
-// The largest canvas drawn in bands without binning: 1 MiB of RGBA8, a core's level-2 cache.
+// The largest canvas drawn in bands without binning: there, binning cost more than it saved
+// (the performance notes measure it).
 constexpr int cached_pixels = 512 * 512;
 // An entry of a tile list with this bit set names a shared setup, not a triangle.
 constexpr std::uint32_t shared_bit = std::uint32_t{1} << 31;
@@ -274,7 +275,7 @@ void TiledRenderer::work() noexcept {
 }
 
 void TiledRenderer::open(Canvas& canvas, std::span<const SceneTriangle> triangles) {
-  // A canvas within one core's level-2 cache gains nothing from binning: one band per thread.
+  // A small canvas gains nothing from binning: one band of rows per thread.
   const bool cached = canvas.width() * canvas.height() <= cached_pixels;
   bins_.start(triangles, canvas.width(), canvas.height(), cached ? threads_ : 0);
   canvas_ = &canvas;

@@ -37,9 +37,9 @@ struct TileGrid {
 };
 
 /// The tiles of a width x height canvas: 512 pixels wide and 64 rows tall (128 KiB of RGBA8,
-/// an eighth of this machine's 1 MiB level-2 cache per core), or 32 or 16 rows on a canvas that
-/// would otherwise have fewer than 16 tiles. Wide, because every tile a triangle crosses
-/// restarts its spans and splits each row's span (the README measures narrower tiles).
+/// a quarter of the 512 KiB level-2 cache each vCPU of this machine reports), or 32 or 16 rows on a
+/// canvas that would otherwise have fewer than 16 tiles. Wide, because every tile a triangle
+/// crosses restarts its spans and splits each row's span (the README measures narrower tiles).
 TileGrid tile_grid_for(int width, int height) noexcept;
 
 // [listing pixels_around]
@@ -150,8 +150,8 @@ class TiledRenderer final : public BatchRenderer {
   TiledRenderer(const TiledRenderer&) = delete;
   TiledRenderer& operator=(const TiledRenderer&) = delete;
 
-  /// Draws the batch as if one triangle after the other. On a canvas that fits a core's level-2
-  /// cache the tiles are one band of rows per thread, not binned (TileBins::start). One batch at a
+  /// Draws the batch as if one triangle after the other. On a canvas of at most 512 x 512 pixels
+  /// the tiles are one band of rows per thread, not binned (TileBins::start). One batch at a
   /// time: draw() is not to be called from two threads at once.
   void draw(Canvas& canvas, std::span<const SceneTriangle> triangles) override;
 
