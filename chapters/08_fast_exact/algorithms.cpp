@@ -88,10 +88,6 @@ std::span<const TriangleAlgorithm> triangle_algorithms() {
               "fast_hybrid per tile: the batch binned into tiles, which hardware_concurrency "
               "threads (started once, kept between batches) take one at a time",
               draw_triangle_hybrid, nullptr, true, make_tiled_renderer),
-      variant("fast_tiled",
-              "fast_tiled_threaded's tiles on the calling thread alone: each tile stays in the "
-              "cache while all its triangles are drawn",
-              draw_triangle_hybrid, nullptr, false, make_one_thread_tiled_renderer),
       with_rows(
           variant("fast_batched",
                   "fast_hybrid with the setup of eight triangles at once in vector lanes, then "

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <span>
 
@@ -81,10 +82,17 @@ extern template void draw_group<CountingWriter>(Canvas&, std::span<const SceneTr
 /// Step 10 · one triangle: set_up_lanes with one lane used, then fill_hybrid.
 void draw_triangle_batched(Canvas& canvas, const Triangle& triangle, Color color);
 
+/// Above these, draw_batch_batched draws through step 9's tiles on the calling thread: a canvas
+/// of more than 1024 x 1024 pixels (4 MiB of RGBA8, four times this machine's level-2 caches
+/// together) and a batch of at least 64 triangles.
+inline constexpr std::int64_t tiled_canvas_pixels = 1024 * 1024;
+inline constexpr std::size_t tiled_batch_triangles = 64;
+
 /// Step 10 · a batch: set_up_lanes for each group of setup_lanes triangles, then fill_hybrid
-/// for each of them in submission order, so the pixels are draw_batch_hybrid's.
+/// for each of them in submission order, so the pixels are draw_batch_hybrid's; on a large
+/// canvas (tiled_canvas_pixels, tiled_batch_triangles), the same through step 9's tiles.
 void draw_batch_batched(Canvas& canvas, std::span<const SceneTriangle> triangles);
-/// The same with the lanes' copy for `set` (the tests force each the host runs).
+/// The groups alone, with the lanes' copy for `set` (the tests force each the host runs).
 void draw_batch_batched_with(Canvas& canvas, std::span<const SceneTriangle> triangles,
                              InstructionSet set);
 

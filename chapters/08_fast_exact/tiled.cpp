@@ -312,8 +312,4 @@ std::unique_ptr<BatchRenderer> make_tiled_renderer() {
   return std::make_unique<TiledRenderer>(hardware_threads());
 }
 
-std::unique_ptr<BatchRenderer> make_one_thread_tiled_renderer() {
-  return std::make_unique<TiledRenderer>(1);
-}
-
 }  // namespace tri::ch08

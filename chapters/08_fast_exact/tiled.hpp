@@ -177,8 +177,4 @@ class TiledRenderer final : public BatchRenderer {
 /// (hardware_threads()), kept by the caller's BatchDrawer for as many batches as it draws.
 std::unique_ptr<BatchRenderer> make_tiled_renderer();
 
-/// Step 9 · the same tiles on the calling thread alone: on a canvas too big for the caches, a
-/// tile stays cached while all its triangles are drawn, which pays even without a second core.
-std::unique_ptr<BatchRenderer> make_one_thread_tiled_renderer();
-
 }  // namespace tri::ch08
