@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "chapters/08_fast_exact/algorithms.hpp"
+#include "chapters/08_fast_exact/batched.hpp"
 #include "chapters/08_fast_exact/narrow_canvases.hpp"
 #include "chapters/08_fast_exact/pixel_writers.hpp"
 #include "chapters/08_fast_exact/threaded.hpp"
@@ -413,31 +414,39 @@ void threaded_probe(const BenchScene& scene, Canvas& canvas, const TimingPlan& p
 }
 
 // fast_tiled_threaded on a scene with two threads against one: a TiledRenderer of each, kept
-// for every draw (threads and bins made once), timed against each other in rounds. Beside the wall
-// clock, the process's CPU time per draw: another process taking a core does not inflate it, so two
-// threads together near the CPU time of one means the work was split without adding any, whatever
-// the wall clock saw.
+// for every draw (threads and bins made once), timed against each other in rounds, and beside them
+// fast_batched, the fastest single-thread variant on the mesh. Beside the wall clock, the
+// process's CPU time per draw: another process taking a core does not inflate it, so two threads
+// together near the CPU time of one means the work was split without adding any, whatever the wall
+// clock saw.
 void tiled_probe(const BenchScene& scene, const TimingPlan& plan, std::ostream& out) {
   Canvas canvas(scene.side, scene.side);
   std::array<tri::ch08::TiledRenderer, 2> renderers{tri::ch08::TiledRenderer(1),
                                                     tri::ch08::TiledRenderer(2)};
-  std::array<std::vector<double>, 2> cpu;
-  const auto on_threads = [&](int threads) {
-    return [&canvas, &scene, &renderers, &cpu, threads] {
-      const auto k = static_cast<std::size_t>(threads - 1);
+  std::array<std::vector<double>, 3> cpu;
+  const auto timed = [&cpu](std::size_t k, auto draw) {
+    return [&cpu, k, draw] {
       const std::clock_t start = std::clock();
-      renderers[k].draw(canvas, scene.triangles);
+      draw();
       cpu[k].push_back(static_cast<double>(std::clock() - start) / CLOCKS_PER_SEC);
     };
   };
-  const std::vector<std::function<void()>> runs{on_threads(1), on_threads(2)};
+  const auto on_threads = [&](int threads) {
+    auto& renderer = renderers[static_cast<std::size_t>(threads - 1)];
+    return timed(static_cast<std::size_t>(threads - 1),
+                 [&canvas, &scene, &renderer] { renderer.draw(canvas, scene.triangles); });
+  };
+  const auto batched =
+      timed(2, [&canvas, &scene] { tri::ch08::draw_batch_batched(canvas, scene.triangles); });
+  const std::vector<std::function<void()>> runs{on_threads(1), on_threads(2), batched};
   const std::vector<Timing> t = tri::time_interleaved(runs, plan);
   const double one = tri::spread_of(cpu[0]).median, two = tri::spread_of(cpu[1]).median;
   out << "fast_tiled_threaded on the " << scene.name << " scene: two threads " << std::fixed
-      << std::setprecision(2) << t[0].seconds.median / t[1].seconds.median
-      << "x the speed of one; CPU time per draw " << std::setprecision(3) << 1e3 * one
-      << " ms on one thread, " << 1e3 * two << " ms on two together (" << std::setprecision(0)
-      << 100 * two / one << "%)\n";
+      << std::setprecision(2) << t[0].seconds.median / t[1].seconds.median << "x the speed of one, "
+      << t[2].seconds.median / t[1].seconds.median << "x fast_batched's; CPU time per draw "
+      << std::setprecision(3) << 1e3 * one << " ms on one thread, " << 1e3 * two
+      << " ms on two together (" << std::setprecision(0) << 100 * two / one << "%), fast_batched "
+      << std::setprecision(3) << 1e3 * tri::spread_of(cpu[2]).median << " ms\n";
 }
 
 void print_probes(const std::vector<BenchScene>& scenes, Canvas& canvas, const Options& options,

@@ -7,6 +7,7 @@
 #include "chapters/08_fast_exact/hybrid.hpp"
 #include "chapters/08_fast_exact/instruction_sets.hpp"
 #include "chapters/08_fast_exact/pixel_writers.hpp"
+#include "chapters/08_fast_exact/tiled.hpp"
 
 // The lane functions take and return vectors by value, and AVX2's are 32 bytes wide. GCC and
 // Clang note (-Wpsabi) that such a call passes them differently with and without AVX; these
@@ -211,27 +212,40 @@ void set_up_lanes(std::span<const SceneTriangle> triangles, int width, int heigh
 }
 // [/listing]
 
+// [listing draw_group]
+template <PixelWriter Writer>
+void draw_group(Canvas& canvas, std::span<const SceneTriangle> group, int row_end,
+                SetupLanes& lanes, InstructionSet set) {
+  const int width = canvas.width(), height = canvas.height();
+  set_up_lanes(group, width, height, lanes, set);
+  for (std::size_t i = 0; i < std::min<std::size_t>(group.size(), setup_lanes); ++i) {
+    if (lanes.result[i] == LaneResult::set_up) {
+      Writer writer(canvas, group[i].color, row_end);
+      fill_hybrid(lanes.setup(static_cast<int>(i)), writer);
+    } else if (lanes.result[i] == LaneResult::scalar) {
+      const auto setup = setup_triangle(group[i].vertices, width, height);
+      if (!setup) continue;
+      Writer writer(canvas, group[i].color, row_end);
+      fill_hybrid(*setup, writer);
+    }
+  }
+}
+// [/listing]
+
+template void draw_group<RowWriter>(Canvas&, std::span<const SceneTriangle>, int, SetupLanes&,
+                                    InstructionSet);
+template void draw_group<CountingWriter>(Canvas&, std::span<const SceneTriangle>, int, SetupLanes&,
+                                         InstructionSet);
+
 namespace {
 
 // [listing draw_groups]
 template <PixelWriter Writer>
 void draw_groups(Canvas& canvas, std::span<const SceneTriangle> triangles, InstructionSet set) {
-  const int width = canvas.width(), height = canvas.height();
   SetupLanes lanes;
   while (!triangles.empty()) {
     const std::size_t count = std::min<std::size_t>(triangles.size(), setup_lanes);
-    set_up_lanes(triangles, width, height, lanes, set);
-    for (std::size_t i = 0; i < count; ++i) {
-      if (lanes.result[i] == LaneResult::set_up) {
-        Writer writer(canvas, triangles[i].color);
-        fill_hybrid(lanes.setup(static_cast<int>(i)), writer);
-      } else if (lanes.result[i] == LaneResult::scalar) {
-        const auto setup = setup_triangle(triangles[i].vertices, width, height);
-        if (!setup) continue;
-        Writer writer(canvas, triangles[i].color);
-        fill_hybrid(*setup, writer);
-      }
-    }
+    draw_group<Writer>(canvas, triangles.first(count), canvas.width(), lanes, set);
     triangles = triangles.subspan(count);
   }
 }
@@ -245,6 +259,16 @@ void draw_triangle_batched(Canvas& canvas, const Triangle& triangle, Color color
 }
 
 void draw_batch_batched(Canvas& canvas, std::span<const SceneTriangle> triangles) {
+  // On a canvas far larger than the caches, step 9's tiles on this thread: a tile stays cached
+  // while all its triangles are drawn, instead of every triangle going through memory.
+  if (std::int64_t{canvas.width()} * canvas.height() > tiled_canvas_pixels &&
+      triangles.size() >= tiled_batch_triangles) {
+    TileBins bins;
+    bins.start(triangles, canvas.width(), canvas.height());
+    for (int chunk = 0; chunk < bins.chunks(); ++chunk) bins.bin_chunk(chunk);
+    for (int tile = 0; tile < bins.grid().count(); ++tile) bins.draw_tile(canvas, tile);
+    return;
+  }
   draw_batch_batched_with(canvas, triangles, widest_instruction_set());
 }
 

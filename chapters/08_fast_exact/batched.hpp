@@ -5,10 +5,12 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <span>
 
 #include "chapters/08_fast_exact/instruction_sets.hpp"
+#include "chapters/08_fast_exact/pixel_writers.hpp"
 #include "chapters/08_fast_exact/triangle_setup.hpp"
 #include "common/canvas.hpp"
 #include "common/color.hpp"
@@ -66,13 +68,31 @@ struct SetupLanes {
 void set_up_lanes(std::span<const SceneTriangle> triangles, int width, int height,
                   SetupLanes& lanes, InstructionSet set = widest_instruction_set()) noexcept;
 
+/// Step 10 · one group: set_up_lanes for the first min(setup_lanes, size) triangles of `group`,
+/// then fill_hybrid for each in order with a Writer whose rows end at `row_end` (the canvas
+/// width, or a tile's right border); `lanes` is the caller's scratch.
+template <PixelWriter Writer>
+void draw_group(Canvas& canvas, std::span<const SceneTriangle> group, int row_end,
+                SetupLanes& lanes, InstructionSet set = widest_instruction_set());
+extern template void draw_group<RowWriter>(Canvas&, std::span<const SceneTriangle>, int,
+                                           SetupLanes&, InstructionSet);
+extern template void draw_group<CountingWriter>(Canvas&, std::span<const SceneTriangle>, int,
+                                                SetupLanes&, InstructionSet);
+
 /// Step 10 · one triangle: set_up_lanes with one lane used, then fill_hybrid.
 void draw_triangle_batched(Canvas& canvas, const Triangle& triangle, Color color);
 
+/// Above these, draw_batch_batched draws through step 9's tiles on the calling thread: a canvas
+/// of more than 1024 x 1024 pixels (4 MiB of RGBA8, four times this machine's level-2 caches
+/// together) and a batch of at least 64 triangles.
+inline constexpr std::int64_t tiled_canvas_pixels = 1024 * 1024;
+inline constexpr std::size_t tiled_batch_triangles = 64;
+
 /// Step 10 · a batch: set_up_lanes for each group of setup_lanes triangles, then fill_hybrid
-/// for each of them in submission order, so the pixels are draw_batch_hybrid's.
+/// for each of them in submission order, so the pixels are draw_batch_hybrid's; on a large
+/// canvas (tiled_canvas_pixels, tiled_batch_triangles), the same through step 9's tiles.
 void draw_batch_batched(Canvas& canvas, std::span<const SceneTriangle> triangles);
-/// The same with the lanes' copy for `set` (the tests force each the host runs).
+/// The groups alone, with the lanes' copy for `set` (the tests force each the host runs).
 void draw_batch_batched_with(Canvas& canvas, std::span<const SceneTriangle> triangles,
                              InstructionSet set);
 

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstddef>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "chapters/08_fast_exact/batched.hpp"
@@ -242,5 +243,26 @@ TEST_CASE("The batched entry draws exactly fast_hybrid's pixels, overlapping col
     const Canvas batched = drawn_batch(tri::ch08::draw_batch_batched, mesh, 97, 83, counting);
     const Canvas hybrid = drawn_batch(tri::ch08::draw_batch_hybrid, mesh, 97, 83, counting);
     CHECK(tri::ch08::testing::same_canvas(batched, hybrid));
+  }
+}
+
+TEST_CASE("On a canvas larger than 1024x1024 the batched entry draws through tiles the same pixels",
+          "[08_fast_exact][step10]") {
+  // Just above and at the bounds: 1100 x 1000 pixels (tiled from 64 triangles on), 1024 x 1024
+  // (never tiled); overlapping colours over many tiles, and write counts.
+  for (const auto& [width, height] : {std::pair{1100, 1000}, std::pair{1024, 1024}}) {
+    for (const int count : {63, 64, 400}) {
+      const auto scene = tri::ch08::testing::overlapping_scene(
+          static_cast<std::uint64_t>(count + width), count, width);
+      for (const bool counting : {false, true}) {
+        INFO(width << "x" << height << ", " << count << " triangles, counting " << counting);
+        const Canvas batched =
+            drawn_batch(tri::ch08::draw_batch_batched, scene, width, height, counting);
+        const Canvas hybrid =
+            drawn_batch(tri::ch08::draw_batch_hybrid, scene, width, height, counting);
+        CHECK(tri::ch08::testing::same_canvas(batched, hybrid));
+        CHECK(batched.outside_writes() == 0);
+      }
+    }
   }
 }

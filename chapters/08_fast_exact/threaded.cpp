@@ -13,24 +13,17 @@
 namespace tri::ch08 {
 namespace {
 
-// Whether a band of `thread` holds a row of the triangle's candidate pixels: setup_triangle's row
-// range (the same snapped y extent), for a fraction of its work, so that every thread does not pay
-// the whole setup of every small triangle.
+// Whether a band of `thread` holds a row of the triangle's candidate pixels, for a fraction of
+// setup_triangle's work, so that every thread does not pay the whole setup of every small
+// triangle.
 bool touches_bands_of(const Triangle& triangle, int height, const Bands& bands,
                       int thread) noexcept {
-  std::int64_t low = snap_to_256ths(triangle[0]).y, high = low;
-  for (const glm::dvec2& v : {triangle[1], triangle[2]}) {
-    const std::int64_t y = snap_to_256ths(v).y;
-    low = std::min(low, y);
-    high = std::max(high, y);
-  }
-  const std::int64_t first_row = std::max<std::int64_t>(-((-low) >> subpixel_bits), 0);
-  const std::int64_t last_row = std::min<std::int64_t>(high >> subpixel_bits, height - 1);
+  const auto [first_row, last_row] = candidate_rows(triangle, height);
   if (first_row > last_row) return false;
-  const std::int64_t first_band = first_row / bands.rows;
+  const int first_band = first_row / bands.rows;
   // Any `threads` bands in a row include one of every thread.
-  const std::int64_t last_band = std::min(last_row / bands.rows, first_band + bands.threads - 1);
-  for (std::int64_t band = first_band; band <= last_band; ++band) {
+  const int last_band = std::min(last_row / bands.rows, first_band + bands.threads - 1);
+  for (int band = first_band; band <= last_band; ++band) {
     if (band % bands.threads == thread) return true;
   }
   return false;
@@ -97,6 +90,19 @@ void draw_batch_on_threads(Canvas& canvas, std::span<const SceneTriangle> triang
   // Each std::jthread joins when `workers` goes out of scope.
 }
 // [/listing]
+
+std::pair<int, int> candidate_rows(const Triangle& triangle, int height) noexcept {
+  std::int64_t low = snap_to_256ths(triangle[0]).y, high = low;
+  for (const glm::dvec2& v : {triangle[1], triangle[2]}) {
+    const std::int64_t y = snap_to_256ths(v).y;
+    low = std::min(low, y);
+    high = std::max(high, y);
+  }
+  // Clamped to one row beyond the canvas on either side, so that both fit an int.
+  const std::int64_t first_row = std::clamp<std::int64_t>(-((-low) >> subpixel_bits), 0, height);
+  const std::int64_t last_row = std::clamp<std::int64_t>(high >> subpixel_bits, -1, height - 1);
+  return {static_cast<int>(first_row), static_cast<int>(last_row)};
+}
 
 int hardware_threads() noexcept {
   return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <span>
+#include <utility>
 
 #include "common/canvas.hpp"
 #include "common/color.hpp"
@@ -30,6 +31,11 @@ constexpr Bands bands_for(int height, int threads) noexcept {
   const int rows = height / (4 * threads) / 8 * 8;
   return {rows < 16 ? 16 : (rows > 64 ? 64 : rows), threads};
 }
+
+/// The rows that can hold a candidate pixel of the triangle once snapped (setup_triangle's row
+/// range, from the snapped y coordinates alone), clamped to a canvas `height` rows tall; the first
+/// is past the last when there are none.
+std::pair<int, int> candidate_rows(const Triangle& triangle, int height) noexcept;
 
 /// The work of thread `thread` of `threads`: every triangle in order, each clipped to the bands
 /// that bands_for(canvas height, threads) gives this thread. Writes only rows of those bands (and

@@ -1,6 +1,7 @@
 #include "chapters/08_fast_exact/tiled.hpp"
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <memory>
 #include <system_error>
@@ -8,6 +9,7 @@
 #include <utility>
 
 #include "chapters/07_exact_coverage/fixed_point.hpp"
+#include "chapters/08_fast_exact/batched.hpp"
 #include "chapters/08_fast_exact/blocks.hpp"
 #include "chapters/08_fast_exact/hybrid.hpp"
 #include "chapters/08_fast_exact/pixel_writers.hpp"
@@ -19,6 +21,9 @@ namespace {
 // Chunks of the batch binned as one piece: enough for two or more threads to share the binning
 // of a few large triangles, few enough that a tile's lists are quick to walk.
 constexpr int max_chunks = 16;
+// The largest canvas drawn in bands without binning: there, binning cost more than it saved
+// (the performance notes measure it).
+constexpr int cached_pixels = 512 * 512;
 // An entry of a tile list with this bit set names a shared setup, not a triangle.
 constexpr std::uint32_t shared_bit = std::uint32_t{1} << 31;
 
@@ -43,10 +48,19 @@ TileGrid tile_grid_for(int width, int height) noexcept {
 }
 // [/listing]
 
-void TileBins::start(std::span<const SceneTriangle> triangles, int width, int height) {
+void TileBins::start(std::span<const SceneTriangle> triangles, int width, int height, int bands) {
   triangles_ = triangles;
   width_ = width;
   height_ = height;
+  if (bands > 0) {
+    // One tile column as wide as the canvas, rows of tiles as tall as `bands` of them need.
+    int width_bits = 3, height_bits = 3;
+    while ((1 << width_bits) < width) ++width_bits;
+    while ((((height - 1) >> height_bits) + 1) > bands) ++height_bits;
+    grid_ = {width_bits, height_bits, 1, ((height - 1) >> height_bits) + 1};
+    chunk_count_ = 0;
+    return;
+  }
   grid_ = tile_grid_for(width, height);
   const std::size_t count = triangles.size();
   chunk_count_ = static_cast<int>(std::clamp<std::size_t>(count, 1, max_chunks));
@@ -141,17 +155,47 @@ void TileBins::bin_chunk(int chunk_index) noexcept {
 }
 // [/listing]
 
-std::vector<std::uint32_t> TileBins::triangles_of(int tile) const {
-  std::vector<std::uint32_t> triangles;
+template <class Within, class Over>
+void TileBins::for_each_triangle_of(int tile, Within&& within, Over&& over) const {
+  if (chunk_count_ == 0) {
+    // Not binned: every triangle of the batch, kept by its rows.
+    const ch05::PixelBox box = grid_.tile(tile, width_, height_);
+    // Snapping moves a vertex by at most 1/512 pixel, and a candidate row lies between the
+    // snapped lowest and highest y: half a pixel of margin decides in doubles, without snapping.
+    const double top = box.min.y - 0.5, bottom = box.max.y + 0.5;
+    for (std::uint32_t i = 0; i < triangles_.size(); ++i) {
+      const Triangle& t = triangles_[i].vertices;
+      const double low = std::min(t[0].y, std::min(t[1].y, t[2].y));
+      const double high = std::max(t[0].y, std::max(t[1].y, t[2].y));
+      if (high < top || low > bottom) continue;
+      if (low >= top && high <= bottom) {
+        within(i);
+      } else if (const auto setup = setup_triangle(triangles_[i].vertices, width_, height_)) {
+        over(*setup, i);
+      }
+    }
+    return;
+  }
+  const auto t = static_cast<std::size_t>(tile);
   for (int c = 0; c < chunk_count_; ++c) {
     const Chunk& chunk = chunk_storage_[static_cast<std::size_t>(c)];
-    const auto t = static_cast<std::size_t>(tile);
     for (std::uint32_t e = chunk.starts[t]; e < chunk.starts[t + 1]; ++e) {
       const std::uint32_t entry = chunk.entries[e];
-      triangles.push_back((entry & shared_bit) ? chunk.shared[entry & ~shared_bit].triangle
-                                               : entry);
+      if (entry & shared_bit) {
+        const Shared& shared = chunk.shared[entry & ~shared_bit];
+        over(shared.setup, shared.triangle);
+      } else {
+        within(entry);
+      }
     }
   }
+}
+
+std::vector<std::uint32_t> TileBins::triangles_of(int tile) const {
+  std::vector<std::uint32_t> triangles;
+  for_each_triangle_of(
+      tile, [&](std::uint32_t i) { triangles.push_back(i); },
+      [&](const TriangleSetup&, std::uint32_t i) { triangles.push_back(i); });
   return triangles;
 }
 
@@ -159,26 +203,38 @@ std::vector<std::uint32_t> TileBins::triangles_of(int tile) const {
 template <class Writer>
 void TileBins::draw_tile_with(Canvas& canvas, int tile) const noexcept {
   const ch05::PixelBox box = grid_.tile(tile, width_, height_);
-  const auto t = static_cast<std::size_t>(tile);
-  for (int c = 0; c < chunk_count_; ++c) {
-    const Chunk& chunk = chunk_storage_[static_cast<std::size_t>(c)];
-    for (std::uint32_t e = chunk.starts[t]; e < chunk.starts[t + 1]; ++e) {
-      const std::uint32_t entry = chunk.entries[e];
-      if (entry & shared_bit) {
-        // Set up while binning: clipped to the tile, which moves its origin by whole pixels.
-        const Shared& shared = chunk.shared[entry & ~shared_bit];
-        const auto part = clip_setup(shared.setup, box);
-        // The writer's row end keeps step 5's eight-pixel blends inside the tile.
-        Writer writer(canvas, triangles_[shared.triangle].color, box.max.x + 1);
-        if (part) fill_hybrid(*part, writer);
-      } else {
-        // Within this tile: set up here, by the thread that draws it.
-        const auto setup = setup_triangle(triangles_[entry].vertices, width_, height_);
-        Writer writer(canvas, triangles_[entry].color, box.max.x + 1);
-        if (setup) fill_hybrid(*setup, writer);
-      }
+  // The writers' row end keeps step 5's eight-pixel blends inside the tile.
+  const int row_end = box.max.x + 1;
+  // Triangles within this tile wait here to be set up eight at once (step 10's lanes) by the
+  // thread that draws the tile; one over several tiles first draws those before it, in order.
+  // Consecutive ones (most of a mesh's) are set up where they lie, others from a copy.
+  std::array<std::uint32_t, setup_lanes> waiting;
+  std::size_t waiting_count = 0;
+  std::array<SceneTriangle, setup_lanes> copies;
+  SetupLanes lanes;
+  const auto draw_waiting = [&] {
+    std::span<const SceneTriangle> group = triangles_.subspan(waiting[0], waiting_count);
+    if (waiting[waiting_count - 1] - waiting[0] != waiting_count - 1) {
+      for (std::size_t k = 0; k < waiting_count; ++k) copies[k] = triangles_[waiting[k]];
+      group = std::span(copies).first(waiting_count);
     }
-  }
+    draw_group<Writer>(canvas, group, row_end, lanes);
+    waiting_count = 0;
+  };
+  for_each_triangle_of(
+      tile,
+      [&](std::uint32_t i) {
+        waiting[waiting_count++] = i;
+        if (waiting_count == setup_lanes) draw_waiting();
+      },
+      [&](const TriangleSetup& setup, std::uint32_t i) {
+        if (waiting_count > 0) draw_waiting();
+        // Clipped to the tile, which moves its origin by whole pixels.
+        const auto part = clip_setup(setup, box);
+        Writer writer(canvas, triangles_[i].color, row_end);
+        if (part) fill_hybrid(*part, writer);
+      });
+  if (waiting_count > 0) draw_waiting();
 }
 // [/listing]
 
@@ -195,6 +251,7 @@ TiledRenderer::TiledRenderer(int threads) {
   } catch (const std::system_error&) {
     // No more threads to be had: the ones running take all the chunks and tiles.
   }
+  threads_ = static_cast<int>(helpers_.size()) + 1;
 }
 
 TiledRenderer::~TiledRenderer() {
@@ -218,7 +275,9 @@ void TiledRenderer::work() noexcept {
 }
 
 void TiledRenderer::open(Canvas& canvas, std::span<const SceneTriangle> triangles) {
-  bins_.start(triangles, canvas.width(), canvas.height());
+  // A small canvas gains nothing from binning: one band of rows per thread.
+  const bool cached = canvas.width() * canvas.height() <= cached_pixels;
+  bins_.start(triangles, canvas.width(), canvas.height(), cached ? threads_ : 0);
   canvas_ = &canvas;
   next_chunk_ = 0;
   binned_ = 0;

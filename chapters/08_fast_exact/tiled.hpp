@@ -37,9 +37,9 @@ struct TileGrid {
 };
 
 /// The tiles of a width x height canvas: 512 pixels wide and 64 rows tall (128 KiB of RGBA8,
-/// an eighth of this machine's 1 MiB level-2 cache per core), or 32 or 16 rows on a canvas that
-/// would otherwise have fewer than 16 tiles. Wide, because every tile a triangle crosses
-/// restarts its spans and splits each row's span (the README measures narrower tiles).
+/// a quarter of the 512 KiB level-2 cache each vCPU of this machine reports), or 32 or 16 rows on a
+/// canvas that would otherwise have fewer than 16 tiles. Wide, because every tile a triangle
+/// crosses restarts its spans and splits each row's span (the README measures narrower tiles).
 TileGrid tile_grid_for(int width, int height) noexcept;
 
 // [listing pixels_around]
@@ -75,8 +75,10 @@ inline ch05::PixelBox pixels_around(const Triangle& t, int width, int height) no
 class TileBins {
  public:
   /// Prepares the bins for `triangles` (kept by reference until the last draw_tile) on a
-  /// width x height canvas. Not thread-safe; call before any bin_chunk.
-  void start(std::span<const SceneTriangle> triangles, int width, int height);
+  /// width x height canvas. Not thread-safe; call before any bin_chunk. With `bands` > 0 nothing
+  /// is binned (no chunks): the tiles are at most `bands` full-width bands of rows, and each
+  /// tile's draw reads the whole batch and keeps the triangles whose rows reach it.
+  void start(std::span<const SceneTriangle> triangles, int width, int height, int bands = 0);
 
   /// The number of chunks start() cut the batch into.
   int chunks() const noexcept { return chunk_count_; }
@@ -117,6 +119,10 @@ class TileBins {
   };
   template <class Writer>
   void draw_tile_with(Canvas& canvas, int tile) const noexcept;
+  // Calls within(triangle index) or shared(its setup, its index) for each triangle of the tile,
+  // in submission order: within a tile, or set up once over several.
+  template <class Within, class Over>
+  void for_each_triangle_of(int tile, Within&& within, Over&& over) const;
   Footprint footprint(const ch05::PixelBox& pixels) const noexcept;
   template <class Visit>
   void for_each_tile_of(const Chunk& chunk, const Footprint& footprint, Visit&& visit) const;
@@ -144,8 +150,9 @@ class TiledRenderer final : public BatchRenderer {
   TiledRenderer(const TiledRenderer&) = delete;
   TiledRenderer& operator=(const TiledRenderer&) = delete;
 
-  /// Draws the batch as if one triangle after the other. One batch at a time: draw() is not to
-  /// be called from two threads at once.
+  /// Draws the batch as if one triangle after the other. On a canvas of at most 512 x 512 pixels
+  /// the tiles are one band of rows per thread, not binned (TileBins::start). One batch at a
+  /// time: draw() is not to be called from two threads at once.
   void draw(Canvas& canvas, std::span<const SceneTriangle> triangles) override;
 
  private:
@@ -162,6 +169,7 @@ class TiledRenderer final : public BatchRenderer {
   std::atomic<unsigned> batches_{0};  // batches begun: the helpers wait for it to change
   std::atomic<int> inside_{closed};
   std::atomic<bool> stopping_{false};
+  int threads_ = 1;                    // the calling thread and the helpers started
   std::vector<std::jthread> helpers_;  // the last member: joined before the others go
 };
 

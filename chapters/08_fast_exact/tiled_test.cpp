@@ -56,6 +56,18 @@ std::vector<SceneTriangle> seam_scene() {
   return scene;
 }
 
+// The scene drawn tile after tile by one TileBins on this thread: binned (bands 0) or in at most
+// `bands` unbinned bands of rows.
+Canvas drawn_by_tiles(int width, int height, const std::vector<SceneTriangle>& scene, int bands,
+                      bool counting) {
+  TileBins bins;
+  bins.start(scene, width, height, bands);
+  for (int chunk = 0; chunk < bins.chunks(); ++chunk) bins.bin_chunk(chunk);
+  return drawn_on(width, height, counting, [&](Canvas& canvas) {
+    for (int tile = 0; tile < bins.grid().count(); ++tile) bins.draw_tile(canvas, tile);
+  });
+}
+
 }  // namespace
 
 TEST_CASE("Tiles are 512 pixels wide and 64 rows tall, fewer rows on a small canvas",
@@ -169,6 +181,11 @@ TEST_CASE("Triangles with edges and vertices on tile seams are drawn as the orac
   const auto scene = seam_scene();
   for (const bool counting : {true, false}) {
     const Canvas truth = oracle_canvas(600, 128, scene, counting);
+    // Binned (the renderer bins only canvases larger than this one) and in bands of rows.
+    for (const int bands : {0, 1, 2, 3}) {
+      INFO(bands << " bands, counting " << counting);
+      CHECK(same_canvas(drawn_by_tiles(600, 128, scene, bands, counting), truth));
+    }
     for (const int threads : {1, 2, 4}) {
       INFO(threads << " threads, counting " << counting);
       tri::ch08::TiledRenderer renderer(threads);
@@ -202,20 +219,22 @@ TEST_CASE("Each tile draws only its own pixels, and the tiles together draw the 
   const auto scene = overlapping_scene(17, 400, 700);
   const Canvas serial = drawn_on(
       700, 130, true, [&](Canvas& canvas) { tri::ch08::draw_batch_hybrid(canvas, scene); });
-  TileBins bins;
-  bins.start(scene, 700, 130);
-  for (int chunk = 0; chunk < bins.chunks(); ++chunk) bins.bin_chunk(chunk);
-  Canvas together(700, 130);
-  together.enable_write_counts();
-  for (int tile = 0; tile < bins.grid().count(); ++tile) {
-    const Canvas alone =
-        drawn_on(700, 130, true, [&](Canvas& canvas) { bins.draw_tile(canvas, tile); });
-    bins.draw_tile(together, tile);
-    const auto box = bins.grid().tile(tile, 700, 130);
-    for (const auto& [x, y] : tri::testing::written_pixels(alone)) {
-      INFO("tile " << tile << " wrote " << x << "," << y);
-      REQUIRE((x >= box.min.x && x <= box.max.x && y >= box.min.y && y <= box.max.y));
+  // Binned tiles (bands 0), and unbinned bands of rows as the renderer draws a small canvas.
+  for (const int bands : {0, 1, 2, 3, 7}) {
+    TileBins bins;
+    bins.start(scene, 700, 130, bands);
+    for (int chunk = 0; chunk < bins.chunks(); ++chunk) bins.bin_chunk(chunk);
+    if (bands > 0) CHECK(bins.grid().count() <= bands);
+    for (int tile = 0; tile < bins.grid().count(); ++tile) {
+      const Canvas alone =
+          drawn_on(700, 130, true, [&](Canvas& canvas) { bins.draw_tile(canvas, tile); });
+      const auto box = bins.grid().tile(tile, 700, 130);
+      for (const auto& [x, y] : tri::testing::written_pixels(alone)) {
+        INFO(bands << " bands: tile " << tile << " wrote " << x << "," << y);
+        REQUIRE((x >= box.min.x && x <= box.max.x && y >= box.min.y && y <= box.max.y));
+      }
     }
+    INFO(bands << " bands");
+    CHECK(same_canvas(drawn_by_tiles(700, 130, scene, bands, true), serial));
   }
-  CHECK(same_canvas(together, serial));
 }
