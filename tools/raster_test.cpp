@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <initializer_list>
 #include <random>
 #include <regex>
 #include <set>
@@ -60,6 +61,31 @@ std::string read_file(const fs::path& path) {
 void check_fails(const Run& run, int status, const std::string& message) {
   CHECK(run.status == status);
   CHECK(run.err.find(message) != std::string::npos);
+}
+
+// A usage error: raster run with these arguments exits with status 2 and says this.
+struct Refusal {
+  std::vector<std::string> args;
+  std::string message;
+};
+
+// Each run is refused as it says, and the folder still holds only the scene written into it.
+void check_refusals(const TempFolder& dir, std::initializer_list<Refusal> refusals) {
+  for (const Refusal& refusal : refusals) {
+    INFO(refusal.message);
+    check_fails(raster(refusal.args), 2, refusal.message);
+  }
+  CHECK(dir.file_count() == 1);
+}
+
+// What --bench prints: the preparation line, then the speed line of this many triangles and frames.
+std::regex bench_lines(int triangles, int frames) {
+  return std::regex(
+      "preparation_seconds=[0-9.e+-]+\n"
+      "triangles=" +
+      std::to_string(triangles) + " frames=" + std::to_string(frames) +
+      " seconds=[0-9.e+-]+ min_seconds=[0-9.e+-]+ max_seconds=[0-9.e+-]+ "
+      "tris_per_s=[0-9.e+-]+ mpix_per_s=[0-9.e+-]+\n");
 }
 
 bool is_one_line(const std::string& text) {
@@ -242,9 +268,8 @@ TEST_CASE("raster rejects NaN and infinite coordinates and writes nothing", "[ra
 TEST_CASE("raster asks for an algorithm when the scene has triangles", "[raster]") {
   TempFolder dir;
   const auto scene = dir.write("t.scene", "canvas 8 8\ntri 0 0 7 0 0 7\n");
-  const Run run = raster({"--scene", scene.string(), "--out", (dir / "x.png").string()});
-  check_fails(run, 2, "choose an algorithm with --algo");
-  CHECK(dir.file_count() == 1);
+  check_refusals(dir, {{{"--scene", scene.string(), "--out", (dir / "x.png").string()},
+                        "choose an algorithm with --algo"}});
 }
 
 TEST_CASE("raster reports a missing scene file, a missing --scene and bad option mixes",
@@ -269,11 +294,7 @@ TEST_CASE("raster --bench prints the preparation line and the speed line", "[ras
   const auto scene = dir.write("l.scene", "canvas 8 8\nline 0 0 7 7\nline 0 7 7 0\n");
   const Run run = raster({"--scene", scene.string(), "--bench", "5"});
   REQUIRE(run.status == 0);
-  const std::regex format(
-      "preparation_seconds=[0-9.e+-]+\n"
-      "triangles=0 frames=5 seconds=[0-9.e+-]+ min_seconds=[0-9.e+-]+ max_seconds=[0-9.e+-]+ "
-      "tris_per_s=[0-9.e+-]+ mpix_per_s=[0-9.e+-]+\n");
-  CHECK(std::regex_match(run.out, format));
+  CHECK(std::regex_match(run.out, bench_lines(0, 5)));
   CHECK(dir.file_count() == 1);
 }
 
@@ -311,11 +332,9 @@ TEST_CASE("raster refuses two outputs naming one file and empty output paths", "
   TempFolder dir;
   const auto scene = dir.write("s.scene", "canvas 8 8\n");
   const auto same = (dir / "x").string();
-  Run run = raster({"--scene", scene.string(), "--out", same, "--counts", same});
-  check_fails(run, 2, "two outputs name one file");
-  run = raster({"--scene", scene.string(), "--out", ""});
-  check_fails(run, 2, "needs a non-empty value");
-  CHECK(dir.file_count() == 1);
+  check_refusals(dir, {{{"--scene", scene.string(), "--out", same, "--counts", same},
+                        "two outputs name one file"},
+                       {{"--scene", scene.string(), "--out", ""}, "needs a non-empty value"}});
 }
 
 TEST_CASE("raster refuses an output ending in a slash before reading the scene and makes nothing",
@@ -471,16 +490,15 @@ TEST_CASE("raster refuses --coverage without a rule-area algorithm and colours w
           "[raster][coverage]") {
   TempFolder dir;
   const auto scene = dir.write("t.scene", "canvas 8 8\ntri 0 0 7 0 0 7\n");
-  Run run = raster(
-      {"--algo", "fast_hybrid", "--scene", scene.string(), "--coverage", (dir / "x.pgm").string()});
-  check_fails(run, 2, "--coverage needs an algorithm of rule area");
-  CHECK(run.err.find("fast_hybrid has rule top-left") != std::string::npos);
-  run = raster(
-      {"--algo", "area_cells", "--scene", scene.string(), "--out", (dir / "x.png").string()});
-  check_fails(run, 2, "area_cells has rule area");
-  run = raster({"--algo", "samples_grid_4x4", "--scene", scene.string()});
-  check_fails(run, 2, "choose --coverage FILE.pgm or --bench N");
-  CHECK(dir.file_count() == 1);
+  const std::vector<std::string> aliased_coverage{
+      "--algo", "fast_hybrid", "--scene", scene.string(), "--coverage", (dir / "x.pgm").string()};
+  check_refusals(
+      dir, {{aliased_coverage, "--coverage needs an algorithm of rule area"},
+            {aliased_coverage, "fast_hybrid has rule top-left"},
+            {{"--algo", "area_cells", "--scene", scene.string(), "--out", (dir / "x.png").string()},
+             "area_cells has rule area"},
+            {{"--algo", "samples_grid_4x4", "--scene", scene.string()},
+             "choose --coverage FILE.pgm or --bench N"}});
 }
 
 TEST_CASE("raster --coverage refuses an out-of-range scene and keeps the earlier file",
@@ -504,11 +522,7 @@ TEST_CASE("raster --bench times a rule-area algorithm with the preparation and s
   const Run run =
       raster({"--algo", "samples_standard_4", "--scene", scene.string(), "--bench", "3"});
   REQUIRE(run.status == 0);
-  const std::regex format(
-      "preparation_seconds=[0-9.e+-]+\n"
-      "triangles=1 frames=3 seconds=[0-9.e+-]+ min_seconds=[0-9.e+-]+ max_seconds=[0-9.e+-]+ "
-      "tris_per_s=[0-9.e+-]+ mpix_per_s=[0-9.e+-]+\n");
-  CHECK(std::regex_match(run.out, format));
+  CHECK(std::regex_match(run.out, bench_lines(1, 3)));
 }
 
 TEST_CASE("The rate of a rule-area algorithm counts the pixels each triangle touches",
@@ -617,8 +631,5 @@ TEST_CASE("raster --bench times a narrow format with the preparation and speed l
   const Run run = raster(
       {"--algo", "fast_spans", "--scene", scene.string(), "--format", "mask1", "--bench", "3"});
   REQUIRE(run.status == 0);
-  CHECK(std::regex_match(run.out, std::regex("preparation_seconds=[0-9.e+-]+\n"
-                                             "triangles=20 frames=3 seconds=[0-9.e+-]+ "
-                                             "min_seconds=[0-9.e+-]+ max_seconds=[0-9.e+-]+ "
-                                             "tris_per_s=[0-9.e+-]+ mpix_per_s=[0-9.e+-]+\n")));
+  CHECK(std::regex_match(run.out, bench_lines(20, 3)));
 }

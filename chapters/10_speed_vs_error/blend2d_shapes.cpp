@@ -10,6 +10,7 @@
 #include "chapters/08_fast_exact/instruction_sets.hpp"
 #include "chapters/10_speed_vs_error/coverage_measure.hpp"
 #include "chapters/10_speed_vs_error/measure.hpp"
+#include "chapters/10_speed_vs_error/report_csv.hpp"
 #include "measure/area_error.hpp"
 
 namespace tri::ch10 {
@@ -206,16 +207,15 @@ std::string architecture() {
 }  // namespace
 
 std::string blend2d_shapes_csv(std::span<const ShapeRate> rows) {
-  std::ostringstream csv;
-  csv << "drawer,chapter,writes,box_side,canvas,triangles,repetitions,samples,median_s,min_s,"
-         "max_s,calls_per_ms\n";
-  for (const ShapeRate& r : rows) {
-    csv << r.drawer << ',' << r.chapter << ',' << writes_name(r.writes) << ',' << r.box_side << ','
-        << blend2d_canvas_width << 'x' << blend2d_canvas_height << ',' << r.triangles << ','
-        << r.timing.repetitions << ',' << r.timing.samples << ',' << r.timing.seconds.median << ','
-        << r.timing.seconds.min << ',' << r.timing.seconds.max << ',' << r.calls_per_ms() << '\n';
-  }
-  return csv.str();
+  constexpr std::string_view header =
+      "drawer,chapter,writes,box_side,canvas,triangles,repetitions,samples,median_s,min_s,"
+      "max_s,calls_per_ms";
+  return csv_table(header, rows, [](const ShapeRate& r) {
+    return std::tuple(r.drawer, r.chapter, writes_name(r.writes), r.box_side,
+                      canvas_column(blend2d_canvas_width, blend2d_canvas_height), r.triangles,
+                      r.timing.repetitions, r.timing.samples, r.timing.seconds.median,
+                      r.timing.seconds.min, r.timing.seconds.max, r.calls_per_ms());
+  });
 }
 
 std::string blend2d_shapes_markdown(std::span<const ShapeRate> rows, const Machine& machine) {

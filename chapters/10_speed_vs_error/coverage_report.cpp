@@ -100,26 +100,21 @@ std::vector<CoverageSummary> summarize_coverage(std::span<const CoverageMeasurem
 }
 
 std::string coverage_csv(std::span<const CoverageMeasurement> rows) {
-  std::ostringstream csv;
-  csv << "algorithm,chapter,rule,samples,scene,grid,mesh,width,height,triangles,touched_pixels,"
-         "median_seconds,min_seconds,max_seconds,repetitions,samples_timed,tris_per_s,"
-         "error_triangles,rejected,error_pixels,mean_error,rms_error,max_error,max_units,"
-         "composed_pixels,composed_mean,composed_max,composed_off_pixels\n";
-  for (const CoverageMeasurement& m : rows) {
-    csv << m.algorithm << ',' << m.chapter << ',' << m.rule << ',' << m.samples << ',' << m.scene
-        << ',' << m.grid << ',' << (m.mesh ? 1 : 0) << ',' << m.width << ',' << m.height << ','
-        << m.triangles << ',' << m.touched_pixels << ','
-        << format_number(m.timing.seconds.median, 6) << ','
-        << format_number(m.timing.seconds.min, 6) << ',' << format_number(m.timing.seconds.max, 6)
-        << ',' << m.timing.repetitions << ',' << m.timing.samples << ','
-        << format_number(m.triangles_per_second(), 6) << ',' << m.error.triangles << ','
-        << m.error.rejected << ',' << m.error.pixels << ',' << format_number(m.error.mean, 6) << ','
-        << format_number(m.error.rms, 6) << ',' << format_number(m.error.max, 6) << ','
-        << m.error.max_units << ',' << m.error.composed_pixels << ','
-        << format_number(m.error.composed_mean, 6) << ',' << format_number(m.error.composed_max, 6)
-        << ',' << m.error.composed_off_pixels << '\n';
-  }
-  return csv.str();
+  constexpr std::string_view header =
+      "algorithm,chapter,rule,samples,scene,grid,mesh,width,height,triangles,touched_pixels,"
+      "median_seconds,min_seconds,max_seconds,repetitions,samples_timed,tris_per_s,"
+      "error_triangles,rejected,error_pixels,mean_error,rms_error,max_error,max_units,"
+      "composed_pixels,composed_mean,composed_max,composed_off_pixels";
+  return csv_table(header, rows, [](const CoverageMeasurement& m) {
+    return std::tuple(
+        m.algorithm, m.chapter, m.rule, m.samples, m.scene, m.grid, m.mesh ? 1 : 0, m.width,
+        m.height, m.triangles, m.touched_pixels, seconds_columns(m.timing), m.timing.repetitions,
+        m.timing.samples, format_number(m.triangles_per_second(), 6), m.error.triangles,
+        m.error.rejected, m.error.pixels, format_number(m.error.mean, 6),
+        format_number(m.error.rms, 6), format_number(m.error.max, 6), m.error.max_units,
+        m.error.composed_pixels, format_number(m.error.composed_mean, 6),
+        format_number(m.error.composed_max, 6), m.error.composed_off_pixels);
+  });
 }
 
 std::string coverage_markdown(std::span<const CoverageSummary> summaries,

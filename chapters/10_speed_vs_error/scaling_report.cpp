@@ -117,18 +117,14 @@ void sweep_table(std::ostream& md, std::span<const ScalingPoint> points, std::st
 }  // namespace
 
 std::string scaling_csv(std::span<const ScalingPoint> points) {
-  std::ostringstream csv;
-  csv << "sweep,drawer,chapter,scene,side,triangles,scene_bytes,measured,seconds_median,"
-         "seconds_min,seconds_max,repetitions,samples,peak_bytes,not_measured_because\n";
-  for (const ScalingPoint& p : points) {
-    csv << p.sweep << ',' << p.drawer << ',' << p.chapter << ',' << p.scene << ',' << p.side << ','
-        << p.triangles << ',' << p.scene_bytes << ',' << (p.measured ? 1 : 0) << ','
-        << format_number(p.timing.seconds.median, 6) << ','
-        << format_number(p.timing.seconds.min, 6) << ',' << format_number(p.timing.seconds.max, 6)
-        << ',' << p.timing.repetitions << ',' << p.timing.samples << ',' << p.peak_bytes << ','
-        << csv_text(p.not_measured_because) << '\n';
-  }
-  return csv.str();
+  constexpr std::string_view header =
+      "sweep,drawer,chapter,scene,side,triangles,scene_bytes,measured,seconds_median,"
+      "seconds_min,seconds_max,repetitions,samples,peak_bytes,not_measured_because";
+  return csv_table(header, points, [](const ScalingPoint& p) {
+    return std::tuple(p.sweep, p.drawer, p.chapter, p.scene, p.side, p.triangles, p.scene_bytes,
+                      p.measured ? 1 : 0, seconds_columns(p.timing), p.timing.repetitions,
+                      p.timing.samples, p.peak_bytes, csv_text(p.not_measured_because));
+  });
 }
 
 double growth_exponent(std::span<const ScalingPoint> points, std::string_view sweep,

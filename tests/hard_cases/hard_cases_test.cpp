@@ -6,10 +6,11 @@
 #include <regex>
 #include <sstream>
 
+#include "measure/hard_cases.hpp"
 #include "measure/registry.hpp"
+#include "tests/hard_cases/deviation_checks.hpp"
 #include "tests/hard_cases/hard_case_diagram.hpp"
 #include "tests/hard_cases/hard_case_page.hpp"
-#include "measure/hard_cases.hpp"
 
 using namespace tri::hard_cases;
 
@@ -61,12 +62,7 @@ TEST_CASE("Every top-left algorithm matches the oracle exactly on every hard cas
     if (algorithm.rule != tri::CoverageRule::top_left) continue;
     for (const auto& c : all_cases()) {
       INFO(algorithm.name << " on " << c.name);
-      const Outcome outcome = run_case(algorithm, c);
-      CHECK(outcome.error.missed == 0);
-      CHECK(outcome.error.extra == 0);
-      CHECK(outcome.error.gaps == 0);
-      CHECK(outcome.error.overdraw == 0);
-      CHECK(outcome.error.order_dependent == 0);
+      tri::testing::check_no_deviation(run_case(algorithm, c).error);
     }
   }
 }
