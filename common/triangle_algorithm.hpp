@@ -51,6 +51,14 @@ class BatchRenderer {
 /// Makes an algorithm's BatchRenderer.
 using MakeRendererFunction = std::unique_ptr<BatchRenderer> (*)();
 
+/// One of chapter 08's narrow canvases (step 8: index8 or mask1) with what to write into it;
+/// defined there, where it is drawn.
+struct NarrowTarget;
+
+/// Draws many triangles into a narrow target as if one after the other. Called only with
+/// triangles that passed validate_triangle.
+using DrawNarrowFunction = void (*)(NarrowTarget& target, std::span<const SceneTriangle> triangles);
+
 /// A registered triangle algorithm.
 struct TriangleAlgorithm {
   std::string_view name;     ///< stable name, e.g. "scanline_single_loop"
@@ -70,7 +78,9 @@ struct TriangleAlgorithm {
   /// triangle).
   DrawTriangleRowsFunction draw_rows = nullptr;
   Outputs outputs = colour_outputs;  ///< what it writes (narrow_outputs: chapter 08's step 8 too)
-  Role role = Role::none;            ///< a part a measuring program gives it, if any
+  /// With narrow_outputs: how it draws the narrow canvases.
+  DrawNarrowFunction draw_narrow = nullptr;
+  Role role = Role::none;  ///< a part a measuring program gives it, if any
 };
 
 /// The algorithm whose registration declares this role, or nullptr.

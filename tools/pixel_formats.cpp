@@ -78,58 +78,80 @@ PixelFormat narrowest_format(const Scene& scene, const Drawable& drawable) {
 }
 
 struct NarrowRender::State {
-  std::vector<SceneTriangle> triangles;
+  PreparedBatch triangles;             // validated once, drawn every frame
   std::vector<Color> palette;          // palette[0] is the background
-  std::vector<std::uint8_t> index_of;  // each triangle's palette index
+  std::vector<std::uint8_t> index_of;  // each accepted triangle's palette index
   ch08::IndexCanvas indices;
   ch08::MaskCanvas mask;
+  NarrowTarget target;
 };
 
-NarrowRender::NarrowRender(const Scene& scene, PixelFormat format)
-    : scene_(scene), format_(format) {
+NarrowRender::NarrowRender(const Scene& scene, PixelFormat format,
+                           const TriangleAlgorithm& algorithm)
+    : scene_(scene), format_(format), algorithm_(algorithm) {
   const bool bytes = format == PixelFormat::index8;
-  state_ = std::make_unique<State>(State{scene_triangles(scene),
+  state_ = std::make_unique<State>(State{PreparedBatch(scene_triangles(scene)),
                                          {scene.background},
                                          {},
                                          ch08::IndexCanvas(bytes ? scene.width : 0, scene.height),
-                                         ch08::MaskCanvas(bytes ? 0 : scene.width, scene.height)});
+                                         ch08::MaskCanvas(bytes ? 0 : scene.width, scene.height),
+                                         {}});
   for (const Color& c : triangle_colors(scene)) state_->palette.push_back(c);
-  for (const SceneTriangle& t : state_->triangles) {
+  for (const SceneTriangle& t : state_->triangles.triangles()) {
     const auto at = std::find(state_->palette.begin() + 1, state_->palette.end(), t.color);
     state_->index_of.push_back(static_cast<std::uint8_t>(at - state_->palette.begin()));
+  }
+  if (bytes) {
+    state_->target = {.indices = &state_->indices, .index_of = state_->index_of};
+  } else {
+    state_->target = {.mask = &state_->mask};
   }
 }
 
 NarrowRender::~NarrowRender() = default;
 
 std::size_t NarrowRender::draw(const ProgressFunction& on_progress) {
-  std::size_t refused = 0;
+  const std::span<const SceneTriangle> triangles = state_->triangles.triangles();
+  if (!on_progress) {
+    algorithm_.draw_narrow(state_->target, triangles);
+    return state_->triangles.refused();
+  }
+  // With progress: runs of at most progress_every triangles through the algorithm's narrow draw,
+  // and a huge triangle alone, in bands of rows of step 8's spans (the same pixels), a report
+  // after each band.
   const int width = scene_.width, height = scene_.height;
-  for (std::size_t i = 0; i < state_->triangles.size(); ++i) {
-    const Triangle& t = state_->triangles[i].vertices;
-    const std::uint8_t index = state_->index_of[i];
-    const int rows = on_progress ? band_rows_for(t, width, height) : 0;
-    if (validate_triangle(t) != DrawResult::drawn) {
-      ++refused;
-    } else if (rows > 0) {  // a huge triangle in bands of rows, a report after each
+  std::size_t run_start = 0;
+  const auto draw_run = [&](std::size_t end) {
+    if (end == run_start) return;
+    NarrowTarget part = state_->target;
+    if (format_ == PixelFormat::index8) part.index_of = part.index_of.subspan(run_start);
+    algorithm_.draw_narrow(part, triangles.subspan(run_start, end - run_start));
+    run_start = end;
+    on_progress(static_cast<double>(end));
+  };
+  for (std::size_t i = 0; i < triangles.size(); ++i) {
+    const Triangle& t = triangles[i].vertices;
+    const int rows = band_rows_for(t, width, height);
+    if (rows > 0) {
+      draw_run(i);
       for_each_band(
           t, width, height, rows,
           [&](int first, int last) {
             if (format_ == PixelFormat::index8) {
-              ch08::draw_triangle_spans_index8_rows(state_->indices, t, index, first, last);
+              ch08::draw_triangle_spans_index8_rows(state_->indices, t, state_->index_of[i], first,
+                                                    last);
             } else {
               ch08::draw_triangle_spans_mask1_rows(state_->mask, t, first, last);
             }
           },
           [&](double share) { on_progress(static_cast<double>(i) + share); });
-    } else if (format_ == PixelFormat::index8) {
-      ch08::draw_triangle_spans_index8(state_->indices, t, index);
-    } else {
-      ch08::draw_triangle_spans_mask1(state_->mask, t);
+      run_start = i + 1;
+    } else if (i + 1 - run_start == progress_every) {
+      draw_run(i + 1);
     }
-    if (on_progress && (i + 1) % progress_every == 0) on_progress(static_cast<double>(i + 1));
   }
-  return refused;
+  draw_run(triangles.size());
+  return state_->triangles.refused();
 }
 
 Canvas NarrowRender::expanded() const {

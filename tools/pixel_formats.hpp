@@ -2,7 +2,7 @@
 /// raster --format: the pixel formats a scene can be drawn in (docs/DESIGN.md section 9). RGBA8 is
 /// the shared canvas; index8 (one byte per pixel, a palette of the scene's colours) and mask1 (one
 /// bit per pixel, for a one-colour scene) are chapter 08's step 8 canvases, drawn by the drawables
-/// that declare those outputs (chapter 08's span walker).
+/// that declare those outputs, through their draw_narrow entry (chapter 08's span walker).
 #pragma once
 
 #include <cstddef>
@@ -40,21 +40,23 @@ std::optional<std::string> format_refusal(const Scene& scene, PixelFormat format
 /// --format auto: the narrowest format that holds the scene and that the drawable draws.
 PixelFormat narrowest_format(const Scene& scene, const Drawable& drawable);
 
-/// A narrow format's draw of the scene's triangles (validated as draw_triangles does), kept ready
-/// to repeat for --bench; expanded() gives the RGBA8 canvas it stands for, the same pixels as an
-/// RGBA8 draw by a drawable that declares the narrow formats.
+/// A narrow format's draw of the scene's triangles (validated once, as draw_triangles does) with
+/// an algorithm's draw_narrow entry, kept ready to repeat for --bench; expanded() gives the RGBA8
+/// canvas it stands for, the same pixels as an RGBA8 draw by a drawable that declares the narrow
+/// formats.
 class NarrowRender {
  public:
-  /// Prepares the canvas and palette (precondition: format_refusal(scene, format) is empty and
-  /// format is not rgba8).
-  NarrowRender(const Scene& scene, PixelFormat format);
+  /// Prepares the triangles, canvas and palette (preconditions: format_refusal(scene, format) is
+  /// empty, format is not rgba8 and the algorithm has a draw_narrow entry).
+  NarrowRender(const Scene& scene, PixelFormat format, const TriangleAlgorithm& algorithm);
   ~NarrowRender();
   NarrowRender(const NarrowRender&) = delete;
   NarrowRender& operator=(const NarrowRender&) = delete;
 
   /// Draws every valid triangle; returns how many were refused (non-finite or out of range).
   /// on_progress hears how many triangles are done every progress_every triangles and after each
-  /// band of rows of a huge triangle (render_scene's band_rows_for), which is then drawn in bands.
+  /// band of rows of a huge triangle (render_scene's band_rows_for), which is then drawn in bands
+  /// of step 8's spans.
   std::size_t draw(const ProgressFunction& on_progress = {});
   static constexpr std::size_t progress_every = 4096;
   /// The RGBA8 picture: the background where no triangle drew, else the triangle's colour.
@@ -64,6 +66,7 @@ class NarrowRender {
   struct State;
   const Scene& scene_;
   PixelFormat format_;
+  const TriangleAlgorithm& algorithm_;
   std::unique_ptr<State> state_;
 };
 

@@ -58,33 +58,50 @@ TEST_CASE("index8 and mask1 expand to the RGBA8 pixels on seeded random scenes",
           "[raster][format]") {
   const auto drawables = tri::registered_drawables();
   const auto narrow_drawers = tri::drawables_writing(drawables, tri::Output::index8);
-  REQUIRE(narrow_drawers.size() == 1);  // NarrowRender draws with chapter 08's one span walker
-  REQUIRE(narrow_drawers.front()->writes(tri::Output::mask1));
-  const tri::TriangleAlgorithm* spans = narrow_drawers.front()->colours;
-  REQUIRE(spans != nullptr);
-  tri::Random random(23);
-  std::size_t refusals = 0;
-  int mask1_scenes = 0;
-  for (int trial = 0; trial < 120; ++trial) {
-    const int colors = trial % 3 == 0 ? 1 : random.integer(2, 255);
-    const tri::Scene scene = random_scene(random, colors);
-    tri::Canvas rgba(scene.width, scene.height, scene.background);
-    const std::size_t refused = tri::render_scene(scene, spans, rgba).rejected_triangles;
-    refusals += refused;
-    mask1_scenes += !tri::format_refusal(scene, tri::PixelFormat::mask1);
-    for (const tri::PixelFormat format : {tri::PixelFormat::index8, tri::PixelFormat::mask1}) {
-      if (tri::format_refusal(scene, format)) continue;  // mask1 holds one colour only
-      CAPTURE(trial, tri::format_name(format), scene.width, scene.height);
-      tri::NarrowRender narrow(scene, format);
-      CHECK(narrow.draw() == refused);
-      const tri::Canvas expanded = narrow.expanded();
-      int differing = 0;
-      for (int y = 0; y < scene.height; ++y) {
-        for (int x = 0; x < scene.width; ++x) differing += expanded.pixel(x, y) != rgba.pixel(x, y);
+  // NarrowRender draws with each one's draw_narrow entry: chapter 08's span walker, alone and
+  // after the batched setup.
+  REQUIRE(narrow_drawers.size() == 2);
+  for (const tri::Drawable* drawer : narrow_drawers) {
+    REQUIRE(drawer->writes(tri::Output::mask1));
+    const tri::TriangleAlgorithm* algorithm = drawer->colours;
+    REQUIRE(algorithm != nullptr);
+    REQUIRE(algorithm->draw_narrow != nullptr);
+    CAPTURE(algorithm->name);
+    tri::Random random(23);
+    std::size_t refusals = 0;
+    int mask1_scenes = 0;
+    for (int trial = 0; trial < 120; ++trial) {
+      const int colors = trial % 3 == 0 ? 1 : random.integer(2, 255);
+      const tri::Scene scene = random_scene(random, colors);
+      tri::Canvas rgba(scene.width, scene.height, scene.background);
+      const std::size_t refused = tri::render_scene(scene, algorithm, rgba).rejected_triangles;
+      refusals += refused;
+      mask1_scenes += !tri::format_refusal(scene, tri::PixelFormat::mask1);
+      for (const tri::PixelFormat format : {tri::PixelFormat::index8, tri::PixelFormat::mask1}) {
+        if (tri::format_refusal(scene, format)) continue;  // mask1 holds one colour only
+        CAPTURE(trial, tri::format_name(format), scene.width, scene.height);
+        tri::NarrowRender narrow(scene, format, *algorithm);
+        CHECK(narrow.draw() == refused);
+        const tri::Canvas expanded = narrow.expanded();
+        int differing = 0;
+        for (int y = 0; y < scene.height; ++y) {
+          for (int x = 0; x < scene.width; ++x) {
+            differing += expanded.pixel(x, y) != rgba.pixel(x, y);
+          }
+        }
+        CHECK(differing == 0);
       }
-      CHECK(differing == 0);
     }
+    CHECK(refusals > 0);  // the NaN vertices were drawn too
+    CHECK(mask1_scenes >= 30);
   }
-  CHECK(refusals > 0);  // the NaN vertices were drawn too
-  CHECK(mask1_scenes >= 30);
+}
+
+TEST_CASE("Every registered drawable that declares the narrow formats has a narrow draw",
+          "[raster][format]") {
+  for (const tri::Drawable& d : tri::registered_drawables()) {
+    CAPTURE(d.name);
+    const bool narrow = d.writes(tri::Output::index8) || d.writes(tri::Output::mask1);
+    CHECK(narrow == (d.colours != nullptr && d.colours->draw_narrow != nullptr));
+  }
 }

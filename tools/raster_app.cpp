@@ -285,7 +285,7 @@ int run_narrow(const CliArguments& args, const Scene& scene, const TriangleAlgor
   const Preparation preparation = prepare([&] {
     allocating("the " + std::string(format_name(format)) + " pixels of " + canvas_words(scene),
                pixel_count(scene) / (format == PixelFormat::mask1 ? 8 : 1),
-               "the scene's canvas size", [&] { made.emplace(scene, format); });
+               "the scene's canvas size", [&] { made.emplace(scene, format, algorithm); });
   });
   NarrowRender& render = *made;
   if (frames) {

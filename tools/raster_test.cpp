@@ -612,8 +612,9 @@ TEST_CASE(
     CHECK(read_file(previous) == "the earlier picture");
   };
   const std::string scene = three.string(), out = previous.string();
-  refused({"--algo", "fast_hybrid", "--scene", scene, "--format", "mask1", "--out", out}, 2,
-          "fast_hybrid draws RGBA8 only; index8 and mask1 are drawn by fast_spans");
+  refused(
+      {"--algo", "fast_hybrid", "--scene", scene, "--format", "mask1", "--out", out}, 2,
+      "fast_hybrid draws RGBA8 only; index8 and mask1 are drawn by fast_spans and fast_batched");
   refused({"--algo", "fast_spans", "--scene", scene, "--format", "mask1", "--out", out}, 1,
           "mask1 holds 1 colour besides the background, and the scene's triangles have 3");
   refused({"--algo", "fast_spans", "--scene", scene, "--format", "index8", "--counts", out}, 2,

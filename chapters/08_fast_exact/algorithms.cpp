@@ -7,6 +7,7 @@
 #include "chapters/08_fast_exact/blocks.hpp"
 #include "chapters/08_fast_exact/hybrid.hpp"
 #include "chapters/08_fast_exact/incremental.hpp"
+#include "chapters/08_fast_exact/narrow_canvases.hpp"
 #include "chapters/08_fast_exact/simd.hpp"
 #include "chapters/08_fast_exact/spans.hpp"
 #include "chapters/08_fast_exact/threaded.hpp"
@@ -32,8 +33,10 @@ constexpr TriangleAlgorithm variant(std::string_view name, std::string_view summ
 }
 
 // The variant that also draws step 8's narrow canvases (index8, mask1).
-constexpr TriangleAlgorithm with_narrow_formats(TriangleAlgorithm algorithm) {
+constexpr TriangleAlgorithm with_narrow_formats(TriangleAlgorithm algorithm,
+                                                DrawNarrowFunction draw_narrow) {
   algorithm.outputs = narrow_outputs;
+  algorithm.draw_narrow = draw_narrow;
   return algorithm;
 }
 
@@ -62,11 +65,14 @@ std::span<const TriangleAlgorithm> triangle_algorithms() {
                   "fast_incremental testing the OR of the three edge values: one branch per pixel",
                   draw_triangle_all_edges),
           draw_triangle_all_edges_rows),
-      with_narrow_formats(with_rows(
-          variant("fast_spans",
+      with_narrow_formats(
+          with_rows(
+              variant(
+                  "fast_spans",
                   "exact first and last covered pixel per row (division-free walker), spans filled",
                   draw_triangle_spans),
-          draw_triangle_spans_rows)),
+              draw_triangle_spans_rows),
+          draw_narrow_spans),
       with_rows(variant("fast_blocks_8x8",
                         "8x8 blocks: outside skipped, inside filled, partial ones tested per pixel",
                         draw_triangle_blocks_8x8),
@@ -88,12 +94,14 @@ std::span<const TriangleAlgorithm> triangle_algorithms() {
               "fast_hybrid per tile: the batch binned into tiles, which hardware_concurrency "
               "threads (started once, kept between batches) take one at a time",
               draw_triangle_hybrid, nullptr, true, make_tiled_renderer),
-      with_rows(
-          variant("fast_batched",
-                  "fast_hybrid with the setup of eight triangles at once in vector lanes, then "
-                  "each filled in order",
-                  draw_triangle_batched, draw_batch_batched),
-          draw_triangle_hybrid_rows),
+      with_narrow_formats(
+          with_rows(
+              variant("fast_batched",
+                      "fast_hybrid with the setup of eight triangles at once in vector lanes, then "
+                      "each filled in order",
+                      draw_triangle_batched, draw_batch_batched),
+              draw_triangle_hybrid_rows),
+          draw_narrow_batched),
   });
   return algorithms;
 }

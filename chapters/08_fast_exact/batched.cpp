@@ -6,7 +6,9 @@
 
 #include "chapters/08_fast_exact/hybrid.hpp"
 #include "chapters/08_fast_exact/instruction_sets.hpp"
+#include "chapters/08_fast_exact/narrow_canvases.hpp"
 #include "chapters/08_fast_exact/pixel_writers.hpp"
+#include "chapters/08_fast_exact/spans.hpp"
 #include "chapters/08_fast_exact/tiled.hpp"
 
 // The lane functions take and return vectors by value, and AVX2's are 32 bytes wide. GCC and
@@ -216,19 +218,11 @@ void set_up_lanes(std::span<const SceneTriangle> triangles, int width, int heigh
 template <PixelWriter Writer>
 void draw_group(Canvas& canvas, std::span<const SceneTriangle> group, int row_end,
                 SetupLanes& lanes, InstructionSet set) {
-  const int width = canvas.width(), height = canvas.height();
-  set_up_lanes(group, width, height, lanes, set);
-  for (std::size_t i = 0; i < std::min<std::size_t>(group.size(), setup_lanes); ++i) {
-    if (lanes.result[i] == LaneResult::set_up) {
-      Writer writer(canvas, group[i].color, row_end);
-      fill_hybrid(lanes.setup(static_cast<int>(i)), writer);
-    } else if (lanes.result[i] == LaneResult::scalar) {
-      const auto setup = setup_triangle(group[i].vertices, width, height);
-      if (!setup) continue;
-      Writer writer(canvas, group[i].color, row_end);
-      fill_hybrid(*setup, writer);
-    }
-  }
+  for_each_group_setup(group, canvas.width(), canvas.height(), lanes, set,
+                       [&](std::size_t i, const TriangleSetup& setup) {
+                         Writer writer(canvas, group[i].color, row_end);
+                         fill_hybrid(setup, writer);
+                       });
 }
 // [/listing]
 
@@ -271,6 +265,26 @@ void draw_batch_batched(Canvas& canvas, std::span<const SceneTriangle> triangles
   }
   draw_batch_batched_with(canvas, triangles, widest_instruction_set());
 }
+
+void draw_narrow_batched(NarrowTarget& target, std::span<const SceneTriangle> triangles) {
+  draw_narrow_batched_with(target, triangles, widest_instruction_set());
+}
+
+// [listing draw_narrow_batched]
+void draw_narrow_batched_with(NarrowTarget& target, std::span<const SceneTriangle> triangles,
+                              InstructionSet set) {
+  SetupLanes lanes;
+  for (std::size_t first = 0; first < triangles.size(); first += setup_lanes) {
+    const auto group = triangles.subspan(first).first(
+        std::min<std::size_t>(triangles.size() - first, setup_lanes));
+    for_each_group_setup(group, target.width(), target.height(), lanes, set,
+                         [&](std::size_t i, const TriangleSetup& setup) {
+                           target.with_writer(first + i,
+                                              [&](auto& writer) { fill_spans(setup, writer); });
+                         });
+  }
+}
+// [/listing]
 
 void draw_batch_batched_with(Canvas& canvas, std::span<const SceneTriangle> triangles,
                              InstructionSet set) {

@@ -4,6 +4,7 @@
 /// each triangle filled in submission order by step 6's fill_hybrid.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -68,6 +69,22 @@ struct SetupLanes {
 void set_up_lanes(std::span<const SceneTriangle> triangles, int width, int height,
                   SetupLanes& lanes, InstructionSet set = widest_instruction_set()) noexcept;
 
+/// set_up_lanes for the first min(setup_lanes, size) triangles of `group`, then visit(i, setup)
+/// for each triangle i that covers a pixel, in order (a lane's setup, or setup_triangle's for a
+/// vertex beyond max_lane_coordinate); `lanes` is the caller's scratch.
+template <class Visit>
+void for_each_group_setup(std::span<const SceneTriangle> group, int width, int height,
+                          SetupLanes& lanes, InstructionSet set, Visit&& visit) {
+  set_up_lanes(group, width, height, lanes, set);
+  for (std::size_t i = 0; i < std::min<std::size_t>(group.size(), setup_lanes); ++i) {
+    if (lanes.result[i] == LaneResult::set_up) {
+      visit(i, lanes.setup(static_cast<int>(i)));
+    } else if (lanes.result[i] == LaneResult::scalar) {
+      if (const auto setup = setup_triangle(group[i].vertices, width, height)) visit(i, *setup);
+    }
+  }
+}
+
 /// Step 10 · one group: set_up_lanes for the first min(setup_lanes, size) triangles of `group`,
 /// then fill_hybrid for each in order with a Writer whose rows end at `row_end` (the canvas
 /// width, or a tile's right border); `lanes` is the caller's scratch.
@@ -92,6 +109,14 @@ inline constexpr std::size_t tiled_batch_triangles = 64;
 /// for each of them in submission order, so the pixels are draw_batch_hybrid's; on a large
 /// canvas (tiled_canvas_pixels, tiled_batch_triangles), the same through step 9's tiles.
 void draw_batch_batched(Canvas& canvas, std::span<const SceneTriangle> triangles);
+/// Step 10 · a batch into one of step 8's narrow canvases: set_up_lanes for each group of
+/// setup_lanes triangles, then fill_spans through the narrow writer for each, in order (the
+/// registry's draw_narrow entry of fast_batched): the pixels of draw_narrow_spans.
+void draw_narrow_batched(NarrowTarget& target, std::span<const SceneTriangle> triangles);
+/// The same with the lanes' copy for `set`.
+void draw_narrow_batched_with(NarrowTarget& target, std::span<const SceneTriangle> triangles,
+                              InstructionSet set);
+
 /// The groups alone, with the lanes' copy for `set` (the tests force each the host runs).
 void draw_batch_batched_with(Canvas& canvas, std::span<const SceneTriangle> triangles,
                              InstructionSet set);

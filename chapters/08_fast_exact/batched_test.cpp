@@ -10,6 +10,7 @@
 
 #include "chapters/08_fast_exact/batched.hpp"
 #include "chapters/08_fast_exact/hybrid.hpp"
+#include "chapters/08_fast_exact/narrow_canvases.hpp"
 #include "chapters/08_fast_exact/test_triangles.hpp"
 #include "chapters/08_fast_exact/triangle_setup.hpp"
 
@@ -265,4 +266,25 @@ TEST_CASE("On a canvas larger than 1024x1024 the batched entry draws through til
       }
     }
   }
+}
+
+TEST_CASE("The batched narrow draw writes the oracle's pixels into one byte and one bit per pixel",
+          "[08_fast_exact][step10][step8]") {
+  // Overlapping triangles of every shape (later over earlier in index8), groups cut short at the
+  // batch's end, with the lanes' portable copy and the widest the host runs.
+  const auto portable = [](tri::NarrowTarget& target, std::span<const SceneTriangle> triangles) {
+    tri::ch08::draw_narrow_batched_with(target, triangles, tri::ch08::InstructionSet::portable);
+  };
+  int drawn = 0;
+  for (const auto& [count, width, height] :
+       std::vector<std::array<int, 3>>{{300, 130, 61}, {13, 45, 37}, {700, 21, 19}}) {
+    CAPTURE(count, width, height);
+    const auto scene = tri::ch08::testing::overlapping_scene(static_cast<std::uint64_t>(count),
+                                                             count, std::max(width, height));
+    for (const tri::DrawNarrowFunction draw :
+         {tri::DrawNarrowFunction{portable}, &tri::ch08::draw_narrow_batched}) {
+      CHECK(tri::ch08::testing::narrow_pixels_off_oracle(draw, scene, width, height, drawn) == 0);
+    }
+  }
+  CHECK(drawn > 10000);
 }

@@ -62,10 +62,12 @@ TEST_CASE("The chapter registers exact variants under distinct names of its own"
     CHECK(algorithm.rule == tri::CoverageRule::top_left);
     CHECK(algorithm.threaded == algorithm.name.ends_with("_threaded"));
   }
-  // Exactly one draws step 8's narrow canvases, and one is followed by the report's sweeps.
+  // Two draw step 8's narrow canvases (the span walker alone and after the batched setup), each
+  // through its narrow draw, and one is followed by the report's sweeps.
   CHECK(std::count_if(algorithms.begin(), algorithms.end(), [](const TriangleAlgorithm& a) {
-          return a.outputs.has(tri::Output::index8) && a.outputs.has(tri::Output::mask1);
-        }) == 1);
+          return a.outputs.has(tri::Output::index8) && a.outputs.has(tri::Output::mask1) &&
+                 a.draw_narrow != nullptr;
+        }) == 2);
   CHECK(tri::algorithm_with_role(algorithms, tri::Role::cost_sweeps) != nullptr);
 }
 

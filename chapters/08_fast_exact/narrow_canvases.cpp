@@ -44,6 +44,13 @@ void draw_triangle_spans_mask1(MaskCanvas& canvas, const Triangle& triangle) {
   fill_spans(*setup, writer);
 }
 
+void draw_narrow_spans(NarrowTarget& target, std::span<const SceneTriangle> triangles) {
+  for (std::size_t i = 0; i < triangles.size(); ++i) {
+    const auto setup = setup_triangle(triangles[i].vertices, target.width(), target.height());
+    if (setup) target.with_writer(i, [&](auto& writer) { fill_spans(*setup, writer); });
+  }
+}
+
 void draw_triangle_spans_index8_rows(IndexCanvas& canvas, const Triangle& triangle,
                                      std::uint8_t index, int first_row, int last_row) {
   fill_rows(canvas, triangle, first_row, last_row, IndexWriter(canvas, index));

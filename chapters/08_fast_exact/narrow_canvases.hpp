@@ -121,6 +121,40 @@ class MaskWriter {
 
 static_assert(PixelWriter<IndexWriter> && PixelWriter<MaskWriter>);
 
+}  // namespace tri::ch08
+
+namespace tri {
+
+/// A narrow canvas and what to write into it: the registry's narrow draws take one.
+struct NarrowTarget {
+  ch08::IndexCanvas* indices = nullptr;  ///< index8's canvas, or
+  ch08::MaskCanvas* mask = nullptr;      ///< mask1's
+  /// index8: each triangle's palette index, in the order of the triangles drawn.
+  std::span<const std::uint8_t> index_of = {};
+
+  int width() const noexcept { return mask != nullptr ? mask->width() : indices->width(); }
+  int height() const noexcept { return mask != nullptr ? mask->height() : indices->height(); }
+  /// Calls fill(writer) with the writer of the batch's triangle i.
+  template <class Fill>
+  void with_writer(std::size_t i, Fill&& fill) {
+    if (mask != nullptr) {
+      ch08::MaskWriter writer(*mask);
+      fill(writer);
+    } else {
+      ch08::IndexWriter writer(*indices, index_of[i]);
+      fill(writer);
+    }
+  }
+};
+
+}  // namespace tri
+
+namespace tri::ch08 {
+
+/// Step 8 · step 3's spans into a narrow target, one triangle after the other (the registry's
+/// draw_narrow entry of fast_spans).
+void draw_narrow_spans(NarrowTarget& target, std::span<const SceneTriangle> triangles);
+
 /// Step 8 · step 3's spans into one byte per pixel: the triangle's pixels set to `index`.
 void draw_triangle_spans_index8(IndexCanvas& canvas, const Triangle& triangle, std::uint8_t index);
 

@@ -5,9 +5,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
+#include <span>
 #include <vector>
 
+#include "chapters/07_exact_coverage/coverage_oracle.hpp"
+#include "chapters/08_fast_exact/narrow_canvases.hpp"
 #include "chapters/08_fast_exact/triangle_setup.hpp"
 #include "common/canvas.hpp"
 #include "common/scene.hpp"
@@ -133,6 +137,39 @@ inline bool same_canvas(const Canvas& a, const Canvas& b) {
   return std::equal(a.pixels().begin(), a.pixels().end(), b.pixels().begin(), b.pixels().end()) &&
          std::equal(a.write_counts().begin(), a.write_counts().end(), b.write_counts().begin(),
                     b.write_counts().end());
+}
+
+/// How many pixels of the index8 and mask1 canvases a narrow draw leaves differ from the oracle's
+/// drawing of the same (valid) triangles, triangle i in palette entry i % 255 + 1, later over
+/// earlier; `drawn` adds the covered pixels, so a caller can see the comparison is not empty.
+inline int narrow_pixels_off_oracle(DrawNarrowFunction draw,
+                                    std::span<const SceneTriangle> triangles, int width, int height,
+                                    int& drawn) {
+  constexpr Color background{0, 0, 0, 0};
+  const auto color_of = [](std::uint8_t index) { return Color{index, 1, 2, 255}; };
+  std::vector<std::uint8_t> index_of;
+  Canvas truth(width, height, background);
+  for (std::size_t i = 0; i < triangles.size(); ++i) {
+    index_of.push_back(static_cast<std::uint8_t>(i % 255 + 1));
+    tri::ch07::draw_triangle_oracle(truth, triangles[i].vertices, color_of(index_of.back()));
+  }
+  IndexCanvas indices(width, height);
+  MaskCanvas mask(width, height);
+  NarrowTarget index8{.indices = &indices, .index_of = index_of};
+  NarrowTarget mask1{.mask = &mask};
+  draw(index8, triangles);
+  draw(mask1, triangles);
+  int off = 0;
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      const Color want = truth.pixel(x, y);
+      const std::uint8_t index = indices.index(x, y);
+      off += (index == 0 ? background : color_of(index)) != want;
+      off += mask.covered(x, y) != (want != background);
+      drawn += want != background;
+    }
+  }
+  return off;
 }
 
 }  // namespace tri::ch08::testing
