@@ -8,6 +8,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "chapters/10_speed_vs_error/report_csv.hpp"
 #include "common/printable_text.hpp"
 #include "measure/number_format.hpp"
 #include "measure/program_run.hpp"
@@ -172,22 +173,22 @@ std::string user_path_markdown(const std::optional<UserPathComparison>& comparis
 }
 
 std::string user_path_csv(const std::optional<UserPathComparison>& comparison) {
-  std::ostringstream csv;
-  csv << "algorithm,scene,grid,triangles,frames,report_median_s,raster_median_s,raster_over_"
-         "report,raster_preparation_s,problem\n";
-  if (!comparison) return csv.str();
-  const UserPathComparison& c = *comparison;
-  csv << c.algorithm << ',' << c.scene << ',' << c.grid << ',' << c.triangles << ',';
-  csv << (c.raster ? std::to_string(c.raster->frames) : "") << ','
-      << format_number(c.report_seconds, 6) << ',';
-  if (c.raster) {
-    csv << format_number(c.raster->frame_seconds, 6) << ',' << format_number(c.ratio(), 6) << ','
-        << format_number(c.raster->preparation_seconds, 6);
-  } else {
-    csv << ",,";
-  }
-  csv << ',' << quoted(c.problem) << '\n';
-  return csv.str();
+  constexpr std::string_view header =
+      "algorithm,scene,grid,triangles,frames,report_median_s,raster_median_s,raster_over_report,"
+      "raster_preparation_s,problem";
+  std::span<const UserPathComparison> rows;
+  if (comparison) rows = {&*comparison, 1};
+  return csv_table(header, rows, [](const UserPathComparison& c) {
+    // raster's numbers, or empty fields when it was not measured.
+    const auto if_measured = [&c](auto text) { return c.raster ? text() : std::string(); };
+    return std::tuple(c.algorithm, c.scene, c.grid, c.triangles,
+                      if_measured([&c] { return std::to_string(c.raster->frames); }),
+                      format_number(c.report_seconds, 6),
+                      if_measured([&c] { return format_number(c.raster->frame_seconds, 6); }),
+                      if_measured([&c] { return format_number(c.ratio(), 6); }),
+                      if_measured([&c] { return format_number(c.raster->preparation_seconds, 6); }),
+                      quoted(c.problem));
+  });
 }
 
 }  // namespace tri::ch10
