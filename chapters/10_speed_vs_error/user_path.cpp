@@ -3,13 +3,13 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
-#include <fstream>
 #include <map>
 #include <sstream>
 #include <stdexcept>
 
 #include "chapters/10_speed_vs_error/report_csv.hpp"
 #include "common/printable_text.hpp"
+#include "common/temporary_folder.hpp"
 #include "measure/number_format.hpp"
 #include "measure/program_run.hpp"
 #include "measure/scene_generators.hpp"
@@ -126,10 +126,8 @@ std::optional<UserPathComparison> measure_user_path(const BenchReport& report,
       "raster --algo " + comparison.algorithm + " --scene " + file_name + " --bench " + frames;
   try {
     const TemporaryFolder folder("tri_user_path");
-    const auto scene_file = folder.path() / file_name;
-    std::ofstream out(scene_file, std::ios::binary);
-    if (!(out << scene_text(generate_scene(suite->recipe))).flush())
-      throw std::runtime_error("cannot write the scene file " + scene_file.string());
+    const auto scene_file = folder / file_name;
+    write_scene_file(scene_file, generate_scene(suite->recipe));
     const ProgramRun run = run_program({raster_program.string(), "--algo", comparison.algorithm,
                                         "--scene", scene_file.string(), "--bench", frames});
     if (!run.succeeded()) {
