@@ -90,18 +90,6 @@ long long user_path_frames(double report_seconds, double budget_seconds) noexcep
       std::clamp(std::round(budget_seconds / report_seconds), 21.0, 2001.0));
 }
 
-double user_path_budget_seconds(SuiteSize size) noexcept {
-  switch (size) {
-    case SuiteSize::tiny:
-      return 0.001;
-    case SuiteSize::quick:
-      return 0.1;
-    case SuiteSize::full:
-      return 0.5;
-  }
-  return 0.1;
-}
-
 std::optional<UserPathComparison> measure_user_path(const BenchReport& report,
                                                     const TriangleAlgorithm& algorithm,
                                                     std::span<const SuiteScene> scenes,
