@@ -3,6 +3,8 @@
 #include <array>
 #include <charconv>
 #include <cmath>
+#include <fstream>
+#include <stdexcept>
 #include <variant>
 
 namespace tri {
@@ -33,6 +35,12 @@ std::string scene_text(const Scene& scene) {
     text += " " + colour(t->color) + "\n";
   }
   return text;
+}
+
+void write_scene_file(const std::filesystem::path& path, const Scene& scene) {
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  if (!(out << scene_text(scene)).flush())
+    throw std::runtime_error("cannot write the scene file " + path.string());
 }
 
 }  // namespace tri

@@ -4,6 +4,7 @@
 /// coordinate is written as `nan`, `inf` or `-inf`.
 #pragma once
 
+#include <filesystem>
 #include <string>
 
 #include "common/scene.hpp"
@@ -14,5 +15,8 @@ namespace tri {
 /// shortest decimals that read back exactly. Lines of the scene are left out (the
 /// suites have none).
 std::string scene_text(const Scene& scene);
+
+/// Writes scene_text(scene) to the file, replacing it; throws std::runtime_error when it cannot.
+void write_scene_file(const std::filesystem::path& path, const Scene& scene);
 
 }  // namespace tri

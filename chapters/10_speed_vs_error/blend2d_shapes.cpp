@@ -213,8 +213,8 @@ std::string blend2d_shapes_csv(std::span<const ShapeRate> rows) {
   return csv_table(header, rows, [](const ShapeRate& r) {
     return std::tuple(r.drawer, r.chapter, writes_name(r.writes), r.box_side,
                       canvas_column(blend2d_canvas_width, blend2d_canvas_height), r.triangles,
-                      r.timing.repetitions, r.timing.samples, r.timing.seconds.median,
-                      r.timing.seconds.min, r.timing.seconds.max, r.calls_per_ms());
+                      r.timing.repetitions, r.timing.samples, seconds_columns(r.timing),
+                      r.calls_per_ms());
   });
 }
 

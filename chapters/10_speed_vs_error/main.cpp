@@ -145,9 +145,9 @@ int main(int argc, char** argv) {
         // One algorithm timed again through `raster --bench`, the way a user times it.
         std::optional<tri::ch10::UserPathComparison> user_path;
         if (const auto* algorithm = tri::ch10::user_path_algorithm(selection.algorithms)) {
-          user_path = tri::ch10::measure_user_path(
-              report, *algorithm, settings.scenes, args.value_or("raster", TUTORIAL_RASTER_PROGRAM),
-              tri::ch10::user_path_budget_seconds(size), std::cout);
+          user_path = tri::ch10::measure_user_path(report, *algorithm, settings.scenes,
+                                                   args.value_or("raster", TUTORIAL_RASTER_PROGRAM),
+                                                   settings.user_path_budget_seconds, std::cout);
         }
         const tri::ch10::CoverageReport coverage{
             tri::ch10::run_coverage_benchmark(selection.area_algorithms, selection.coverage_peers,

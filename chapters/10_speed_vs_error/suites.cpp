@@ -39,13 +39,14 @@ struct SizeSpec {
   int side;  // square canvas
   TimingPlan timing;
   int reference_canvas_sides[2];  // 0: none
+  double user_path_budget_seconds;
 };
 
 // The sizes in SuiteSize's order; tiny is timed once with one sample: the tests check the format.
 constexpr std::array<SizeSpec, 3> specs{{
-    {"tiny", 32, {0.0, 1, 1}, {64, 0}},
-    {"quick", 256, {0.01, 3, 1 << 20}, {512, 4096}},
-    {"full", 512, {0.02, 7, 1 << 22}, {512, 4096}},
+    {"tiny", 32, {0.0, 1, 1}, {64, 0}, 0.001},
+    {"quick", 256, {0.01, 3, 1 << 20}, {512, 4096}, 0.1},
+    {"full", 512, {0.02, 7, 1 << 22}, {512, 4096}, 0.5},
 }};
 
 // The index of a size in specs and in every kind's sizes; an unknown size reads as quick.
@@ -99,6 +100,7 @@ BenchSettings bench_settings(SuiteSize size) {
   settings.size = size;
   settings.scenes = scene_suite(size);
   settings.timing = spec.timing;
+  settings.user_path_budget_seconds = spec.user_path_budget_seconds;
   for (const int side : spec.reference_canvas_sides) {
     if (side != 0) settings.reference_canvas_sides.push_back(side);
   }

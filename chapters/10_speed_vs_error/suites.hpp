@@ -39,6 +39,8 @@ struct BenchSettings {
   std::size_t error_triangle_limit = 0;
   /// Square canvases whose one-thread write ceiling the report quotes beside the suite's.
   std::vector<int> reference_canvas_sides;
+  /// The seconds of frames `raster --bench` draws for the user's path (user_path.hpp).
+  double user_path_budget_seconds = 0.1;
 };
 
 /// The settings of a suite size.

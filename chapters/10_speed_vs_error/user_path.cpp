@@ -3,12 +3,13 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
-#include <fstream>
 #include <map>
 #include <sstream>
 #include <stdexcept>
 
+#include "chapters/10_speed_vs_error/report_csv.hpp"
 #include "common/printable_text.hpp"
+#include "common/temporary_folder.hpp"
 #include "measure/number_format.hpp"
 #include "measure/program_run.hpp"
 #include "measure/scene_generators.hpp"
@@ -89,18 +90,6 @@ long long user_path_frames(double report_seconds, double budget_seconds) noexcep
       std::clamp(std::round(budget_seconds / report_seconds), 21.0, 2001.0));
 }
 
-double user_path_budget_seconds(SuiteSize size) noexcept {
-  switch (size) {
-    case SuiteSize::tiny:
-      return 0.001;
-    case SuiteSize::quick:
-      return 0.1;
-    case SuiteSize::full:
-      return 0.5;
-  }
-  return 0.1;
-}
-
 std::optional<UserPathComparison> measure_user_path(const BenchReport& report,
                                                     const TriangleAlgorithm& algorithm,
                                                     std::span<const SuiteScene> scenes,
@@ -125,10 +114,8 @@ std::optional<UserPathComparison> measure_user_path(const BenchReport& report,
       "raster --algo " + comparison.algorithm + " --scene " + file_name + " --bench " + frames;
   try {
     const TemporaryFolder folder("tri_user_path");
-    const auto scene_file = folder.path() / file_name;
-    std::ofstream out(scene_file, std::ios::binary);
-    if (!(out << scene_text(generate_scene(suite->recipe))).flush())
-      throw std::runtime_error("cannot write the scene file " + scene_file.string());
+    const auto scene_file = folder / file_name;
+    write_scene_file(scene_file, generate_scene(suite->recipe));
     const ProgramRun run = run_program({raster_program.string(), "--algo", comparison.algorithm,
                                         "--scene", scene_file.string(), "--bench", frames});
     if (!run.succeeded()) {
@@ -172,22 +159,22 @@ std::string user_path_markdown(const std::optional<UserPathComparison>& comparis
 }
 
 std::string user_path_csv(const std::optional<UserPathComparison>& comparison) {
-  std::ostringstream csv;
-  csv << "algorithm,scene,grid,triangles,frames,report_median_s,raster_median_s,raster_over_"
-         "report,raster_preparation_s,problem\n";
-  if (!comparison) return csv.str();
-  const UserPathComparison& c = *comparison;
-  csv << c.algorithm << ',' << c.scene << ',' << c.grid << ',' << c.triangles << ',';
-  csv << (c.raster ? std::to_string(c.raster->frames) : "") << ','
-      << format_number(c.report_seconds, 6) << ',';
-  if (c.raster) {
-    csv << format_number(c.raster->frame_seconds, 6) << ',' << format_number(c.ratio(), 6) << ','
-        << format_number(c.raster->preparation_seconds, 6);
-  } else {
-    csv << ",,";
-  }
-  csv << ',' << quoted(c.problem) << '\n';
-  return csv.str();
+  constexpr std::string_view header =
+      "algorithm,scene,grid,triangles,frames,report_median_s,raster_median_s,raster_over_report,"
+      "raster_preparation_s,problem";
+  std::span<const UserPathComparison> rows;
+  if (comparison) rows = {&*comparison, 1};
+  return csv_table(header, rows, [](const UserPathComparison& c) {
+    // raster's numbers, or empty fields when it was not measured.
+    const auto if_measured = [&c](auto text) { return c.raster ? text() : std::string(); };
+    return std::tuple(c.algorithm, c.scene, c.grid, c.triangles,
+                      if_measured([&c] { return std::to_string(c.raster->frames); }),
+                      format_number(c.report_seconds, 6),
+                      if_measured([&c] { return format_number(c.raster->frame_seconds, 6); }),
+                      if_measured([&c] { return format_number(c.ratio(), 6); }),
+                      if_measured([&c] { return format_number(c.raster->preparation_seconds, 6); }),
+                      quoted(c.problem));
+  });
 }
 
 }  // namespace tri::ch10

@@ -65,9 +65,6 @@ std::optional<UserPathComparison> measure_user_path(const BenchReport& report,
                                                     const std::filesystem::path& raster_program,
                                                     double budget_seconds, std::ostream& progress);
 
-/// The seconds of frames a run of this size gives `raster --bench`.
-double user_path_budget_seconds(SuiteSize size) noexcept;
-
 /// The Markdown section "The user's path" (empty without a comparison): both times and their
 /// ratio, or why `raster` was not measured.
 std::string user_path_markdown(const std::optional<UserPathComparison>& comparison);

@@ -1,46 +1,31 @@
 #include "tests/support/scratch_folder.hpp"
 
 #include <fcntl.h>
-#include <stdlib.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cctype>
-#include <cerrno>
-#include <cstring>
 #include <fstream>
-#include <iterator>
-#include <stdexcept>
 #include <vector>
 
 namespace tri::testing {
 
 namespace fs = std::filesystem;
 
-ScratchFolder::ScratchFolder(const std::string& name) {
-  std::string safe = name;
+namespace {
+
+// The folder's prefix: "tri_", then the name with every character but letters, digits and '_'
+// replaced by '_'.
+std::string scratch_prefix(std::string name) {
   std::replace_if(
-      safe.begin(), safe.end(), [](unsigned char c) { return std::isalnum(c) == 0 && c != '_'; },
+      name.begin(), name.end(), [](unsigned char c) { return std::isalnum(c) == 0 && c != '_'; },
       '_');
-  const std::string pattern = (fs::temp_directory_path() / ("tri_" + safe + "_XXXXXX")).string();
-  std::vector<char> text(pattern.begin(), pattern.end());
-  text.push_back('\0');
-  if (::mkdtemp(text.data()) == nullptr) {
-    throw std::runtime_error("cannot create a scratch folder " + pattern + ": " +
-                             std::strerror(errno));
-  }
-  path_ = text.data();
+  return "tri_" + name;
 }
 
-ScratchFolder::~ScratchFolder() {
-  std::error_code ignored;
-  fs::remove_all(path_, ignored);
-}
+}  // namespace
 
-std::string read_text(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+ScratchFolder::ScratchFolder(const std::string& name) : TemporaryFolder(scratch_prefix(name)) {}
 
 void write_text(const fs::path& path, std::string_view text) {
   std::ofstream(path, std::ios::binary) << text;

@@ -8,27 +8,22 @@
 #include <string_view>
 #include <vector>
 
+#include "common/temporary_folder.hpp"
+
 namespace tri::testing {
 
-/// A new folder under the system's temporary folder (TMPDIR when set), named after the test and
-/// made unique by mkdtemp, removed with everything in it when the object goes.
-class ScratchFolder {
+/// A TemporaryFolder named after the test (`tri_NAME_XXXXXX`), removed with everything in it when
+/// the object goes.
+class ScratchFolder : public TemporaryFolder {
  public:
   /// `name` only helps a reader find the folder: letters, digits and '_' are kept as given.
   explicit ScratchFolder(const std::string& name = "test");
-  ScratchFolder(const ScratchFolder&) = delete;
-  ScratchFolder& operator=(const ScratchFolder&) = delete;
-  ~ScratchFolder();
-
-  const std::filesystem::path& path() const { return path_; }
-  std::filesystem::path operator/(const std::filesystem::path& name) const { return path_ / name; }
-
- private:
-  std::filesystem::path path_;
 };
 
 /// The bytes of a file as a string (empty when it cannot be read).
-std::string read_text(const std::filesystem::path& path);
+inline std::string read_text(const std::filesystem::path& path) {
+  return whole_file(path);
+}
 
 /// Writes text to a file as it is, replacing it.
 void write_text(const std::filesystem::path& path, std::string_view text);

@@ -1,5 +1,6 @@
 #include "tools/listings/listings.hpp"
 
+#include "tools/listings/markdown_syntax.hpp"
 #include "tools/listings/measured.hpp"
 #include "tools/listings/unmarked.hpp"
 
@@ -19,10 +20,7 @@ namespace {
 
 constexpr std::string_view kOpen = "// [listing ";
 constexpr std::string_view kClose = "// [/listing]";
-constexpr std::string_view kCommentOpen = "<!-- listing:";
-constexpr std::string_view kCommentClose = "-->";
 constexpr std::string_view kFenceOpen = "```cpp";
-constexpr std::string_view kFence = "```";
 
 std::string_view trim(std::string_view s) {
   const auto is_space = [](char c) { return std::isspace(static_cast<unsigned char>(c)) != 0; };
@@ -139,9 +137,9 @@ struct ListingComment {
 
 std::optional<ListingComment> parse_comment(std::string_view line) {
   line = trim(line);
-  if (!line.starts_with(kCommentOpen) || !line.ends_with(kCommentClose)) return std::nullopt;
-  line.remove_prefix(kCommentOpen.size());
-  line.remove_suffix(kCommentClose.size());
+  if (!line.starts_with(kListingOpen) || !line.ends_with(kCommentEnd)) return std::nullopt;
+  line.remove_prefix(kListingOpen.size());
+  line.remove_suffix(kCommentEnd.size());
   std::istringstream words{std::string(line)};
   ListingComment comment;
   std::string extra;
@@ -160,18 +158,12 @@ bool safe_relative_path(const std::string& name) {
 void process_markdown(const std::string& name, const std::string& text, SourceCache& sources,
                       Report& report, std::vector<std::string>& out_lines) {
   const auto lines = split_lines(text);
-  bool in_fence = false;
+  FencedBlocks fences;
   for (std::size_t i = 0; i < lines.size(); ++i) {
     const std::string& line = lines[i];
     const auto trimmed = trim(line);
     const int line_number = static_cast<int>(i) + 1;
-    if (in_fence) {
-      if (trimmed.starts_with(kFence)) in_fence = false;
-      out_lines.push_back(line);
-      continue;
-    }
-    if (!trimmed.starts_with(kCommentOpen)) {
-      if (trimmed.starts_with(kFence)) in_fence = true;
+    if (fences.is_code(trimmed) || !trimmed.starts_with(kListingOpen)) {
       out_lines.push_back(line);
       continue;
     }

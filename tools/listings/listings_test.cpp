@@ -9,10 +9,8 @@
 #include <iterator>
 #include <string>
 
-namespace fs = std::filesystem;
-using namespace tri::listings;
-using tri::listings::testing::any_problem_contains;
-using tri::listings::testing::TempRepo;
+// The tests sit beside their helpers (temp_repo.hpp), in the tool's namespace.
+namespace tri::listings::testing {
 
 namespace {
 
@@ -225,3 +223,5 @@ TEST_CASE("Build folders and hidden folders are not searched", "[listings]") {
   repo.write(".git/x.cpp", "// [listing open_forever]\n");
   CHECK(check_listings(repo.root()).problems.empty());
 }
+
+}  // namespace tri::listings::testing

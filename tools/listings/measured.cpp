@@ -3,23 +3,17 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
-#include <fstream>
-#include <iterator>
 #include <sstream>
 
 #include "measure/number_format.hpp"
+#include "tools/listings/markdown_syntax.hpp"
 
 namespace tri::listings {
 
 namespace {
 
-constexpr std::string_view kMarkerOpen = "<!-- measured:";
-constexpr std::string_view kMarkerEnd = "-->";
-constexpr std::string_view kMarkerClose = "<!-- /measured -->";
 constexpr std::string_view kRatio = "ratio:";
 constexpr std::string_view kHeader = "header:";
-constexpr std::string_view kTableOpen = "<!-- measured-table:";
-constexpr std::string_view kTableClose = "<!-- /measured-table -->";
 
 // The number a KEY names in a snapshot, or an explanation of why there is none.
 struct Lookup {
@@ -77,12 +71,6 @@ Shown shown_value(const Snapshot& snapshot, std::string_view key, std::string_vi
             "format '" + std::string(format) + "' is not sN or fN with an optional suffix"};
   }
   return {std::move(text), {}};
-}
-
-// The first non-blank part of a line.
-std::string_view trimmed_start(std::string_view line) {
-  const auto first = line.find_first_not_of(" \t");
-  return first == std::string_view::npos ? std::string_view() : line.substr(first);
 }
 
 // True when the text before `position` holds an odd number of backticks: inside inline code.
@@ -157,13 +145,10 @@ const Snapshot* SnapshotCache::find(const std::string& file) {
     return it->second ? &*it->second : nullptr;
   }
   std::optional<Snapshot> snapshot;
-  if (std::ifstream in(root_ / file, std::ios::binary); in) {
-    try {
-      snapshot = parse_snapshot(
-          std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()));
-    } catch (const std::runtime_error&) {
-      // Not a snapshot: its markers are reported as such.
-    }
+  try {
+    snapshot = read_snapshot(root_ / file);
+  } catch (const std::runtime_error&) {
+    // Missing or not a snapshot: its markers are reported as such.
   }
   const auto& stored = files_.emplace(file, std::move(snapshot)).first->second;
   return stored ? &*stored : nullptr;
@@ -180,11 +165,11 @@ std::size_t fill_table(const std::string& name, std::vector<std::string>& lines,
     problems.push_back({name, at, message, refreshable});
   };
   const std::string_view head = trimmed_start(lines[open]);
-  std::istringstream words{std::string(head.substr(kTableOpen.size()))};
+  std::istringstream words{std::string(head.substr(kMeasuredTableOpen.size()))};
   std::string file, table, end;
   std::size_t close = open + 1;
-  while (close < lines.size() && trimmed_start(lines[close]) != kTableClose) ++close;
-  if (!(words >> file >> table >> end) || end != kMarkerEnd || close == lines.size()) {
+  while (close < lines.size() && trimmed_start(lines[close]) != kMeasuredTableClose) ++close;
+  if (!(words >> file >> table >> end) || end != kCommentEnd || close == lines.size()) {
     add(line_number,
         "malformed measured table; write <!-- measured-table: FILE TABLE --> on a "
         "line, then the table, then <!-- /measured-table --> on a line");
@@ -223,36 +208,32 @@ std::size_t fill_table(const std::string& name, std::vector<std::string>& lines,
 int fill_measured(const std::string& name, std::vector<std::string>& lines,
                   SnapshotCache& snapshots, std::vector<Problem>& problems) {
   int markers = 0;
-  bool in_fence = false;
+  FencedBlocks fences;
   for (std::size_t i = 0; i < lines.size(); ++i) {
     std::string& line = lines[i];
     const int line_number = static_cast<int>(i) + 1;
-    if (trimmed_start(line).starts_with("```")) {
-      in_fence = !in_fence;
-      continue;
-    }
-    if (in_fence) continue;
-    if (trimmed_start(line).starts_with(kTableOpen)) {
+    if (fences.is_code(trimmed_start(line))) continue;
+    if (trimmed_start(line).starts_with(kMeasuredTableOpen)) {
       ++markers;
       i = fill_table(name, lines, i, snapshots, problems);
       continue;
     }
-    for (auto open = line.find(kMarkerOpen); open != std::string::npos;
-         open = line.find(kMarkerOpen, open + 1)) {
+    for (auto open = line.find(kMeasuredOpen); open != std::string::npos;
+         open = line.find(kMeasuredOpen, open + 1)) {
       if (inside_inline_code(line, open)) continue;
       ++markers;
       const auto add = [&](const std::string& message, bool refreshable = false) {
         problems.push_back({name, line_number, message, refreshable});
       };
-      const auto end = line.find(kMarkerEnd, open);
-      const auto close = end == std::string::npos ? end : line.find(kMarkerClose, end);
+      const auto end = line.find(kCommentEnd, open);
+      const auto close = end == std::string::npos ? end : line.find(kMeasuredClose, end);
       if (close == std::string::npos) {
         add("malformed measured marker; write <!-- measured: FILE KEY [FORMAT] -->value"
             "<!-- /measured --> on one line");
         continue;
       }
       std::istringstream words{
-          line.substr(open + kMarkerOpen.size(), end - open - kMarkerOpen.size())};
+          line.substr(open + kMeasuredOpen.size(), end - open - kMeasuredOpen.size())};
       std::string file, key, format, extra;
       if (!(words >> file >> key) || (words >> format && words >> extra)) {
         add("malformed measured marker; write <!-- measured: FILE KEY [FORMAT] -->");
@@ -268,7 +249,7 @@ int fill_measured(const std::string& name, std::vector<std::string>& lines,
         add("measured marker: " + shown.missing);
         continue;
       }
-      const auto value_begin = end + kMarkerEnd.size();
+      const auto value_begin = end + kCommentEnd.size();
       const std::string_view current(line.data() + value_begin, close - value_begin);
       if (current != *shown.text) {
         add("measured value " + std::string(current) + " differs from " + *shown.text + " (" + key +

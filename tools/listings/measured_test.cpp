@@ -8,9 +8,8 @@
 #include "tools/listings/listings.hpp"
 #include "tools/listings/temp_repo.hpp"
 
-using namespace tri::listings;
-using tri::listings::testing::any_problem_contains;
-using tri::listings::testing::TempRepo;
+// The tests sit beside their helpers (temp_repo.hpp), in the tool's namespace.
+namespace tri::listings::testing {
 
 namespace {
 
@@ -227,3 +226,5 @@ TEST_CASE("A measured table that is unclosed, unknown or from a missing snapshot
   CHECK(any_problem_contains(report, "table 'other' is not one the tool writes"));
   CHECK(any_problem_contains(report, "measured table names none.csv, which is missing"));
 }
+
+}  // namespace tri::listings::testing

@@ -2,6 +2,8 @@
 
 #include <regex>
 
+#include "tools/listings/markdown_syntax.hpp"
+
 namespace tri::listings {
 namespace {
 
@@ -36,11 +38,6 @@ const std::regex& table_delimiter() {
   return pattern;
 }
 
-std::string_view trimmed(std::string_view line) {
-  const auto first = line.find_first_not_of(" \t");
-  return first == std::string_view::npos ? std::string_view() : line.substr(first);
-}
-
 // The line without code spans, HTML comments (a marker with its value) and link targets.
 std::string prose_of(const std::string& line) {
   std::string text;
@@ -52,7 +49,7 @@ std::string prose_of(const std::string& line) {
     }
     if (!in_code) text += c;
   }
-  static const std::regex marker(R"(<!-- measured:.*?<!-- /measured -->)");
+  static const std::regex marker(std::string(kMeasuredOpen) + ".*?" + std::string(kMeasuredClose));
   static const std::regex comment(R"(<!--.*?-->)");
   static const std::regex target(R"(\]\([^)]*\))");
   text = std::regex_replace(text, marker, " ");
@@ -85,18 +82,14 @@ std::optional<std::string> measured_looking(std::string_view prose) {
 
 void find_unmarked_measurements(const std::string& name, const std::vector<std::string>& lines,
                                 std::vector<Problem>& problems) {
-  bool in_fence = false;
+  FencedBlocks fences;
   bool in_table_block = false;
   for (std::size_t i = 0; i < lines.size(); ++i) {
-    const std::string_view line = trimmed(lines[i]);
+    const std::string_view line = trimmed_start(lines[i]);
     const int line_number = static_cast<int>(i) + 1;
-    if (line.starts_with("```")) {
-      in_fence = !in_fence;
-      continue;
-    }
-    if (in_fence) continue;
-    if (line.starts_with("<!-- measured-table:")) in_table_block = true;
-    if (line.starts_with("<!-- /measured-table -->")) in_table_block = false;
+    if (fences.is_code(line)) continue;
+    if (line.starts_with(kMeasuredTableOpen)) in_table_block = true;
+    if (line.starts_with(kMeasuredTableClose)) in_table_block = false;
     if (in_table_block) continue;
     const std::string prose = prose_of(lines[i]);
     if (const auto found = measured_looking(prose)) {

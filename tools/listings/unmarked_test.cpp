@@ -9,9 +9,8 @@
 #include "tools/listings/listings.hpp"
 #include "tools/listings/temp_repo.hpp"
 
-using namespace tri::listings;
-using tri::listings::testing::any_problem_contains;
-using tri::listings::testing::TempRepo;
+// The tests sit beside their helpers (temp_repo.hpp), in the tool's namespace.
+namespace tri::listings::testing {
 
 TEST_CASE("Times, rates, ratios and shares of a ceiling look measured", "[listings]") {
   // Each text and the number in it that looks measured.
@@ -100,3 +99,5 @@ TEST_CASE("A measured number typed outside a marker fails the check, in code and
     }
   }
 }
+
+}  // namespace tri::listings::testing
