@@ -45,6 +45,12 @@ std::string seconds_columns(const Timing& timing) {
          ',' + format_number(timing.seconds.max, 6);
 }
 
+std::string quoted_text(std::string_view text) {
+  std::string field = "\"";
+  for (const char c : text) field += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return field + "\"";
+}
+
 std::string canvas_column(int width, int height) {
   return std::to_string(width) + 'x' + std::to_string(height);
 }

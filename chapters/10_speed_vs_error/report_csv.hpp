@@ -40,6 +40,10 @@ std::string csv_table(std::string_view header, std::span<const Row> rows, Fields
 /// digits each (as the report, coverage and scaling CSV files write them).
 std::string seconds_columns(const Timing& timing);
 
+/// A free-text field (a reason, a problem) as RFC 4180 writes it: in double quotes, each quote
+/// doubled, so commas and line breaks stay inside the field.
+std::string quoted_text(std::string_view text);
+
 /// "WIDTHxHEIGHT", the canvas column.
 std::string canvas_column(int width, int height);
 

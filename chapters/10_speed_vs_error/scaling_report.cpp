@@ -17,13 +17,6 @@
 namespace tri::ch10 {
 namespace {
 
-// A CSV field that is free text: its commas become semicolons, so the columns stay put.
-std::string csv_text(std::string text) {
-  std::replace(text.begin(), text.end(), ',', ';');
-  std::replace(text.begin(), text.end(), '\n', ' ');
-  return text;
-}
-
 // Bytes in the largest binary unit that keeps the number at 1 or more: "812 KiB", "1.45 MiB".
 std::string human_bytes(std::uint64_t bytes) {
   const char* units[] = {"bytes", "KiB", "MiB", "GiB"};
@@ -123,7 +116,7 @@ std::string scaling_csv(std::span<const ScalingPoint> points) {
   return csv_table(header, points, [](const ScalingPoint& p) {
     return std::tuple(p.sweep, p.drawer, p.chapter, p.scene, p.side, p.triangles, p.scene_bytes,
                       p.measured ? 1 : 0, seconds_columns(p.timing), p.timing.repetitions,
-                      p.timing.samples, p.peak_bytes, csv_text(p.not_measured_because));
+                      p.timing.samples, p.peak_bytes, quoted_text(p.not_measured_because));
   });
 }
 

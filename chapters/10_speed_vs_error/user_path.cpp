@@ -49,13 +49,6 @@ std::string milliseconds(double seconds) {
   return format_number(seconds * 1e3, 3) + " ms";
 }
 
-// A CSV field that may hold commas or quotes.
-std::string quoted(const std::string& text) {
-  std::string field = "\"";
-  for (const char c : text) field += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return field + "\"";
-}
-
 // The run's first scene drawn by the algorithm: its row of the report.
 const Measurement* first_row_of(const BenchReport& report, const TriangleAlgorithm& algorithm) {
   const auto row = std::find_if(report.rows.begin(), report.rows.end(), [&](const Measurement& m) {
@@ -173,7 +166,7 @@ std::string user_path_csv(const std::optional<UserPathComparison>& comparison) {
                       if_measured([&c] { return format_number(c.raster->frame_seconds, 6); }),
                       if_measured([&c] { return format_number(c.ratio(), 6); }),
                       if_measured([&c] { return format_number(c.raster->preparation_seconds, 6); }),
-                      quoted(c.problem));
+                      quoted_text(c.problem));
   });
 }
 
