@@ -208,15 +208,18 @@ void with_writer(Canvas& canvas, Color color, Draw&& draw) {
   }
 }
 
+/// True when Writer is one of Writers.
+template <class Writer, class... Writers>
+concept OneOf = (std::same_as<Writer, Writers> || ...);
+
 /// One of the writers Writers..., whichever the caller holds: what a fill compiled in its own
 /// source takes, so that this one list says which writers it is compiled for (no instantiation per
 /// writer written out). visit(fill) calls fill(writer) with the writer as its own type.
 template <PixelWriter... Writers>
 class OneOfWriters {
  public:
-  template <class Writer>
-  requires(std::same_as<Writer, Writers> || ...) OneOfWriters(Writer& writer)
-  noexcept : writer_(&writer) {}  // implicit: a caller passes its writer
+  template <OneOf<Writers...> Writer>
+  OneOfWriters(Writer& writer) noexcept : writer_(&writer) {}  // implicit: callers pass a writer
 
   template <class Fill>
   void visit(Fill&& fill) const {
