@@ -52,6 +52,14 @@ constexpr TriangleAlgorithm with_rows(TriangleAlgorithm algorithm, DrawTriangleR
   return algorithm;
 }
 
+// A variant that is a step's fill on the canvas (OnCanvas): its draw, and its draw_rows.
+template <CanvasFill fill>
+constexpr TriangleAlgorithm filled_by(std::string_view name, std::string_view summary,
+                                      DrawBatchFunction draw_batch = nullptr) {
+  return with_rows(variant(name, summary, OnCanvas<fill>::draw, draw_batch),
+                   OnCanvas<fill>::draw_rows);
+}
+
 }  // namespace
 
 std::span<const TriangleAlgorithm> triangle_algorithms() {
@@ -66,27 +74,20 @@ std::span<const TriangleAlgorithm> triangle_algorithms() {
                   draw_triangle_all_edges),
           draw_triangle_all_edges_rows),
       with_narrow_formats(
-          with_rows(
-              variant(
-                  "fast_spans",
-                  "exact first and last covered pixel per row (division-free walker), spans filled",
-                  draw_triangle_spans),
-              draw_triangle_spans_rows),
+          filled_by<fill_spans>(
+              "fast_spans",
+              "exact first and last covered pixel per row (division-free walker), spans filled"),
           draw_narrow_spans),
-      with_rows(variant("fast_blocks_8x8",
-                        "8x8 blocks: outside skipped, inside filled, partial ones tested per pixel",
-                        draw_triangle_blocks_8x8),
-                draw_triangle_blocks_8x8_rows),
-      with_rows(
-          variant("fast_simd",
-                  "fast_blocks_8x8 testing eight pixels of a row at once in vectorizable lanes",
-                  draw_triangle_simd),
-          draw_triangle_simd_rows),
-      followed_by_cost_sweeps(with_rows(
-          variant("fast_hybrid",
-                  "per triangle: fast_simd's eight-lane test within one 8x8 block, else fast_spans",
-                  draw_triangle_hybrid, draw_batch_hybrid),
-          draw_triangle_hybrid_rows)),
+      filled_by<fill_blocks_8x8>(
+          "fast_blocks_8x8",
+          "8x8 blocks: outside skipped, inside filled, partial ones tested per pixel"),
+      filled_by<fill_simd>(
+          "fast_simd",
+          "fast_blocks_8x8 testing eight pixels of a row at once in vectorizable lanes"),
+      followed_by_cost_sweeps(filled_by<fill_hybrid>(
+          "fast_hybrid",
+          "per triangle: fast_simd's eight-lane test within one 8x8 block, else fast_spans",
+          draw_batch_hybrid)),
       variant("fast_threaded",
               "fast_hybrid on bands of rows dealt to hardware_concurrency threads per batch",
               draw_triangle_hybrid, draw_batch_threaded, true),
@@ -100,7 +101,7 @@ std::span<const TriangleAlgorithm> triangle_algorithms() {
                       "fast_hybrid with the setup of eight triangles at once in vector lanes, then "
                       "each filled in order",
                       draw_triangle_batched, draw_batch_batched),
-              draw_triangle_hybrid_rows),
+              OnCanvas<fill_hybrid>::draw_rows),
           draw_narrow_batched),
   });
   return algorithms;

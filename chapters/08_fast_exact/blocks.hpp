@@ -109,10 +109,10 @@ void fill_block_pixels(const TriangleSetup& setup, const ch05::PixelBox& block, 
 }
 
 /// Step 4 · 8x8 blocks: skip the outside ones, fill runs of inside ones span by span, and test
-/// the pixels of the partial ones with step 2's incremental one-branch test.
-void draw_triangle_blocks_8x8(Canvas& canvas, const Triangle& triangle, Color color);
-/// The same restricted to rows first_row..last_row (the registry's draw_rows entry).
-void draw_triangle_blocks_8x8_rows(Canvas& canvas, const Triangle& triangle, Color color,
-                                   int first_row, int last_row);
+/// the pixels of the partial ones with step 2's incremental one-branch test. Its canvas entries,
+/// compiled in blocks.cpp: draw_triangle_blocks_8x8, and OnCanvas' draw_rows for bands of rows.
+void fill_blocks_8x8(const TriangleSetup& setup, CanvasWriter writer);
+extern template struct OnCanvas<fill_blocks_8x8>;
+inline constexpr DrawTriangleFunction draw_triangle_blocks_8x8 = OnCanvas<fill_blocks_8x8>::draw;
 
 }  // namespace tri::ch08

@@ -4,8 +4,11 @@
 #include "chapters/08_fast_exact/spans.hpp"
 
 namespace tri::ch08 {
+namespace {
 
 // [listing choose_per_triangle]
+// With the writer's own type, so the batch loop below inlines it: a call with a RowWriter or
+// CountingWriter picks this over fill_hybrid(setup, CanvasWriter), which needs a conversion.
 template <PixelWriter Writer>
 void fill_hybrid(const TriangleSetup& setup, Writer& writer) {
   if (fits_one_block(setup)) {
@@ -14,8 +17,6 @@ void fill_hybrid(const TriangleSetup& setup, Writer& writer) {
     fill_spans(setup, writer);
   }
 }
-
-namespace {
 
 template <PixelWriter Writer>
 void draw_batch_with(Canvas& canvas, std::span<const SceneTriangle> triangles) {
@@ -30,20 +31,11 @@ void draw_batch_with(Canvas& canvas, std::span<const SceneTriangle> triangles) {
 
 }  // namespace
 
-template void fill_hybrid(const TriangleSetup&, RowWriter&);
-template void fill_hybrid(const TriangleSetup&, CountingWriter&);
-
-void draw_triangle_hybrid(Canvas& canvas, const Triangle& triangle, Color color) {
-  set_up_and_fill(canvas, triangle, color,
-                  [](const TriangleSetup& setup, auto& writer) { fill_hybrid(setup, writer); });
+void fill_hybrid(const TriangleSetup& setup, CanvasWriter any_writer) {
+  any_writer.visit([&](auto& writer) { fill_hybrid(setup, writer); });
 }
 
-void draw_triangle_hybrid_rows(Canvas& canvas, const Triangle& triangle, Color color, int first_row,
-                               int last_row) {
-  set_up_and_fill_rows(
-      canvas, triangle, color, first_row, last_row,
-      [](const TriangleSetup& setup, auto& writer) { fill_hybrid(setup, writer); });
-}
+template struct OnCanvas<fill_hybrid>;
 
 void draw_batch_hybrid(Canvas& canvas, std::span<const SceneTriangle> triangles) {
   with_writer_type(canvas, [&]<class Writer>() { draw_batch_with<Writer>(canvas, triangles); });

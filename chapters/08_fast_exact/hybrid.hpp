@@ -14,18 +14,12 @@
 
 namespace tri::ch08 {
 
-/// Draws a prepared triangle: fill_simd when it fits one block (fits_one_block), else
-/// fill_spans.
-template <PixelWriter Writer>
-void fill_hybrid(const TriangleSetup& setup, Writer& writer);
-extern template void fill_hybrid(const TriangleSetup&, RowWriter&);
-extern template void fill_hybrid(const TriangleSetup&, CountingWriter&);
-
-/// Step 6 · one triangle: setup, then fill_hybrid.
-void draw_triangle_hybrid(Canvas& canvas, const Triangle& triangle, Color color);
-/// The same restricted to rows first_row..last_row (the registry's draw_rows entry).
-void draw_triangle_hybrid_rows(Canvas& canvas, const Triangle& triangle, Color color, int first_row,
-                               int last_row);
+/// Step 6 · choosing per triangle: fill_simd when the prepared triangle fits one block
+/// (fits_one_block), else fill_spans, through either canvas writer. With its canvas entries
+/// (draw_triangle_hybrid for one triangle, OnCanvas' draw_rows for a band) in hybrid.cpp.
+void fill_hybrid(const TriangleSetup& setup, CanvasWriter writer);
+extern template struct OnCanvas<fill_hybrid>;
+inline constexpr DrawTriangleFunction draw_triangle_hybrid = OnCanvas<fill_hybrid>::draw;
 
 /// Step 6 · a whole batch on the calling thread: draw_triangle_hybrid for each triangle in order,
 /// with the writer chosen once instead of per triangle.

@@ -14,6 +14,7 @@
 #include <cstring>
 #include <type_traits>
 #include <utility>
+#include <variant>
 
 #include "chapters/08_fast_exact/instruction_sets.hpp"
 #include "chapters/08_fast_exact/triangle_setup.hpp"
@@ -207,20 +208,57 @@ void with_writer(Canvas& canvas, Color color, Draw&& draw) {
   }
 }
 
-/// The single-triangle entry of a traversal: the setup, then fill(setup, writer) with the writer
-/// that suits the canvas. Nothing is drawn when the setup is empty.
-template <class Fill>
-void set_up_and_fill(Canvas& canvas, const Triangle& triangle, Color color, Fill&& fill) {
+/// True when Writer is one of Writers.
+template <class Writer, class... Writers>
+concept OneOf = (std::same_as<Writer, Writers> || ...);
+
+/// One of the writers Writers..., whichever the caller holds: what a fill compiled in its own
+/// source takes, so that this one list says which writers it is compiled for (no instantiation per
+/// writer written out). visit(fill) calls fill(writer) with the writer as its own type.
+template <PixelWriter... Writers>
+class OneOfWriters {
+ public:
+  template <OneOf<Writers...> Writer>
+  OneOfWriters(Writer& writer) noexcept : writer_(&writer) {}  // implicit: callers pass a writer
+
+  template <class Fill>
+  void visit(Fill&& fill) const {
+    std::visit([&](auto* writer) { fill(*writer); }, writer_);
+  }
+
+ private:
+  std::variant<Writers*...> writer_;
+};
+
+/// The canvas's writers, listed once.
+using CanvasWriter = OneOfWriters<RowWriter, CountingWriter>;
+
+/// A step's fill as compiled in its own source: the pixels of a prepared triangle, through either
+/// canvas writer.
+using CanvasFill = void (*)(const TriangleSetup& setup, CanvasWriter writer);
+
+/// A step on the canvas, made from its fill: one triangle (draw: the setup, then the fill with the
+/// writer that suits the canvas; nothing when the setup is empty) and rows first_row..last_row of
+/// it (draw_rows, the registry's draw_rows entry: the setup clipped to them, so the fill writes
+/// exactly the pixels of those rows that it writes unclipped). Each step compiles its own in its
+/// source, where the fill is inlined into both (`extern template` in the step's header).
+template <CanvasFill fill>
+struct OnCanvas {
+  static void draw(Canvas& canvas, const Triangle& triangle, Color color);
+  static void draw_rows(Canvas& canvas, const Triangle& triangle, Color color, int first_row,
+                        int last_row);
+};
+
+template <CanvasFill fill>
+void OnCanvas<fill>::draw(Canvas& canvas, const Triangle& triangle, Color color) {
   const auto setup = setup_triangle(triangle, canvas.width(), canvas.height());
   if (!setup) return;
   with_writer(canvas, color, [&](auto& writer) { fill(*setup, writer); });
 }
 
-/// set_up_and_fill restricted to rows first_row..last_row: the setup clipped to them (clip_setup),
-/// so the traversal writes exactly the pixels of those rows that it writes unclipped.
-template <class Fill>
-void set_up_and_fill_rows(Canvas& canvas, const Triangle& triangle, Color color, int first_row,
-                          int last_row, Fill&& fill) {
+template <CanvasFill fill>
+void OnCanvas<fill>::draw_rows(Canvas& canvas, const Triangle& triangle, Color color, int first_row,
+                               int last_row) {
   const auto setup = setup_triangle(triangle, canvas.width(), canvas.height());
   if (!setup) return;
   const auto part = clip_setup(*setup, {{0, first_row}, {canvas.width() - 1, last_row}});

@@ -177,27 +177,16 @@ std::array<bool, 8> lane_test(const TriangleSetup& setup, int x, int y, LaneWidt
                     : test_lanes<std::int64_t, 8>(setup, x, y);
 }
 
-template <PixelWriter Writer>
-void fill_simd(const TriangleSetup& setup, Writer& writer) {
-  if (fits_32_bit_lanes(setup)) {
-    fill_blocks_simd<std::int32_t>(setup, writer);
-  } else {
-    fill_blocks_simd<std::int64_t>(setup, writer);
-  }
+void fill_simd(const TriangleSetup& setup, CanvasWriter any_writer) {
+  any_writer.visit([&](auto& writer) {
+    if (fits_32_bit_lanes(setup)) {
+      fill_blocks_simd<std::int32_t>(setup, writer);
+    } else {
+      fill_blocks_simd<std::int64_t>(setup, writer);
+    }
+  });
 }
 
-template void fill_simd(const TriangleSetup&, RowWriter&);
-template void fill_simd(const TriangleSetup&, CountingWriter&);
-
-void draw_triangle_simd(Canvas& canvas, const Triangle& triangle, Color color) {
-  set_up_and_fill(canvas, triangle, color,
-                  [](const TriangleSetup& setup, auto& writer) { fill_simd(setup, writer); });
-}
-
-void draw_triangle_simd_rows(Canvas& canvas, const Triangle& triangle, Color color, int first_row,
-                             int last_row) {
-  set_up_and_fill_rows(canvas, triangle, color, first_row, last_row,
-                       [](const TriangleSetup& setup, auto& writer) { fill_simd(setup, writer); });
-}
+template struct OnCanvas<fill_simd>;
 
 }  // namespace tri::ch08

@@ -44,19 +44,12 @@ enum class LaneWidth { bits32, bits64 };
 /// from `lanes` on are false.
 std::array<bool, 8> lane_test(const TriangleSetup& setup, int x, int y, LaneWidth width, int lanes);
 
-/// Draws a prepared triangle the way draw_triangle_simd does, through either writer (the part
-/// of step 5 that the threaded variant runs on each band).
-template <PixelWriter Writer>
-void fill_simd(const TriangleSetup& setup, Writer& writer);
-extern template void fill_simd(const TriangleSetup&, RowWriter&);
-extern template void fill_simd(const TriangleSetup&, CountingWriter&);
-
 /// Step 5 · SIMD: step 4's blocks, each row of a partial block tested by the lane test and
 /// written with one read-blend-write of eight pixels; a triangle within one block skips the
-/// blocks altogether.
-void draw_triangle_simd(Canvas& canvas, const Triangle& triangle, Color color);
-/// The same restricted to rows first_row..last_row (the registry's draw_rows entry).
-void draw_triangle_simd_rows(Canvas& canvas, const Triangle& triangle, Color color, int first_row,
-                             int last_row);
+/// blocks altogether; what step 6 runs on the triangles within one block. Compiled with its
+/// canvas entries in simd.cpp: draw_triangle_simd, and OnCanvas' draw_rows.
+void fill_simd(const TriangleSetup& setup, CanvasWriter writer);
+extern template struct OnCanvas<fill_simd>;
+inline constexpr DrawTriangleFunction draw_triangle_simd = OnCanvas<fill_simd>::draw;
 
 }  // namespace tri::ch08

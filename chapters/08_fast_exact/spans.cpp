@@ -111,15 +111,10 @@ int span_store_bytes(InstructionSet set) noexcept {
   return register_bytes(set);
 }
 
-void draw_triangle_spans(Canvas& canvas, const Triangle& triangle, Color color) {
-  set_up_and_fill(canvas, triangle, color,
-                  [](const TriangleSetup& setup, auto& writer) { fill_spans(setup, writer); });
+void fill_spans(const TriangleSetup& setup, CanvasWriter any_writer) {
+  any_writer.visit([&](auto& writer) { fill_spans(setup, writer); });
 }
 
-void draw_triangle_spans_rows(Canvas& canvas, const Triangle& triangle, Color color, int first_row,
-                              int last_row) {
-  set_up_and_fill_rows(canvas, triangle, color, first_row, last_row,
-                       [](const TriangleSetup& setup, auto& writer) { fill_spans(setup, writer); });
-}
+template struct OnCanvas<fill_spans>;
 
 }  // namespace tri::ch08

@@ -177,11 +177,11 @@ void fill_spans(const TriangleSetup& setup, Writer& writer,
 }
 // [/listing]
 
-/// Step 3 · span traversal: setup, then one filled span per row from SpanWalker. A sliver costs
-/// its rows, not its bounding box.
-void draw_triangle_spans(Canvas& canvas, const Triangle& triangle, Color color);
-/// The same restricted to rows first_row..last_row (the registry's draw_rows entry).
-void draw_triangle_spans_rows(Canvas& canvas, const Triangle& triangle, Color color, int first_row,
-                              int last_row);
+/// Step 3 · span traversal: one filled span per row from SpanWalker, through either canvas writer;
+/// a sliver costs its rows, not its bounding box. On the canvas (compiled in spans.cpp):
+/// draw_triangle_spans for one triangle, OnCanvas' draw_rows for rows first_row..last_row of it.
+void fill_spans(const TriangleSetup& setup, CanvasWriter writer);
+extern template struct OnCanvas<fill_spans>;
+inline constexpr DrawTriangleFunction draw_triangle_spans = OnCanvas<fill_spans>::draw;
 
 }  // namespace tri::ch08
