@@ -169,16 +169,13 @@ PreparedDrawing prepare_drawing(const Scene& scene) {
       ++primitive;
       continue;
     }
-    // A run's batch is allocated once, for the triangles up to the next line that it keeps.
+    // A run's batch is allocated once, for all the triangles up to the next line: the pages of
+    // those it culls are never touched, so they cost address space, not memory or time.
+    const auto run_end = std::find_if(primitive, primitives.end(), [](const auto& p) {
+      return std::holds_alternative<SceneLine>(p);
+    });
     PreparedBatch batch(canvas);
-    auto run_end = primitive;
-    std::size_t kept = 0;
-    for (const SceneTriangle* t;
-         run_end != primitives.end() && (t = std::get_if<SceneTriangle>(&*run_end)) != nullptr;
-         ++run_end) {
-      kept += batch.keeps(*t);
-    }
-    batch.reserve(kept);
+    batch.reserve(static_cast<std::size_t>(run_end - primitive));
     for (; primitive != run_end; ++primitive) {
       const bool drawn = batch.add(std::get<SceneTriangle>(*primitive)) == DrawResult::drawn;
       ++(drawn ? prepared.stats.triangles : prepared.stats.rejected_triangles);
