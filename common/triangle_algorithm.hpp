@@ -105,29 +105,55 @@ DrawResult validate_triangle(const Triangle& triangle) noexcept;
 DrawResult draw_triangle(const TriangleAlgorithm& algorithm, Canvas& canvas,
                          const Triangle& triangle, Color color);
 
+/// The size of the canvases a culled PreparedBatch may be drawn on: this one or a smaller one.
+struct CanvasExtent {
+  int width = 0;
+  int height = 0;
+};
+
+/// How far outside a canvas, in pixels, a triangle's bounding box may lie and still be kept by a
+/// culled batch: rounding a vertex to its nearest pixel centre moves it half a pixel.
+inline constexpr double cull_margin_pixels = 1.0;
+
 /// Triangles checked once: those that passed validate_triangle, in order, in the layout every
 /// batch entry point takes, and how many were refused. A BatchDrawer draws it without checking
 /// or copying anything again, so a program that draws the same triangles every frame prepares
-/// them once, before its clock runs.
+/// them once, before its clock runs. A batch made for a canvas also leaves out (culls) the
+/// triangles whose bounding box lies more than cull_margin_pixels outside it, which can write no
+/// pixel of it; it is drawn only on that canvas or a smaller one.
 class PreparedBatch {
  public:
   PreparedBatch() = default;
   explicit PreparedBatch(std::span<const SceneTriangle> triangles);
+  /// An empty batch that culls to `canvas`.
+  explicit PreparedBatch(CanvasExtent canvas) : cull_to_(canvas), culls_(true) {}
+  /// The triangles' batch, culled to `canvas`.
+  PreparedBatch(std::span<const SceneTriangle> triangles, CanvasExtent canvas);
 
   /// Makes room for `count` more triangles, so adding them allocates once.
   void reserve(std::size_t count) { accepted_.reserve(accepted_.size() + count); }
-  /// Checks one more triangle and keeps it when it passes; says what the check found.
+  /// Whether add would keep the triangle: it passes the check and, when culling, may draw.
+  bool keeps(const SceneTriangle& triangle) const noexcept;
+  /// Checks one more triangle and keeps it when it passes and is not culled; says what the check
+  /// found (a culled triangle passed it: drawn, drawing nothing).
   DrawResult add(const SceneTriangle& triangle);
-  /// The accepted triangles, in the order they were added.
+  /// The kept triangles, in the order they were added.
   std::span<const SceneTriangle> triangles() const noexcept { return accepted_; }
   /// How many were refused (non-finite or out of range).
   std::size_t refused() const noexcept { return refused_; }
+  /// How many passed the check but were left out, lying wholly outside the canvas.
+  std::size_t culled() const noexcept { return culled_; }
+  /// Whether it may be drawn on the canvas: always, unless it culls to a smaller one.
+  bool fits(const Canvas& canvas) const noexcept;
 
  private:
   // Filled once, drawn every frame: huge pages make its page faults few
   // (docs/performance_notes.md).
   std::vector<SceneTriangle, LargeBufferAllocator<SceneTriangle>> accepted_;
   std::size_t refused_ = 0;
+  std::size_t culled_ = 0;
+  CanvasExtent cull_to_;
+  bool culls_ = false;
 };
 
 /// Draws batches of triangles with one algorithm; every caller that draws batches goes through
@@ -142,7 +168,8 @@ class BatchDrawer {
   /// Draws the triangles in order; returns how many were refused. One batch at a time.
   std::size_t draw(Canvas& canvas, std::span<const SceneTriangle> triangles);
   /// Draws a prepared batch's triangles in order, checking none again; returns how many its
-  /// preparation refused. What a program that draws the same triangles every frame times.
+  /// preparation refused. What a program that draws the same triangles every frame times. Throws
+  /// std::invalid_argument for a culled batch and a canvas larger than the one it culls to.
   std::size_t draw(Canvas& canvas, const PreparedBatch& batch);
   /// The algorithm it draws with.
   const TriangleAlgorithm& algorithm() const noexcept { return *algorithm_; }

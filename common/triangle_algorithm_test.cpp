@@ -6,6 +6,7 @@
 #include <limits>
 #include <memory>
 #include <span>
+#include <stdexcept>
 #include <utility>
 #include <vector>
 
@@ -258,6 +259,66 @@ TEST_CASE(
   CHECK(BatchDrawer(one_pixel_algorithm).draw(one_by_one, prepared) == 4);
   CHECK(testing::written_pixels(one_by_one) == PixelSet{{1, 1}});
   CHECK(one_by_one.pixel(1, 1).r == 36);
+}
+
+TEST_CASE(
+    "A batch culled to a canvas leaves out only triangles whose box lies more than a pixel "
+    "outside it, and refuses what the unculled batch refuses",
+    "[common][algorithm][draw]") {
+  // A canvas of 8 x 6 pixels: centres 0..7 and 0..5, kept within one pixel of them.
+  const CanvasExtent extent{8, 6};
+  const auto shifted = [](glm::dvec2 by) {
+    Triangle t = ordinary;  // box 1..5 x 1..4
+    for (glm::dvec2& v : t) v += by;
+    return t;
+  };
+  const double just_over = std::nextafter(1.0, infinity) - 1.0;
+  const std::vector<SceneTriangle> triangles{
+      scene_triangle(ordinary, 1),                          // inside: kept
+      scene_triangle(shifted({-6, 0}), 2),                  // right edge at -1: kept
+      scene_triangle(shifted({-6 - 4 * just_over, 0}), 3),  // just beyond: culled
+      scene_triangle(shifted({7, 0}), 4),                   // left edge at 8: kept
+      scene_triangle(shifted({7.0001, 0}), 5),              // culled
+      scene_triangle(shifted({0, -5}), 6),                  // top at -1: kept
+      scene_triangle(shifted({0, -5.0001}), 7),             // culled
+      scene_triangle(shifted({0, 5}), 8),                   // bottom at 6: kept
+      scene_triangle(shifted({0, 5.0001}), 9),              // culled
+      scene_triangle(shifted({1000, 1000}), 10),            // far away: culled
+      scene_triangle(shifted({-limit + 5, 0}), 11),         // at -2^30: culled
+      scene_triangle({glm::dvec2(-90, 1), glm::dvec2(90, 2), glm::dvec2(0, 3)}, 12),  // across
+      scene_triangle({glm::dvec2(1000, 1), glm::dvec2(1001, not_a_number), glm::dvec2(1002, 3)},
+                     13),  // NaN, the rest off the canvas: refused
+      scene_triangle({glm::dvec2(1000, 1), glm::dvec2(2 * limit, 2), glm::dvec2(1002, 3)},
+                     14),  // beyond 2^30 and off the canvas: refused
+      scene_triangle({glm::dvec2(-infinity, 1), glm::dvec2(2, 2), glm::dvec2(3, 3)}, 15)};
+  PreparedBatch unculled, added(extent);
+  for (const SceneTriangle& t : triangles) {
+    CAPTURE(static_cast<int>(t.color.r));
+    const DrawResult expected = unculled.add(t);
+    CHECK(added.add(t) == expected);
+    CHECK(added.keeps(t) == (added.triangles().back().color.r == t.color.r));
+  }
+  const PreparedBatch culled(triangles, extent);
+  for (const PreparedBatch* batch : {static_cast<const PreparedBatch*>(&added), &culled}) {
+    CHECK(batch->refused() == 3);
+    CHECK(batch->refused() == unculled.refused());
+    CHECK(batch->culled() == 6);
+    std::vector<int> kept;
+    for (const SceneTriangle& t : batch->triangles()) kept.push_back(t.color.r);
+    CHECK(kept == std::vector<int>{1, 2, 4, 6, 8, 12});
+  }
+  CHECK(unculled.culled() == 0);
+  CHECK(unculled.triangles().size() == 12);
+  // Drawn only where it was culled for: that canvas or a smaller one, never a larger one.
+  BatchDrawer drawer(one_pixel_algorithm);
+  Canvas same(8, 6), smaller(3, 2), wider(9, 6), taller(8, 7);
+  same.enable_write_counts();
+  CHECK(drawer.draw(same, culled) == 3);
+  CHECK(testing::written_pixels(same) == PixelSet{{1, 1}});
+  CHECK(drawer.draw(smaller, culled) == 3);
+  CHECK_THROWS_AS(drawer.draw(wider, culled), std::invalid_argument);
+  CHECK_THROWS_AS(drawer.draw(taller, culled), std::invalid_argument);
+  CHECK(drawer.draw(wider, unculled) == 3);
 }
 
 TEST_CASE("nearest_pixel rounds to the nearest pixel centre, halves up",

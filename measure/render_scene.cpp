@@ -160,25 +160,27 @@ RenderStats render_scene(const Scene& scene, BatchDrawer* drawer, Canvas& canvas
 
 PreparedDrawing prepare_drawing(const Scene& scene) {
   PreparedDrawing prepared;
+  const CanvasExtent canvas{scene.width, scene.height};
   const auto& primitives = scene.primitives;
-  for (auto primitive = primitives.begin(); primitive != primitives.end(); ++primitive) {
-    if (const auto* triangle = std::get_if<SceneTriangle>(&*primitive)) {
-      if (prepared.steps.empty() || !std::holds_alternative<PreparedBatch>(prepared.steps.back())) {
-        // A run's batch is allocated once, for all the triangles up to the next line.
-        const auto run_end = std::find_if(primitive, primitives.end(), [](const auto& p) {
-          return std::holds_alternative<SceneLine>(p);
-        });
-        prepared.steps.emplace_back(PreparedBatch());
-        std::get<PreparedBatch>(prepared.steps.back())
-            .reserve(static_cast<std::size_t>(run_end - primitive));
-      }
-      const bool drawn =
-          std::get<PreparedBatch>(prepared.steps.back()).add(*triangle) == DrawResult::drawn;
-      ++(drawn ? prepared.stats.triangles : prepared.stats.rejected_triangles);
-    } else {
-      prepared.steps.emplace_back(std::get<SceneLine>(*primitive));
+  for (auto primitive = primitives.begin(); primitive != primitives.end();) {
+    if (const auto* line = std::get_if<SceneLine>(&*primitive)) {
+      prepared.steps.emplace_back(*line);
       ++prepared.stats.lines;
+      ++primitive;
+      continue;
     }
+    // A run's batch is allocated once, for all the triangles up to the next line: the pages of
+    // those it culls are never touched, so they cost address space, not memory or time.
+    const auto run_end = std::find_if(primitive, primitives.end(), [](const auto& p) {
+      return std::holds_alternative<SceneLine>(p);
+    });
+    PreparedBatch batch(canvas);
+    batch.reserve(static_cast<std::size_t>(run_end - primitive));
+    for (; primitive != run_end; ++primitive) {
+      const bool drawn = batch.add(std::get<SceneTriangle>(*primitive)) == DrawResult::drawn;
+      ++(drawn ? prepared.stats.triangles : prepared.stats.rejected_triangles);
+    }
+    prepared.steps.emplace_back(std::move(batch));
   }
   return prepared;
 }

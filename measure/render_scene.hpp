@@ -43,18 +43,20 @@ RenderStats render_scene(const Scene& scene, BatchDrawer* drawer, Canvas& canvas
                          const ProgressFunction& on_progress = {});
 
 /// A scene made ready once to be drawn many times: its runs of consecutive triangles, each a
-/// PreparedBatch (copied out of the scene and checked once), and the lines between them, in order.
+/// PreparedBatch (copied out of the scene and checked once, culled to the scene's canvas), and the
+/// lines between them, in order.
 struct PreparedDrawing {
   std::vector<std::variant<PreparedBatch, SceneLine>> steps;
   RenderStats stats;  ///< what every draw of it does
 };
 
-/// Prepares a scene for draw_prepared: the one copy and check of its triangles.
+/// Prepares a scene for draw_prepared: the one copy and check of its triangles, leaving out those
+/// that cannot write a pixel of the scene's canvas (PreparedBatch's culling).
 PreparedDrawing prepare_drawing(const Scene& scene);
 
 /// Draws a prepared scene as render_scene draws the scene, pixel for pixel and write for write,
 /// checking, copying and allocating nothing; returns the stats render_scene returns. The drawer
-/// may be null when the scene has no triangles.
+/// may be null when the scene has no triangles. The canvas is the scene's size or smaller.
 RenderStats draw_prepared(const PreparedDrawing& prepared, BatchDrawer* drawer, Canvas& canvas);
 
 /// The same with a drawer of the algorithm made for this one scene (null: no triangles).

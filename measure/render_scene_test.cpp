@@ -91,6 +91,64 @@ TEST_CASE("Every algorithm draws a prepared scene as render_scene draws the scen
   }
 }
 
+TEST_CASE(
+    "Every algorithm draws a scene prepared with its triangles culled as render_scene draws it, "
+    "with triangles partly and wholly off the canvas",
+    "[measure][render]") {
+  // Small triangles whose boxes end at distances around half and one pixel beyond each edge of
+  // a 12 x 10 canvas, where rounding to pixel centres decides, with large ones partly off it,
+  // refused ones off it, and lines between the runs.
+  Scene scene;
+  scene.width = 12;
+  scene.height = 10;
+  std::uint8_t red = 0;
+  const auto triangle = [&](glm::dvec2 a, glm::dvec2 b, glm::dvec2 c) {
+    red = static_cast<std::uint8_t>(red + 7);
+    scene.primitives.emplace_back(SceneTriangle{{a, b, c}, Color{red, 90, 30, 255}});
+  };
+  const double beyond[] = {-0.3, 0.0, 0.25, 0.49, 0.5, 0.51, 0.75, 0.99, 1.0, 1.01, 1.5, 3.0};
+  for (const double d : beyond) {
+    // Right-angled, 2 pixels wide and tall, its box ending d beyond the edge's last centre.
+    triangle({-d, 3}, {-d - 2, 3}, {-d, 5.5});                     // left of column 0
+    triangle({11 + d, 4}, {13 + d, 4}, {11 + d, 6.25});            // right of column 11
+    triangle({5, -d}, {7.5, -d}, {5, -d - 2});                     // below row 0
+    triangle({6, 9 + d}, {6, 11 + d}, {3.75, 9 + d});              // above row 9
+    triangle({-d, -d}, {-d - 2, -d}, {-d, -d - 2});                // beyond a corner
+    triangle({-d - 0.5, 2.5}, {-d - 1.5, 2.5}, {-d - 0.75, 3.5});  // a sliver, clockwise
+  }
+  scene.primitives.emplace_back(SceneLine{{glm::dvec2(0, 0), glm::dvec2(11, 9)}});
+  triangle({-30, -20}, {40, 5}, {2, 30});              // partly off, large
+  triangle({500, 500}, {600, 520}, {510, 700});        // wholly off
+  triangle({-500, 5}, {not_a_number, 6}, {-510, 7});   // refused, off the canvas
+  triangle({-500, 5}, {-2e9, 6}, {-510, 7});           // refused, off the canvas
+  triangle({-1000, -1000}, {1000, -1000}, {0, 1000});  // covers the canvas
+  triangle({2.5, 2.5}, {9.5, 3.5}, {4.5, 8.5});        // inside
+  const PreparedDrawing prepared = prepare_drawing(scene);
+  std::size_t culled = 0, kept = 0;
+  for (const auto& step : prepared.steps) {
+    if (const auto* batch = std::get_if<PreparedBatch>(&step)) {
+      culled += batch->culled();
+      kept += batch->triangles().size();
+    }
+  }
+  CHECK(culled > 0);
+  CHECK(kept > 4);
+  CHECK(culled + kept + prepared.stats.rejected_triangles == count_triangles(scene));
+  for (const TriangleAlgorithm& algorithm : registered_algorithms()) {
+    CAPTURE(algorithm.name);
+    Canvas rendered = make_canvas(scene);
+    rendered.enable_write_counts();
+    const RenderStats expected = render_scene(scene, &algorithm, rendered);
+    BatchDrawer drawer(algorithm);
+    Canvas canvas = make_canvas(scene);
+    canvas.enable_write_counts();
+    const RenderStats stats = draw_prepared(prepared, &drawer, canvas);
+    CHECK(stats.triangles == expected.triangles);
+    CHECK(stats.rejected_triangles == expected.rejected_triangles);
+    CHECK(same_pixels(canvas, rendered));
+  }
+}
+
 TEST_CASE("A prepared scene with triangles needs a drawer", "[measure][render]") {
   const PreparedDrawing prepared = prepare_drawing(mixed_scene());
   Canvas canvas = make_canvas(mixed_scene());

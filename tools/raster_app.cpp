@@ -150,7 +150,8 @@ std::uint64_t pixels_per_frame(const Scene& scene, const TriangleAlgorithm* algo
 }
 
 // What a --bench does once before its frames (the scene's triangles copied into what the frames
-// draw; for RGBA8 also checked), and how long that took: it is printed on its own line.
+// draw; for RGBA8 also checked and culled to the canvas), and how long that took: it is printed on
+// its own line.
 struct Preparation {
   double seconds = 0;
 };
@@ -191,15 +192,17 @@ void benchmark(const Scene& scene, const TriangleAlgorithm* algorithm, long long
   std::optional<BatchDrawer> drawer;
   if (algorithm != nullptr) drawer.emplace(*algorithm);
   BatchDrawer* kept = drawer ? &*drawer : nullptr;
-  // The triangles are copied out of the scene and checked once; every frame draws that copy.
+  // The triangles are copied out of the scene, checked and culled once; every frame draws that
+  // copy. Counting them is not part of the preparation, so it is done before its clock runs.
+  const std::size_t triangles = count_triangles(scene);
   PreparedDrawing prepared;
   const Preparation preparation = prepare([&] {
     prepared = allocating("the prepared triangles of the scene",
-                          static_cast<double>(count_triangles(scene)) * sizeof(SceneTriangle),
+                          static_cast<double>(triangles) * sizeof(SceneTriangle),
                           "the scene's triangle count", [&] { return prepare_drawing(scene); });
   });
   benchmark(
-      preparation, [&] { draw_prepared(prepared, kept, canvas); }, count_triangles(scene),
+      preparation, [&] { draw_prepared(prepared, kept, canvas); }, triangles,
       [&] { return pixels_per_frame(scene, algorithm); }, frames, forced, out, err);
 }
 
