@@ -12,7 +12,9 @@
 #include <span>
 #include <vector>
 
+#include "chapters/08_fast_exact/instruction_sets.hpp"
 #include "chapters/08_fast_exact/pixel_writers.hpp"
+#include "chapters/08_fast_exact/triangle_setup.hpp"
 #include "common/triangle_algorithm.hpp"
 
 namespace tri::ch08 {
@@ -160,6 +162,18 @@ void draw_triangle_spans_index8(IndexCanvas& canvas, const Triangle& triangle, s
 
 /// Step 8 · step 3's spans into one bit per pixel: the triangle's pixels set to 1.
 void draw_triangle_spans_mask1(MaskCanvas& canvas, const Triangle& triangle);
+
+/// True when fill_mask_block can draw the setup: its candidate pixels fit in one 8x8 block and
+/// its edge values in 32-bit lanes (step 5's fits_one_block and fits_32_bit_lanes).
+bool fits_mask_block(const TriangleSetup& setup) noexcept;
+
+/// Step 8 · a triangle within one 8x8 block into one bit per pixel, without walking its spans:
+/// eight lanes test the three edge functions on each of the block's rows (step 5's lane test),
+/// the results gather into one 64-bit word (a byte per row, a bit per pixel), and each row's byte
+/// is OR-ed into the canvas. The pixels of draw_triangle_spans_mask1. Precondition:
+/// fits_mask_block(setup). In the copy for `set` (by default the widest the host runs).
+void fill_mask_block(MaskCanvas& canvas, const TriangleSetup& setup,
+                     InstructionSet set = widest_instruction_set()) noexcept;
 
 /// The two restricted to rows first_row..last_row, so a huge triangle can be drawn in bands.
 void draw_triangle_spans_index8_rows(IndexCanvas& canvas, const Triangle& triangle,
