@@ -6,6 +6,8 @@
 /// the RGBA8 canvas; only the store differs.
 #pragma once
 
+#include <algorithm>
+#include <bit>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
@@ -83,7 +85,9 @@ class IndexWriter {
 class MaskWriter {
  public:
   explicit MaskWriter(MaskCanvas& canvas) noexcept : canvas_(canvas) {}
-  void span(int y, int x_begin, int x_end) noexcept { set_bits(canvas_.row(y), x_begin, x_end); }
+  void span(int y, int x_begin, int x_end) noexcept {
+    set_span(canvas_.row(y), canvas_.words_per_row(), x_begin, x_end);
+  }
   void pixel(int x, int y) noexcept { canvas_.row(y)[x / 64] |= std::uint64_t{1} << (x % 64); }
   int width() const noexcept { return canvas_.width(); }
 
@@ -92,7 +96,9 @@ class MaskWriter {
   struct Rows {
     std::uint64_t* row;
     std::ptrdiff_t stride;
-    void fill(int, int x_begin, int x_end) noexcept { set_bits(row, x_begin, x_end); }
+    void fill(int, int x_begin, int x_end) noexcept {
+      set_span(row, static_cast<int>(stride), x_begin, x_end);
+    }
     void next_row() noexcept { row += stride; }
   };
   template <InstructionSet>
@@ -100,7 +106,28 @@ class MaskWriter {
     return {canvas_.row(y), canvas_.words_per_row()};
   }
 
-  /// Sets bits x_begin <= x < x_end (0 <= x_begin < x_end) of one row's words.
+  /// Sets bits x_begin <= x < x_end (0 <= x_begin < x_end <= 64 * words_per_row) of one row's
+  /// words. A span of at most 57 pixels lies within the 8 bytes from its first pixel's byte (or
+  /// the row's last 8 bytes): on a little-endian processor, where the row's bits are one string
+  /// in byte order, that is one load, OR and store without a branch on where the words end.
+  static void set_span(std::uint64_t* words, int words_per_row, int x_begin, int x_end) noexcept {
+    const auto begin = static_cast<unsigned>(x_begin),
+               count = static_cast<unsigned>(x_end - x_begin);
+    if constexpr (std::endian::native == std::endian::little) {
+      if (count <= 57) {
+        const unsigned byte = std::min(begin / 8, static_cast<unsigned>(words_per_row) * 8 - 8);
+        unsigned char* window = reinterpret_cast<unsigned char*>(words) + byte;
+        std::uint64_t bits;
+        std::memcpy(&bits, window, sizeof bits);
+        bits |= (~std::uint64_t{0} >> (64 - count)) << (begin - 8 * byte);
+        std::memcpy(window, &bits, sizeof bits);
+        return;
+      }
+    }
+    set_bits(words, x_begin, x_end);
+  }
+
+  /// Sets bits x_begin <= x < x_end (0 <= x_begin < x_end) of one row's words, word by word.
   static void set_bits(std::uint64_t* words, int x_begin, int x_end) noexcept {
     // Pixel offsets are never negative: unsigned shifts and masks instead of signed / and %.
     const auto begin = static_cast<unsigned>(x_begin), last_x = static_cast<unsigned>(x_end - 1);

@@ -77,15 +77,23 @@ TEST_CASE("A palette index canvas of overlapping triangles reads back as the RGB
 
 TEST_CASE("A span of the mask sets exactly its bits, within one word and across words",
           "[08_fast_exact][step8]") {
-  for (const auto& [begin, end] : std::vector<std::pair<int, int>>{
-           {0, 1}, {3, 9}, {60, 70}, {63, 64}, {64, 65}, {1, 200}, {0, 256}, {127, 129}}) {
-    CAPTURE(begin, end);
-    MaskCanvas mask(256, 2);
-    tri::ch08::MaskWriter writer(mask);
-    writer.span(1, begin, end);
-    for (int x = 0; x < 256; ++x) {
-      REQUIRE(mask.covered(x, 1) == (begin <= x && x < end));
-      REQUIRE_FALSE(mask.covered(x, 0));
+  // Short spans anywhere (one 8-byte window, clamped to the row's last 8 bytes at its end) and
+  // long ones (word by word), in each row of a canvas of two, on rows of whole words and on rows
+  // that end inside a word: the other row keeps every bit clear.
+  for (const auto& [width, begin, end] : std::vector<std::array<int, 3>>{
+           {256, 0, 1},     {256, 3, 9},     {256, 60, 70},   {256, 63, 64},   {256, 64, 65},
+           {256, 1, 200},   {256, 0, 256},   {256, 127, 129}, {256, 7, 64},    {256, 7, 65},
+           {256, 250, 256}, {256, 199, 256}, {256, 198, 256}, {256, 190, 256}, {70, 0, 70},
+           {70, 13, 70},    {70, 69, 70},    {70, 60, 68},    {130, 71, 128},  {130, 72, 130}}) {
+    for (int y = 0; y < 2; ++y) {
+      CAPTURE(width, begin, end, y);
+      MaskCanvas mask(width, 2);
+      tri::ch08::MaskWriter writer(mask);
+      writer.span(y, begin, end);
+      for (int x = 0; x < width; ++x) {
+        REQUIRE(mask.covered(x, y) == (begin <= x && x < end));
+        REQUIRE_FALSE(mask.covered(x, 1 - y));
+      }
     }
   }
 }
