@@ -1,10 +1,13 @@
 #include "chapters/08_fast_exact/narrow_canvases.hpp"
 
-#include "chapters/08_fast_exact/simd.hpp"
+#include <cstddef>
+#include <cstdint>
+
+#include "chapters/08_fast_exact/instruction_sets.hpp"
 #include "chapters/08_fast_exact/spans.hpp"
 #include "chapters/08_fast_exact/triangle_setup.hpp"
 
-// The block's lanes are 32 bytes wide and passed by value between always-inlined functions, in
+// The mask's lanes are 32 bytes wide and passed by value between always-inlined functions, in
 // the AVX2 copy too: GCC's note (-Wpsabi) about such calls concerns no call that exists.
 #pragma GCC diagnostic ignored "-Wpsabi"
 
@@ -58,10 +61,10 @@ void draw_narrow_spans(NarrowTarget& target, std::span<const SceneTriangle> tria
 
 namespace {
 
-using BlockLanes = Vector<std::int32_t, 8>;  // the eight pixels of one row of the block
+using EightLanes = Vector<std::int32_t, 8>;
 
-// The OR of the eight lanes, whose bits are disjoint: halves folded onto each other.
-[[gnu::always_inline]] inline std::uint32_t or_of_lanes(BlockLanes v) noexcept {
+// The OR of eight lanes whose bits are disjoint: halves folded onto each other.
+[[gnu::always_inline]] inline std::uint32_t or_of_lanes(EightLanes v) noexcept {
   using Half = Vector<std::int32_t, 4>;
   using Quarter = Vector<std::int32_t, 2>;
   const Half half =
@@ -71,64 +74,75 @@ using BlockLanes = Vector<std::int32_t, 8>;  // the eight pixels of one row of t
   return static_cast<std::uint32_t>(quarter[0] | quarter[1]);
 }
 
-template <InstructionSet Set>
-struct MaskBlock {
-  [[gnu::always_inline]] static void run(MaskCanvas& canvas, const TriangleSetup& setup) noexcept {
-    // Edge e at the block's pixel (x, y): lane x of w[e] on row y. Like step 5's lane test, the
-    // products step_x * x go through floats (SSE2 has no 32-bit multiply): |step_x| <= 2^18 with
-    // 32-bit lanes, so step_x * 7 < 2^21 is exact.
-    const Vector<float, 8> column{0, 1, 2, 3, 4, 5, 6, 7};
-    BlockLanes w[3];
-    std::int32_t up[3];
-    for (std::size_t e = 0; e < 3; ++e) {
-      const EdgeFunction& edge = setup.edges[e];
-      w[e] = static_cast<std::int32_t>(edge.value) +
-             __builtin_convertvector(column * static_cast<float>(edge.step_x), BlockLanes);
-      up[e] = static_cast<std::int32_t>(edge.step_y);
+// fill_mask_lanes with 8 * Parts columns from the range's first one (Parts is 1 to 4). Each
+// eight are one vector of their own: GCC 12 split wider generic vectors badly.
+template <int Parts>
+[[gnu::always_inline]] inline void fill_lanes(MaskCanvas& canvas,
+                                              const TriangleSetup& setup) noexcept {
+  // Edge e at pixel 8 * p + i of the current row: lane i of w[e][p]. As in step 5's lane test,
+  // the products step_x * i go through floats (SSE2 has no 32-bit multiply): with 32-bit lanes
+  // |step_x| <= 2^18, so step_x * 31 < 2^23 is exact.
+  const Vector<float, 8> column{0, 1, 2, 3, 4, 5, 6, 7};
+  const EightLanes first_bits{1, 2, 4, 8, 16, 32, 64, 128};  // each eight signs become a byte
+  EightLanes w[3][Parts];
+  std::int32_t up[3];
+  for (std::size_t e = 0; e < 3; ++e) {
+    const EdgeFunction& edge = setup.edges[e];
+    const auto step = static_cast<float>(edge.step_x);
+    for (int p = 0; p < Parts; ++p) {
+      w[e][p] = static_cast<std::int32_t>(edge.value) +
+                __builtin_convertvector((column + static_cast<float>(8 * p)) * step, EightLanes);
     }
-    // Row y's covered pixels become bits 8y + x: rows 0 to 3 in `low`, rows 4 to 7 in `high`.
-    // All eight rows, without a branch; rows and columns beyond the range are masked out below.
-    const BlockLanes first_bits{1, 2, 4, 8, 16, 32, 64, 128};
-    BlockLanes low{}, high{};
-    for (int y = 0; y < 8; ++y) {
-      const BlockLanes covered = (w[0] | w[1] | w[2]) >= 0;  // all ones where every edge is >= 0
-      const BlockLanes bits = first_bits << (8 * (y % 4));
-      if (y < 4) {
-        low |= covered & bits;
-      } else {
-        high |= covered & bits;
+    up[e] = static_cast<std::int32_t>(edge.step_y);
+  }
+  // Locals, since the stores go through bytes, which may alias anything the loop reads.
+  const int x = setup.range.min.x, last_y = setup.range.max.y;
+  const std::uint64_t columns = ~std::uint64_t{0} >> (63 - (setup.range.max.x - x));
+  const int words_per_row = canvas.words_per_row();
+  std::uint64_t* words = canvas.row(setup.range.min.y);
+  // Four rows at a time: row j's signs in byte j of 32-bit lanes, then one fold per eight lanes.
+  for (int y = setup.range.min.y; y <= last_y; y += 4) {
+    EightLanes rows[Parts] = {};
+    for (int j = 0; j < 4; ++j) {
+      for (int p = 0; p < Parts; ++p) {
+        // All ones where every edge is >= 0.
+        const EightLanes covered = (w[0][p] | w[1][p] | w[2][p]) >= 0;
+        rows[p] |= covered & (first_bits << (8 * j));
+        for (std::size_t e = 0; e < 3; ++e) w[e][p] += up[e];
       }
-      for (std::size_t e = 0; e < 3; ++e) w[e] += up[e];
     }
-    const ch05::PixelBox& range = setup.range;
-    const auto columns = static_cast<unsigned>(range.max.x - range.min.x);  // 0 to 7
-    const auto rows = static_cast<unsigned>(range.max.y - range.min.y);
-    const std::uint64_t in_range =
-        ((0xFFu >> (7 - columns)) * 0x0101010101010101u) & (~std::uint64_t{0} >> (8 * (7 - rows)));
-    const std::uint64_t pixels =
-        (or_of_lanes(low) | std::uint64_t{or_of_lanes(high)} << 32) & in_range;
-    // Each row's byte goes into its word at the range's first pixel, and its top bits into the
-    // next word when the range crosses into it.
-    const auto x = static_cast<unsigned>(range.min.x);
-    const unsigned shift = x % 64;
-    const bool crosses = static_cast<unsigned>(range.max.x) / 64 != x / 64;
-    std::uint64_t* words = canvas.row(range.min.y) + x / 64;
-    for (unsigned y = 0; y <= rows; ++y, words += canvas.words_per_row()) {
-      const std::uint64_t row = (pixels >> (8 * y)) & 0xFF;
-      words[0] |= row << shift;
-      if (crosses) words[1] |= row >> (64 - shift);
+    std::uint32_t bytes[Parts];
+    for (int p = 0; p < Parts; ++p) bytes[p] = or_of_lanes(rows[p]);
+    for (int j = 0; j < 4 && y + j <= last_y; ++j, words += words_per_row) {
+      std::uint64_t bits = 0;
+      for (int p = 0; p < Parts; ++p) {
+        bits |= std::uint64_t{(bytes[p] >> (8 * j)) & 0xFFu} << (8 * p);
+      }
+      MaskWriter::or_bits_at(words, words_per_row, x, bits & columns);
+    }
+  }
+}
+
+template <InstructionSet Set>
+struct MaskLanes {
+  [[gnu::always_inline]] static void run(MaskCanvas& canvas, const TriangleSetup& setup) noexcept {
+    const int columns = setup.range.max.x - setup.range.min.x;
+    if (columns < 8) {
+      fill_lanes<1>(canvas, setup);
+    } else if (columns < 16) {
+      fill_lanes<2>(canvas, setup);
+    } else if (columns < 24) {
+      fill_lanes<3>(canvas, setup);
+    } else {
+      fill_lanes<4>(canvas, setup);
     }
   }
 };
 
 }  // namespace
 
-bool fits_mask_block(const TriangleSetup& setup) noexcept {
-  return fits_one_block(setup) && fits_32_bit_lanes(setup);
-}
-
-void fill_mask_block(MaskCanvas& canvas, const TriangleSetup& setup, InstructionSet set) noexcept {
-  copy_for<MaskBlock>(set)(canvas, setup);
+void fill_mask_lanes(MaskCanvas& canvas, const TriangleSetup& setup, InstructionSet set) noexcept {
+  copy_for<MaskLanes>(set)(canvas, setup);
 }
 
 void draw_triangle_spans_index8_rows(IndexCanvas& canvas, const Triangle& triangle,

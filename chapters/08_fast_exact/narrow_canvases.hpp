@@ -16,6 +16,7 @@
 
 #include "chapters/08_fast_exact/instruction_sets.hpp"
 #include "chapters/08_fast_exact/pixel_writers.hpp"
+#include "chapters/08_fast_exact/simd.hpp"
 #include "chapters/08_fast_exact/triangle_setup.hpp"
 #include "common/triangle_algorithm.hpp"
 
@@ -107,24 +108,32 @@ class MaskWriter {
   }
 
   /// Sets bits x_begin <= x < x_end (0 <= x_begin < x_end <= 64 * words_per_row) of one row's
-  /// words. A span of at most 57 pixels lies within the 8 bytes from its first pixel's byte (or
-  /// the row's last 8 bytes): on a little-endian processor, where the row's bits are one string
-  /// in byte order, that is one load, OR and store without a branch on where the words end.
+  /// words: a span of at most 57 pixels with or_bits_at, a longer one word by word.
   static void set_span(std::uint64_t* words, int words_per_row, int x_begin, int x_end) noexcept {
-    const auto begin = static_cast<unsigned>(x_begin),
-               count = static_cast<unsigned>(x_end - x_begin);
-    if constexpr (std::endian::native == std::endian::little) {
-      if (count <= 57) {
-        const unsigned byte = std::min(begin / 8, static_cast<unsigned>(words_per_row) * 8 - 8);
-        unsigned char* window = reinterpret_cast<unsigned char*>(words) + byte;
-        std::uint64_t bits;
-        std::memcpy(&bits, window, sizeof bits);
-        bits |= (~std::uint64_t{0} >> (64 - count)) << (begin - 8 * byte);
-        std::memcpy(window, &bits, sizeof bits);
-        return;
-      }
+    const auto count = static_cast<unsigned>(x_end - x_begin);
+    if (window_stores && count <= 57) {
+      or_bits_at(words, words_per_row, x_begin, ~std::uint64_t{0} >> (64 - count));
+      return;
     }
     set_bits(words, x_begin, x_end);
+  }
+
+  /// On a little-endian processor a row's bits are one string in byte order, so up to 57
+  /// neighbouring pixels lie within the 8 bytes from the first one's byte (or the row's last 8).
+  static constexpr bool window_stores = std::endian::native == std::endian::little;
+
+  /// Sets pixel x + i of one row's words where bit i of `bits` is set, with one 8-byte load, OR
+  /// and store, no branch on where the words end. Precondition: window_stores; x >= 0; bit i is
+  /// set only for i < 57 and x + i < 64 * words_per_row.
+  static void or_bits_at(std::uint64_t* words, int words_per_row, int x,
+                         std::uint64_t bits) noexcept {
+    const auto first = static_cast<unsigned>(x);
+    const unsigned byte = std::min(first / 8, static_cast<unsigned>(words_per_row) * 8 - 8);
+    unsigned char* window = reinterpret_cast<unsigned char*>(words) + byte;
+    std::uint64_t old;
+    std::memcpy(&old, window, sizeof old);
+    old |= bits << (first - 8 * byte);
+    std::memcpy(window, &old, sizeof old);
   }
 
   /// Sets bits x_begin <= x < x_end (0 <= x_begin < x_end) of one row's words, word by word.
@@ -190,16 +199,26 @@ void draw_triangle_spans_index8(IndexCanvas& canvas, const Triangle& triangle, s
 /// Step 8 · step 3's spans into one bit per pixel: the triangle's pixels set to 1.
 void draw_triangle_spans_mask1(MaskCanvas& canvas, const Triangle& triangle);
 
-/// True when fill_mask_block can draw the setup: its candidate pixels fit in one 8x8 block and
-/// its edge values in 32-bit lanes (step 5's fits_one_block and fits_32_bit_lanes).
-bool fits_mask_block(const TriangleSetup& setup) noexcept;
+/// The widest candidate pixels fill_mask_lanes draws: 32 columns, four vectors of eight lanes
+/// (wider ones ran out of AVX2's 16 registers and were slower).
+inline constexpr int max_mask_lanes = 32;
 
-/// Step 8 · a triangle within one 8x8 block into one bit per pixel, without walking its spans:
-/// eight lanes test the three edge functions on each of the block's rows (step 5's lane test),
-/// the results gather into one 64-bit word (a byte per row, a bit per pixel), and each row's byte
-/// is OR-ed into the canvas. The pixels of draw_triangle_spans_mask1. Precondition:
-/// fits_mask_block(setup). In the copy for `set` (by default the widest the host runs).
-void fill_mask_block(MaskCanvas& canvas, const TriangleSetup& setup,
+/// True when fill_mask_lanes can draw the setup: its candidate pixels are at most max_mask_lanes
+/// columns wide, its edge values fit in 32-bit lanes (step 5's fits_32_bit_lanes: its argument
+/// holds for lanes up to 32 pixels right of the candidate pixels and 4 rows above them, with
+/// every |value| below 2^30), and the mask's rows are little-endian bit strings
+/// (MaskWriter::window_stores).
+constexpr bool fits_mask_lanes(const TriangleSetup& setup) noexcept {
+  return MaskWriter::window_stores && setup.range.max.x - setup.range.min.x < max_mask_lanes &&
+         fits_32_bit_lanes(setup);
+}
+
+/// Step 8 · a triangle at most 32 pixels wide into one bit per pixel, without walking its spans
+/// (no divisions to set up, no bounds to carry per row): per row, 8 to 32 lanes test the three
+/// edge functions (step 5's lane test), their signs gather into the row's bits, and one 8-byte OR
+/// sets them (MaskWriter::or_bits_at). The pixels of draw_triangle_spans_mask1. Precondition:
+/// fits_mask_lanes(setup). In the copy for `set` (by default the widest the host runs).
+void fill_mask_lanes(MaskCanvas& canvas, const TriangleSetup& setup,
                      InstructionSet set = widest_instruction_set()) noexcept;
 
 /// The two restricted to rows first_row..last_row, so a huge triangle can be drawn in bands.

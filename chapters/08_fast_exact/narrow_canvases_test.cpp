@@ -98,28 +98,30 @@ TEST_CASE("A span of the mask sets exactly its bits, within one word and across 
   }
 }
 
-TEST_CASE("A triangle within one block reaches the mask in one word at every alignment and edge",
+TEST_CASE("A triangle at most 32 pixels wide reaches the mask in lanes at every alignment and edge",
           "[08_fast_exact][step8]") {
-  // Vertices on the quarter-pixel grid inside an 8x8 box of pixel centres at every column of
-  // canvases whose rows end inside a word, at a word's end and across two words, with boxes
-  // hanging over each side: ties on edges through pixel centres, rows crossing a word boundary,
-  // ranges clipped by the canvas. Each triangle alone, against the oracle, in every copy the
-  // host runs.
+  // Vertices on the quarter-pixel grid inside boxes of 8, 16, 24 and 32 columns of pixel centres
+  // (each number of lanes), 2 to 20 rows high, at every column of canvases whose rows end inside a
+  // word, at a word's end and across two words, with boxes hanging over each side: ties on edges
+  // through pixel centres, rows crossing a word boundary, ranges clipped by the canvas. Each
+  // triangle alone, against the oracle, in every copy the host runs.
   tri::testing::Random random(81);
   int drawn = 0, triangles = 0;
   for (const glm::ivec2 size : {glm::ivec2{70, 21}, glm::ivec2{64, 9}, glm::ivec2{130, 12}}) {
-    for (int x0 = -7; x0 < size.x; ++x0) {
+    for (int x0 = -31; x0 < size.x; ++x0) {
       for (const int y0 : {-7, -2, 0, 3, size.y - 8, size.y - 3, size.y - 1}) {
-        for (int k = 0; k < 4; ++k) {
+        for (int k = 0; k < 8; ++k) {
+          const int columns = 8 * (k % 4 + 1), rows = random.integer(2, 20);
           Triangle t;
           for (auto& v : t) {
-            v = {x0 + random.integer(0, 28) / 4.0, y0 + random.integer(0, 28) / 4.0};
+            v = {x0 + random.integer(0, 4 * (columns - 1)) / 4.0,
+                 y0 + random.integer(0, 4 * (rows - 1)) / 4.0};
           }
           const auto setup = tri::ch08::setup_triangle(t, size.x, size.y);
           if (!setup) continue;
           INFO("triangle " << t[0].x << "," << t[0].y << " " << t[1].x << "," << t[1].y << " "
                            << t[2].x << "," << t[2].y << " on " << size.x << "x" << size.y);
-          REQUIRE(tri::ch08::fits_mask_block(*setup));
+          REQUIRE(tri::ch08::fits_mask_lanes(*setup));
           ++triangles;
           Canvas truth(size.x, size.y, background);
           tri::ch07::draw_triangle_oracle(truth, t, tri::colors::white);
@@ -127,7 +129,7 @@ TEST_CASE("A triangle within one block reaches the mask in one word at every ali
             if (!tri::ch08::host_runs(set)) continue;
             CAPTURE(static_cast<int>(set));
             MaskCanvas mask(size.x, size.y);
-            tri::ch08::fill_mask_block(mask, *setup, set);
+            tri::ch08::fill_mask_lanes(mask, *setup, set);
             int off = 0;
             for (int y = 0; y < size.y; ++y) {
               for (int x = 0; x < size.x; ++x) {
@@ -142,6 +144,6 @@ TEST_CASE("A triangle within one block reaches the mask in one word at every ali
       }
     }
   }
-  CHECK(triangles > 3000);
-  CHECK(drawn > 20000);  // the comparisons are not of empty canvases
+  CHECK(triangles > 8000);
+  CHECK(drawn > 50000);  // the comparisons are not of empty canvases
 }
