@@ -6,7 +6,6 @@
 /// the RGBA8 canvas; only the store differs.
 #pragma once
 
-#include <algorithm>
 #include <bit>
 #include <cstddef>
 #include <cstdint>
@@ -86,9 +85,7 @@ class IndexWriter {
 class MaskWriter {
  public:
   explicit MaskWriter(MaskCanvas& canvas) noexcept : canvas_(canvas) {}
-  void span(int y, int x_begin, int x_end) noexcept {
-    set_span(canvas_.row(y), canvas_.words_per_row(), x_begin, x_end);
-  }
+  void span(int y, int x_begin, int x_end) noexcept { set_bits(canvas_.row(y), x_begin, x_end); }
   void pixel(int x, int y) noexcept { canvas_.row(y)[x / 64] |= std::uint64_t{1} << (x % 64); }
   int width() const noexcept { return canvas_.width(); }
 
@@ -97,9 +94,7 @@ class MaskWriter {
   struct Rows {
     std::uint64_t* row;
     std::ptrdiff_t stride;
-    void fill(int, int x_begin, int x_end) noexcept {
-      set_span(row, static_cast<int>(stride), x_begin, x_end);
-    }
+    void fill(int, int x_begin, int x_end) noexcept { set_bits(row, x_begin, x_end); }
     void next_row() noexcept { row += stride; }
   };
   template <InstructionSet>
@@ -107,36 +102,7 @@ class MaskWriter {
     return {canvas_.row(y), canvas_.words_per_row()};
   }
 
-  /// Sets bits x_begin <= x < x_end (0 <= x_begin < x_end <= 64 * words_per_row) of one row's
-  /// words: a span of at most 57 pixels with or_bits_at, a longer one word by word.
-  static void set_span(std::uint64_t* words, int words_per_row, int x_begin, int x_end) noexcept {
-    const auto count = static_cast<unsigned>(x_end - x_begin);
-    if (window_stores && count <= 57) {
-      or_bits_at(words, words_per_row, x_begin, ~std::uint64_t{0} >> (64 - count));
-      return;
-    }
-    set_bits(words, x_begin, x_end);
-  }
-
-  /// On a little-endian processor a row's bits are one string in byte order, so up to 57
-  /// neighbouring pixels lie within the 8 bytes from the first one's byte (or the row's last 8).
-  static constexpr bool window_stores = std::endian::native == std::endian::little;
-
-  /// Sets pixel x + i of one row's words where bit i of `bits` is set, with one 8-byte load, OR
-  /// and store, no branch on where the words end. Precondition: window_stores; x >= 0; bit i is
-  /// set only for i < 57 and x + i < 64 * words_per_row.
-  static void or_bits_at(std::uint64_t* words, int words_per_row, int x,
-                         std::uint64_t bits) noexcept {
-    const auto first = static_cast<unsigned>(x);
-    const unsigned byte = std::min(first / 8, static_cast<unsigned>(words_per_row) * 8 - 8);
-    unsigned char* window = reinterpret_cast<unsigned char*>(words) + byte;
-    std::uint64_t old;
-    std::memcpy(&old, window, sizeof old);
-    old |= bits << (first - 8 * byte);
-    std::memcpy(window, &old, sizeof old);
-  }
-
-  /// Sets bits x_begin <= x < x_end (0 <= x_begin < x_end) of one row's words, word by word.
+  /// Sets bits x_begin <= x < x_end (0 <= x_begin < x_end) of one row's words.
   static void set_bits(std::uint64_t* words, int x_begin, int x_end) noexcept {
     // Pixel offsets are never negative: unsigned shifts and masks instead of signed / and %.
     const auto begin = static_cast<unsigned>(x_begin), last_x = static_cast<unsigned>(x_end - 1);
@@ -156,6 +122,10 @@ class MaskWriter {
   MaskCanvas& canvas_;
 };
 // [/listing]
+
+/// On a little-endian processor a row of the mask is one string of bits in byte order, so up to
+/// 57 neighbouring pixels lie within the 8 bytes from the first one's byte (or the row's last 8).
+inline constexpr bool mask_window_stores = std::endian::native == std::endian::little;
 
 static_assert(PixelWriter<IndexWriter> && PixelWriter<MaskWriter>);
 
@@ -200,23 +170,23 @@ void draw_triangle_spans_index8(IndexCanvas& canvas, const Triangle& triangle, s
 void draw_triangle_spans_mask1(MaskCanvas& canvas, const Triangle& triangle);
 
 /// The widest candidate pixels fill_mask_lanes draws: 32 columns, four vectors of eight lanes
-/// (wider ones ran out of AVX2's 16 registers and were slower).
+/// (48 columns in six were slower on the machine of the performance notes).
 inline constexpr int max_mask_lanes = 32;
 
 /// True when fill_mask_lanes can draw the setup: its candidate pixels are at most max_mask_lanes
 /// columns wide, its edge values fit in 32-bit lanes (step 5's fits_32_bit_lanes: its argument
-/// holds for lanes up to 32 pixels right of the candidate pixels and 4 rows above them, with
-/// every |value| below 2^30), and the mask's rows are little-endian bit strings
-/// (MaskWriter::window_stores).
+/// holds for lanes up to 31 pixels right of the candidate pixels' first column and 4 rows above
+/// their last row, with every |value| below 2^30), and the mask's rows are little-endian bit
+/// strings (mask_window_stores).
 constexpr bool fits_mask_lanes(const TriangleSetup& setup) noexcept {
-  return MaskWriter::window_stores && setup.range.max.x - setup.range.min.x < max_mask_lanes &&
+  return mask_window_stores && setup.range.max.x - setup.range.min.x < max_mask_lanes &&
          fits_32_bit_lanes(setup);
 }
 
 /// Step 8 · a triangle at most 32 pixels wide into one bit per pixel, without walking its spans
 /// (no divisions to set up, no bounds to carry per row): per row, 8 to 32 lanes test the three
 /// edge functions (step 5's lane test), their signs gather into the row's bits, and one 8-byte OR
-/// sets them (MaskWriter::or_bits_at). The pixels of draw_triangle_spans_mask1. Precondition:
+/// sets them at once. The pixels of draw_triangle_spans_mask1. Precondition:
 /// fits_mask_lanes(setup). In the copy for `set` (by default the widest the host runs).
 void fill_mask_lanes(MaskCanvas& canvas, const TriangleSetup& setup,
                      InstructionSet set = widest_instruction_set()) noexcept;

@@ -77,9 +77,9 @@ TEST_CASE("A palette index canvas of overlapping triangles reads back as the RGB
 
 TEST_CASE("A span of the mask sets exactly its bits, within one word and across words",
           "[08_fast_exact][step8]") {
-  // Short spans anywhere (one 8-byte window, clamped to the row's last 8 bytes at its end) and
-  // long ones (word by word), in each row of a canvas of two, on rows of whole words and on rows
-  // that end inside a word: the other row keeps every bit clear.
+  // Spans within a word, across one boundary and across several, ending at the row's end, in
+  // each row of a canvas of two, on rows of whole words and on rows that end inside a word: the
+  // other row keeps every bit clear.
   for (const auto& [width, begin, end] : std::vector<std::array<int, 3>>{
            {256, 0, 1},     {256, 3, 9},     {256, 60, 70},   {256, 63, 64},   {256, 64, 65},
            {256, 1, 200},   {256, 0, 256},   {256, 127, 129}, {256, 7, 64},    {256, 7, 65},
