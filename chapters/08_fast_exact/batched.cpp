@@ -279,6 +279,11 @@ void draw_narrow_batched_with(NarrowTarget& target, std::span<const SceneTriangl
         std::min<std::size_t>(triangles.size() - first, setup_lanes));
     for_each_group_setup(group, target.width(), target.height(), lanes, set,
                          [&](std::size_t i, const TriangleSetup& setup) {
+                           // A narrow triangle goes to the mask row by row in lanes.
+                           if (target.mask != nullptr && fits_mask_lanes(setup)) {
+                             fill_mask_lanes(*target.mask, setup, set);
+                             return;
+                           }
                            target.with_writer(first + i,
                                               [&](auto& writer) { fill_spans(setup, writer); });
                          });

@@ -110,8 +110,9 @@ inline constexpr std::size_t tiled_batch_triangles = 64;
 /// canvas (tiled_canvas_pixels, tiled_batch_triangles), the same through step 9's tiles.
 void draw_batch_batched(Canvas& canvas, std::span<const SceneTriangle> triangles);
 /// Step 10 · a batch into one of step 8's narrow canvases: set_up_lanes for each group of
-/// setup_lanes triangles, then fill_spans through the narrow writer for each, in order (the
-/// registry's draw_narrow entry of fast_batched): the pixels of draw_narrow_spans.
+/// setup_lanes triangles, then each in order through fill_spans and the narrow writer, or, on the
+/// mask, fill_mask_lanes for a triangle it fits (fits_mask_lanes) (the registry's draw_narrow
+/// entry of fast_batched): the pixels of draw_narrow_spans.
 void draw_narrow_batched(NarrowTarget& target, std::span<const SceneTriangle> triangles);
 /// The same with the lanes' copy for `set`.
 void draw_narrow_batched_with(NarrowTarget& target, std::span<const SceneTriangle> triangles,

@@ -6,13 +6,17 @@
 /// the RGBA8 canvas; only the store differs.
 #pragma once
 
+#include <bit>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
 #include <span>
 #include <vector>
 
+#include "chapters/08_fast_exact/instruction_sets.hpp"
 #include "chapters/08_fast_exact/pixel_writers.hpp"
+#include "chapters/08_fast_exact/simd.hpp"
+#include "chapters/08_fast_exact/triangle_setup.hpp"
 #include "common/triangle_algorithm.hpp"
 
 namespace tri::ch08 {
@@ -119,6 +123,10 @@ class MaskWriter {
 };
 // [/listing]
 
+/// On a little-endian processor a row of the mask is one string of bits in byte order, so up to
+/// 57 neighbouring pixels lie within the 8 bytes from the first one's byte (or the row's last 8).
+inline constexpr bool mask_window_stores = std::endian::native == std::endian::little;
+
 static_assert(PixelWriter<IndexWriter> && PixelWriter<MaskWriter>);
 
 }  // namespace tri::ch08
@@ -160,6 +168,28 @@ void draw_triangle_spans_index8(IndexCanvas& canvas, const Triangle& triangle, s
 
 /// Step 8 · step 3's spans into one bit per pixel: the triangle's pixels set to 1.
 void draw_triangle_spans_mask1(MaskCanvas& canvas, const Triangle& triangle);
+
+/// The widest candidate pixels fill_mask_lanes draws: 32 columns, four vectors of eight lanes
+/// (48 columns in six were slower on the machine of the performance notes).
+inline constexpr int max_mask_lanes = 32;
+
+/// True when fill_mask_lanes can draw the setup: its candidate pixels are at most max_mask_lanes
+/// columns wide, its edge values fit in 32-bit lanes (step 5's fits_32_bit_lanes: its argument
+/// holds for lanes up to 31 pixels right of the candidate pixels' first column and 4 rows above
+/// their last row, with every |value| below 2^30), and the mask's rows are little-endian bit
+/// strings (mask_window_stores).
+constexpr bool fits_mask_lanes(const TriangleSetup& setup) noexcept {
+  return mask_window_stores && setup.range.max.x - setup.range.min.x < max_mask_lanes &&
+         fits_32_bit_lanes(setup);
+}
+
+/// Step 8 · a triangle at most 32 pixels wide into one bit per pixel, without walking its spans
+/// (no divisions to set up, no bounds to carry per row): per row, 8 to 32 lanes test the three
+/// edge functions (step 5's lane test), their signs gather into the row's bits, and one 8-byte OR
+/// sets them at once. The pixels of draw_triangle_spans_mask1. Precondition:
+/// fits_mask_lanes(setup). In the copy for `set` (by default the widest the host runs).
+void fill_mask_lanes(MaskCanvas& canvas, const TriangleSetup& setup,
+                     InstructionSet set = widest_instruction_set()) noexcept;
 
 /// The two restricted to rows first_row..last_row, so a huge triangle can be drawn in bands.
 void draw_triangle_spans_index8_rows(IndexCanvas& canvas, const Triangle& triangle,
