@@ -33,11 +33,12 @@ std::string_view describe(DrawResult result) noexcept {
 DrawResult validate_triangle(const Triangle& triangle) noexcept {
   // The usual case in one test without branches (|c| <= limit is false for NaN and infinities
   // too): checking 100,000 triangles this way took about a third less time than the loops below.
-  bool within = true;
+  int within = 1;
   for (const glm::dvec2& v : triangle) {
-    within &= (std::abs(v.x) <= max_scene_coordinate) & (std::abs(v.y) <= max_scene_coordinate);
+    within &=
+        int{std::abs(v.x) <= max_scene_coordinate} & int{std::abs(v.y) <= max_scene_coordinate};
   }
-  if (within) return DrawResult::drawn;
+  if (within != 0) return DrawResult::drawn;
   for (const glm::dvec2& v : triangle) {
     if (!std::isfinite(v.x) || !std::isfinite(v.y)) return DrawResult::rejected_non_finite;
   }
