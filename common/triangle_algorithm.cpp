@@ -79,9 +79,8 @@ PreparedBatch::PreparedBatch(std::span<const SceneTriangle> triangles) {
 
 PreparedBatch::PreparedBatch(std::span<const SceneTriangle> triangles, CanvasExtent canvas)
     : PreparedBatch(canvas) {
-  // Counted first, so a batch that keeps few triangles touches little fresh memory.
-  reserve(static_cast<std::size_t>(
-      std::count_if(triangles.begin(), triangles.end(), [&](const auto& t) { return keeps(t); })));
+  // Room for all, as prepare_drawing reserves a run: the pages of culled ones are never touched.
+  reserve(triangles.size());
   for (const SceneTriangle& t : triangles) add(t);
 }
 
@@ -101,16 +100,11 @@ bool meets_canvas(const Triangle& t, CanvasExtent canvas) noexcept {
 
 }  // namespace
 
-bool PreparedBatch::keeps(const SceneTriangle& triangle) const noexcept {
-  return validate_triangle(triangle.vertices) == DrawResult::drawn &&
-         (!culls_ || meets_canvas(triangle.vertices, cull_to_));
-}
-
 DrawResult PreparedBatch::add(const SceneTriangle& triangle) {
   const DrawResult result = validate_triangle(triangle.vertices);
   if (result != DrawResult::drawn) {
     ++refused_;
-  } else if (culls_ && !meets_canvas(triangle.vertices, cull_to_)) {
+  } else if (cull_to_ && !meets_canvas(triangle.vertices, *cull_to_)) {
     ++culled_;
   } else {
     accepted_.push_back(triangle);
@@ -119,7 +113,7 @@ DrawResult PreparedBatch::add(const SceneTriangle& triangle) {
 }
 
 bool PreparedBatch::fits(const Canvas& canvas) const noexcept {
-  return !culls_ || (canvas.width() <= cull_to_.width && canvas.height() <= cull_to_.height);
+  return !cull_to_ || (canvas.width() <= cull_to_->width && canvas.height() <= cull_to_->height);
 }
 
 void BatchDrawer::draw_accepted(Canvas& canvas, std::span<const SceneTriangle> accepted) {

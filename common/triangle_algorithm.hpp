@@ -6,6 +6,7 @@
 #include <array>
 #include <cstddef>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string_view>
 #include <vector>
@@ -126,14 +127,12 @@ class PreparedBatch {
   PreparedBatch() = default;
   explicit PreparedBatch(std::span<const SceneTriangle> triangles);
   /// An empty batch that culls to `canvas`.
-  explicit PreparedBatch(CanvasExtent canvas) : cull_to_(canvas), culls_(true) {}
+  explicit PreparedBatch(CanvasExtent canvas) : cull_to_(canvas) {}
   /// The triangles' batch, culled to `canvas`.
   PreparedBatch(std::span<const SceneTriangle> triangles, CanvasExtent canvas);
 
   /// Makes room for `count` more triangles, so adding them allocates once.
   void reserve(std::size_t count) { accepted_.reserve(accepted_.size() + count); }
-  /// Whether add would keep the triangle: it passes the check and, when culling, may draw.
-  bool keeps(const SceneTriangle& triangle) const noexcept;
   /// Checks one more triangle and keeps it when it passes and is not culled; says what the check
   /// found (a culled triangle passed it: drawn, drawing nothing).
   DrawResult add(const SceneTriangle& triangle);
@@ -152,8 +151,7 @@ class PreparedBatch {
   std::vector<SceneTriangle, LargeBufferAllocator<SceneTriangle>> accepted_;
   std::size_t refused_ = 0;
   std::size_t culled_ = 0;
-  CanvasExtent cull_to_;
-  bool culls_ = false;
+  std::optional<CanvasExtent> cull_to_;  // none: keeps every triangle that passes the check
 };
 
 /// Draws batches of triangles with one algorithm; every caller that draws batches goes through
